@@ -1,0 +1,80 @@
+//! The crate's one error type.
+//!
+//! Every message is a single line that names the offending field (with the name used by the
+//! command-line flags and config files), the value given and the allowed range, so the CLI can
+//! print it as is and exit with code 2.
+
+use std::path::PathBuf;
+
+/// Everything that can go wrong in the library.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// A parameter is outside its physical or numerical range.
+    #[error("invalid {field} = {value}: {allowed}")]
+    InvalidParameter {
+        /// Flag / config key of the parameter (`ks`, `x`, `dt`, ...).
+        field: &'static str,
+        /// The value as given.
+        value: String,
+        /// The allowed range, in words with units.
+        allowed: String,
+    },
+    /// A config file could not be read or parsed.
+    #[error("config file {path}: {message}")]
+    Config {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with it (one line).
+        message: String,
+    },
+    /// The impact did not finish within the simulated-time limit.
+    #[error(
+        "impact did not end within {limit_s:.4e} s of simulated time (the ball never left the \
+         strings); check ks, k1 and the racket parameters"
+    )]
+    ImpactDidNotEnd {
+        /// The limit that was reached, s.
+        limit_s: f64,
+    },
+    /// The expansion-law root solve (Eq 10) failed; should not happen for valid inputs.
+    #[error("expansion-law solve (Eq 10) did not converge for Y_T/Y0 = {z}")]
+    ContactSolve {
+        /// The normalised total compression at which it failed.
+        z: f64,
+    },
+    /// Reading or writing a file failed.
+    #[error("{path}: {message}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The operating-system message.
+        message: String,
+    },
+    /// An unknown experiment id was requested.
+    #[error("unknown experiment id '{0}' (see `racket-impact figures --list`)")]
+    UnknownExperiment(String),
+    /// Plot rendering failed.
+    #[error("plot {id}: {message}")]
+    Plot {
+        /// The experiment id.
+        id: String,
+        /// The backend's message.
+        message: String,
+    },
+}
+
+/// Shorthand for `Result<T, racket_impact::Error>`.
+pub type Result<T> = std::result::Result<T, Error>;
+
+impl Error {
+    /// Build an [`Error::InvalidParameter`].
+    pub fn invalid(field: &'static str, value: impl std::fmt::Display, allowed: impl Into<String>) -> Self {
+        Error::InvalidParameter { field, value: value.to_string(), allowed: allowed.into() }
+    }
+
+    /// Build an [`Error::Io`] from a path and an `std::io::Error`.
+    pub fn io(path: impl Into<PathBuf>, err: impl std::fmt::Display) -> Self {
+        Error::Io { path: path.into(), message: err.to_string() }
+    }
+}

@@ -1,0 +1,268 @@
+//! The racket as a free-free lumped Euler-Bernoulli beam (Eqs 5-6, SPEC.md section 1).
+//!
+//! ```text
+//! nodes       x_i = i s,  i = 0..N,  s = L/N,  tip at x = 0, butt at x = L
+//! masses      m = M/N at interior nodes, m/2 at the two end nodes
+//! stiffness   K = (EI / s^3) D^T D,  D the (N-1) x (N+1) second difference (rows 1 -2 1)
+//! ```
+//! `D^T D` is the energy-consistent form of Eq 6 with free ends (`y'' = y''' = 0`): the bending
+//! energy is `EI/(2 s^3) sum_j (y_{j-1} - 2 y_j + y_{j+1})^2`, and `K` has exactly two zero modes
+//! (translation and rotation), so the discrete beam conserves momentum and energy.
+//! `K` is applied as a five-point stencil; the dense matrix exists only for the eigenproblem
+//! `K phi = omega^2 M phi`, solved as the symmetric problem `M^-1/2 K M^-1/2` with nalgebra.
+
+use nalgebra::DMatrix;
+
+use crate::params::{LoadRule, Racket};
+
+/// The discrete beam.
+#[derive(Debug, Clone)]
+pub struct Beam {
+    /// Number of segments `N`.
+    pub segments: usize,
+    /// Segment length `s = L/N`, m.
+    pub s: f64,
+    /// Node positions from the tip, m (N+1 values).
+    pub x: Vec<f64>,
+    /// Lumped node masses, kg (N+1 values).
+    pub mass: Vec<f64>,
+    /// `EI / s^3`, N/m.
+    pub kappa: f64,
+    /// Total mass, kg.
+    pub total_mass: f64,
+    /// Centre of mass from the tip, m.
+    pub x_cm: f64,
+    /// Moment of inertia about the transverse axis through the centre of mass, kg m^2.
+    pub i_cm: f64,
+}
+
+/// Where the contact force acts on the beam and how it is shared (SPEC.md, Contact).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadPoint {
+    /// The (up to) two nodes that carry the force.
+    pub nodes: [usize; 2],
+    /// Their weights; they sum to 1.
+    pub weights: [f64; 2],
+    /// Where the force effectively acts, `sum w_i x_i`, m.
+    pub x_load: f64,
+}
+
+/// Eigenfrequencies and mode shapes of the free-free beam.
+#[derive(Debug, Clone)]
+pub struct Modes {
+    /// Angular frequencies `omega_k`, rad/s, ascending; the first two are the rigid-body modes.
+    pub omega: Vec<f64>,
+    /// Mode shapes (displacement at each node), same order, scaled so the largest |value| is 1
+    /// and the tip value is >= 0.
+    pub shapes: Vec<Vec<f64>>,
+}
+
+impl Beam {
+    /// Discretise a racket into `segments` segments.
+    pub fn new(racket: &Racket, segments: usize) -> Self {
+        let n = segments;
+        let s = racket.length / n as f64;
+        let m = racket.mass / n as f64;
+        let x: Vec<f64> = (0..=n).map(|i| i as f64 * s).collect();
+        let mut mass = vec![m; n + 1];
+        mass[0] = 0.5 * m;
+        mass[n] = 0.5 * m;
+        let total_mass: f64 = mass.iter().sum();
+        let x_cm = mass.iter().zip(&x).map(|(m, x)| m * x).sum::<f64>() / total_mass;
+        let i_cm = mass.iter().zip(&x).map(|(m, x)| m * (x - x_cm).powi(2)).sum();
+        Beam { segments: n, s, x, mass, kappa: racket.ei / (s * s * s), total_mass, x_cm, i_cm }
+    }
+
+    /// Number of nodes, N+1.
+    pub fn nodes(&self) -> usize {
+        self.segments + 1
+    }
+
+    /// Second differences `c_j = y_{j-1} - 2 y_j + y_{j+1}` at interior nodes, written to
+    /// `curv[j]` for j = 1..N-1 (the end entries are set to zero).
+    fn curvature(y: &[f64], curv: &mut [f64]) {
+        let n = y.len() - 1;
+        curv[0] = 0.0;
+        curv[n] = 0.0;
+        for j in 1..n {
+            curv[j] = y[j - 1] - 2.0 * y[j] + y[j + 1];
+        }
+    }
+
+    /// Elastic forces `f = -K y`, N, using `curv` (N+1 values) as scratch.
+    pub fn elastic_forces(&self, y: &[f64], curv: &mut [f64], f: &mut [f64]) {
+        Self::curvature(y, curv);
+        let n = self.segments;
+        for i in 0..=n {
+            let left = if i >= 1 { curv[i - 1] } else { 0.0 };
+            let right = if i < n { curv[i + 1] } else { 0.0 };
+            f[i] = -self.kappa * (left - 2.0 * curv[i] + right);
+        }
+    }
+
+    /// Bending energy `y^T K y / 2`, J.
+    pub fn bending_energy(&self, y: &[f64]) -> f64 {
+        let n = self.segments;
+        let sum: f64 = (1..n).map(|j| (y[j - 1] - 2.0 * y[j] + y[j + 1]).powi(2)).sum();
+        0.5 * self.kappa * sum
+    }
+
+    /// Kinetic energy of the nodes, J.
+    pub fn kinetic_energy(&self, v: &[f64]) -> f64 {
+        0.5 * self.mass.iter().zip(v).map(|(m, v)| m * v * v).sum::<f64>()
+    }
+
+    /// Linear momentum, kg m/s.
+    pub fn momentum(&self, v: &[f64]) -> f64 {
+        self.mass.iter().zip(v).map(|(m, v)| m * v).sum()
+    }
+
+    /// Kinetic energy of the rigid-body part of a velocity field (translation of the centre of
+    /// mass plus rotation about it), J. The rest of the racket's energy is vibration.
+    pub fn rigid_energy(&self, v: &[f64]) -> f64 {
+        let p = self.momentum(v);
+        let l: f64 = self.mass.iter().zip(v).zip(&self.x).map(|((m, v), x)| m * (x - self.x_cm) * v).sum();
+        p * p / (2.0 * self.total_mass) + l * l / (2.0 * self.i_cm)
+    }
+
+    /// The load point for an impact at `x` (0 <= x <= L) under a load rule.
+    pub fn load_point(&self, x: f64, rule: LoadRule) -> LoadPoint {
+        let n = self.segments;
+        let xi = (x / self.s).clamp(0.0, n as f64);
+        match rule {
+            LoadRule::Node => {
+                // round(x/s) with ties up
+                let j = ((xi + 0.5).floor() as usize).min(n);
+                LoadPoint { nodes: [j, j], weights: [1.0, 0.0], x_load: self.x[j] }
+            }
+            LoadRule::Hat => {
+                let j = (xi.floor() as usize).min(n - 1);
+                let w1 = xi - j as f64;
+                let w0 = 1.0 - w1;
+                LoadPoint { nodes: [j, j + 1], weights: [w0, w1], x_load: w0 * self.x[j] + w1 * self.x[j + 1] }
+            }
+        }
+    }
+
+    /// The dense stiffness matrix `K = (EI/s^3) D^T D`.
+    pub fn stiffness_matrix(&self) -> DMatrix<f64> {
+        let n = self.nodes();
+        let mut k = DMatrix::zeros(n, n);
+        let stencil = [1.0, -2.0, 1.0];
+        for j in 1..self.segments {
+            for (a, sa) in stencil.iter().enumerate() {
+                for (b, sb) in stencil.iter().enumerate() {
+                    k[(j - 1 + a, j - 1 + b)] += self.kappa * sa * sb;
+                }
+            }
+        }
+        k
+    }
+
+    /// `M^-1/2 K M^-1/2`, symmetric with the eigenvalues `omega^2`.
+    fn mass_normalised_stiffness(&self) -> DMatrix<f64> {
+        let mut a = self.stiffness_matrix();
+        let n = self.nodes();
+        for i in 0..n {
+            for j in 0..n {
+                a[(i, j)] /= (self.mass[i] * self.mass[j]).sqrt();
+            }
+        }
+        a
+    }
+
+    /// Squared angular frequencies `omega^2` (rad^2/s^2), ascending (the first two are ~0).
+    pub fn eigenvalues(&self) -> Vec<f64> {
+        let mut ev: Vec<f64> = self.mass_normalised_stiffness().symmetric_eigenvalues().iter().copied().collect();
+        ev.sort_by(f64::total_cmp);
+        ev
+    }
+
+    /// All eigenfrequencies and mode shapes.
+    pub fn modes(&self) -> Modes {
+        let eig = self.mass_normalised_stiffness().symmetric_eigen();
+        let mut order: Vec<usize> = (0..self.nodes()).collect();
+        order.sort_by(|&a, &b| eig.eigenvalues[a].total_cmp(&eig.eigenvalues[b]));
+        let mut omega = Vec::with_capacity(order.len());
+        let mut shapes = Vec::with_capacity(order.len());
+        for &k in &order {
+            omega.push(eig.eigenvalues[k].max(0.0).sqrt());
+            let mut phi: Vec<f64> =
+                (0..self.nodes()).map(|i| eig.eigenvectors[(i, k)] / self.mass[i].sqrt()).collect();
+            let peak = phi.iter().fold(0.0_f64, |acc, v| acc.max(v.abs()));
+            let sign = if phi[0] < 0.0 { -1.0 } else { 1.0 };
+            phi.iter_mut().for_each(|v| *v *= sign / peak);
+            shapes.push(phi);
+        }
+        Modes { omega, shapes }
+    }
+}
+
+impl Modes {
+    /// Frequency of flexible mode `k` (1 = fundamental), Hz.
+    pub fn frequency_hz(&self, k: usize) -> f64 {
+        self.omega[k + 1] / (2.0 * std::f64::consts::PI)
+    }
+
+    /// Positions (m from the tip) where flexible mode `k` crosses zero, by linear interpolation
+    /// between nodes.
+    pub fn node_positions(&self, k: usize, x: &[f64]) -> Vec<f64> {
+        let phi = &self.shapes[k + 1];
+        let mut out = Vec::new();
+        for i in 0..phi.len() - 1 {
+            let (a, b) = (phi[i], phi[i + 1]);
+            if a == 0.0 {
+                out.push(x[i]);
+            } else if a * b < 0.0 {
+                out.push(x[i] + (x[i + 1] - x[i]) * a / (a - b));
+            }
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    #[test]
+    fn stencil_equals_dense_stiffness() {
+        let beam = Beam::new(&Racket::default(), 12);
+        let y: Vec<f64> = (0..13).map(|i| ((i * i) as f64 * 0.37).sin() * 1e-3).collect();
+        let k = beam.stiffness_matrix();
+        let dense = &k * nalgebra::DVector::from_vec(y.clone());
+        let mut curv = vec![0.0; 13];
+        let mut f = vec![0.0; 13];
+        beam.elastic_forces(&y, &mut curv, &mut f);
+        for i in 0..13 {
+            assert_relative_eq!(-f[i], dense[i], max_relative = 1e-12, epsilon = 1e-9);
+        }
+        let e_dense = 0.5 * nalgebra::DVector::from_vec(y.clone()).dot(&dense);
+        assert_relative_eq!(beam.bending_energy(&y), e_dense, max_relative = 1e-12);
+    }
+
+    #[test]
+    fn rigid_motions_carry_no_bending_force() {
+        let beam = Beam::new(&Racket::default(), 39);
+        let y: Vec<f64> = beam.x.iter().map(|x| 0.01 + 0.2 * x).collect();
+        let mut curv = vec![0.0; 40];
+        let mut f = vec![0.0; 40];
+        beam.elastic_forces(&y, &mut curv, &mut f);
+        assert!(f.iter().all(|v| v.abs() < 1e-6), "{f:?}");
+        assert!(beam.bending_energy(&y) < 1e-12);
+    }
+
+    #[test]
+    fn hat_weights_reproduce_the_impact_point() {
+        let beam = Beam::new(&Racket::default(), 39);
+        for &x in &[0.0, 0.0123, 0.1, 0.158, 0.71] {
+            let lp = beam.load_point(x, LoadRule::Hat);
+            assert_relative_eq!(lp.x_load, x, epsilon = 1e-15);
+            assert_relative_eq!(lp.weights[0] + lp.weights[1], 1.0);
+        }
+        // x = 10 cm lies at 5.49 segments: the paper's node rule loads node 5 (9.10 cm)
+        let lp = beam.load_point(0.10, LoadRule::Node);
+        assert_eq!(lp.nodes[0], 5);
+    }
+}

@@ -1,0 +1,5 @@
+//! The physical model: contact law (ball + strings), the discrete beam, and reduced cases.
+
+pub mod beam;
+pub mod contact;
+pub mod reduced;
