@@ -1,8 +1,60 @@
-//! racket-impact
+//! # racket-impact
+//!
+//! A replication of R. Cross, "Flexible beam analysis of the effects of string tension and
+//! frame stiffness on racket performance", Sports Engineering 3 (2000): a tennis ball hits the
+//! strings of a freely suspended racket that bends like a beam and twists about its long axis.
+//!
+//! ## The model in one page
+//! ```text
+//! ball       m_b y_b'' = -F                                                  (Eq 1)
+//! strings    F = k_s Y_s            (massless, linear)                       (Eq 2)
+//! ball law   F = k1 Y_b (compression),  F = k2 Y_b^p (expansion),
+//!            k2 = k1 Y0^(1-p)  (Y0: maximum ball compression)                (Eqs 3-4)
+//! beam       rho A y_tt = F_o - (EI y_xx)_xx, free ends, lumped on N+1 nodes (Eqs 5-6)
+//! twist      I_x theta'' = F r                                               (Eq 7)
+//! contact    Y_T = Y_s + Y_b = y_b - (y_n + r theta)                         (Eq 8)
+//!            Y_b = k_s Y_T / (k1 + k_s)  |  Y_b + k2 Y_b^p / k_s = Y_T       (Eqs 9-10)
+//! ball loss  E_b = (p-1) k1 Y0^2 / (2 (p+1));  on concrete e = sqrt(2/(p+1)) (Eqs 11-12)
+//! ```
+//! The racket starts at rest; the result is the apparent coefficient of restitution
+//! `e_A = v2/v1`, the impact duration, the twist angle and where the ball's energy went.
+//!
+//! ## Layout
+//! - [`params`]: parameter structs (defaults = the paper), validation, `--config` overrides.
+//! - [`model`]: the contact law, the discrete beam and its modes, closed-form drop tests.
+//! - [`solver`]: one impact by velocity-Verlet time stepping, with the energy ledger.
+//! - [`experiments`]: one module per result of the paper (figure -> module table there).
+//! - [`table`], [`plot`], [`io`]: result tables, the one look of every figure, atomic writes.
+//! - [`report`]: the paper's numbers beside ours.
+//!
+//! ## Example
+//! The Fig 4 impact with the paper's numerics:
+//! ```
+//! use racket_impact::{simulate, Params};
+//! let r = simulate(&Params::paper()).unwrap();
+//! assert!((r.tau_s - 4.78e-3).abs() < 0.05e-3);      // paper: 4.78 ms
+//! assert!((r.e_a - 0.166).abs() < 0.003);            // paper: 0.166
+//! assert!(r.energy_error < 1e-6);
+//! ```
+//! Invalid parameters are errors that name the field:
+//! ```
+//! use racket_impact::{simulate, Params};
+//! let mut p = Params::default();
+//! p.ball.p = 0.9;
+//! let msg = simulate(&p).unwrap_err().to_string();
+//! assert_eq!(msg, "invalid p = 0.9: hysteresis exponent must satisfy 1 < p <= 10");
+//! ```
+
 pub mod error;
+pub mod experiments;
+pub mod io;
 pub mod model;
+pub mod output;
 pub mod params;
+pub mod plot;
+pub mod report;
 pub mod solver;
+pub mod table;
 
 pub use error::{Error, Result};
 pub use params::Params;

@@ -1,23 +1,257 @@
-use racket_impact::*;
-fn main() {
-    let mut p = Params::paper();
-    let args: Vec<String> = std::env::args().collect();
-    if args.len() > 1 { p.numerics.segments = args[1].parse().unwrap(); }
-    if args.len() > 2 { p.numerics.load = args[2].parse().unwrap(); }
-    let m = Model::new(&p).unwrap();
-    println!("dt {} limit {} f1 {}", m.dt, m.dt_limit, m.f1_hz);
-    let t = std::time::Instant::now();
-    let r = m.run().unwrap();
-    println!("{:?} {:?}", r, t.elapsed());
-    for frac in [1.0, 0.5, 0.25] {
-        let mut q = p; q.numerics.dt = Some(m.dt * frac);
-        let r = simulate(&q).unwrap();
-        println!("dt*{frac}: e_a {:.10} tau {:.10e} theta {:.8} Eerr {:.2e} Perr {:.2e} fvib {:.6} peak {:.6}", r.e_a, r.tau_s, r.theta_end_deg, r.energy_error, r.momentum_error, r.f_vib, r.f_vib_peak_pe);
+//! The `racket-impact` command-line tool (SPEC.md section 5).
+//!
+//! Every error is one line on stderr naming the field and the allowed range, with exit code 2;
+//! output files are written only after the computation succeeded, atomically.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use racket_impact::model::beam::Beam;
+use racket_impact::params::{Overrides, Params};
+use racket_impact::solver::{Model, SeriesOptions};
+use racket_impact::{Error, Result};
+
+#[derive(Parser, Debug)]
+#[command(name = "racket-impact", version, about = "Ball on a flexible tennis racket: R. Cross (2000) replicated")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// One impact: e_a, tau, theta, energy partition (defaults: the paper's racket, `--load hat`)
+    Simulate(SimulateArgs),
+    /// Eigenfrequencies of the free racket and the nodes of its fundamental mode
+    Modes(ModesArgs),
+    /// Regenerate the paper's experiments: a CSV table and a PNG figure each
+    Figures(FiguresArgs),
+    /// The paper's numbers beside ours: writes REPORT.md and prints it
+    Report(ReportArgs),
+}
+
+#[derive(Args, Debug)]
+struct FiguresArgs {
+    /// Only this experiment (repeatable); see --list
+    #[arg(long = "only", value_name = "ID")]
+    only: Vec<String>,
+    /// Output directory (created if missing)
+    #[arg(long, default_value = "figures")]
+    out: PathBuf,
+    /// List the experiment ids with their titles and paper references, and exit
+    #[arg(long)]
+    list: bool,
+}
+
+#[derive(Args, Debug)]
+struct ReportArgs {
+    /// Where to write the Markdown report
+    #[arg(long, default_value = "REPORT.md")]
+    out: PathBuf,
+    /// Print the report without writing the file
+    #[arg(long)]
+    no_write: bool,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+enum Format {
+    Text,
+    Json,
+    Csv,
+}
+
+#[derive(Args, Debug)]
+struct Common {
+    /// TOML file with any of the flags below as keys (flags win)
+    #[arg(long)]
+    config: Option<PathBuf>,
+    #[command(flatten)]
+    overrides: Overrides,
+    /// Output format
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+}
+
+#[derive(Args, Debug)]
+struct SimulateArgs {
+    #[command(flatten)]
+    common: Common,
+    /// Also write the impact's time series (t, F, y_b, Y_T, theta, every energy term) as CSV
+    #[arg(long)]
+    series: Option<PathBuf>,
+    /// Sample spacing of the time series, s
+    #[arg(long, default_value_t = 2.0e-5)]
+    series_dt: f64,
+    /// Extend the time series to at least this time, s
+    #[arg(long, default_value_t = 0.0)]
+    series_end: f64,
+}
+
+#[derive(Args, Debug)]
+struct ModesArgs {
+    #[command(flatten)]
+    common: Common,
+    /// Number of flexible modes to list (1..=20, at most N-1)
+    #[arg(long, default_value_t = 4)]
+    count: usize,
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            use clap::error::ErrorKind;
+            if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
+                print!("{e}");
+                return ExitCode::SUCCESS;
+            }
+            let text = e.render().to_string();
+            eprintln!("{}", text.lines().next().unwrap_or("error: bad arguments"));
+            return ExitCode::from(2);
+        }
+    };
+    let outcome = match cli.command {
+        Command::Simulate(a) => simulate(a),
+        Command::Modes(a) => modes(a),
+        Command::Figures(a) => figures(a),
+        Command::Report(a) => report(a),
+    };
+    match outcome {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
     }
-    let b = model::beam::Beam::new(&p.racket, 39);
-    let modes = b.modes();
-    println!("f1 {} f2 {} nodes {:?}", modes.frequency_hz(1), modes.frequency_hz(2), modes.node_positions(1, &b.x));
-    let c = model::reduced::concrete_drop(&p.ball, params::drop_speed(2.54));
-    println!("{c:?}");
-    for ks in [2e4, 4e4] { println!("{:?}", model::reduced::clamped_drop(&p.ball, &params::Strings{ks}, params::drop_speed(2.54))); }
+}
+
+/// Paper defaults (with the user default `hat` load) < config file < flags, validated.
+fn params_from(common: &Common) -> Result<Params> {
+    let config = match &common.config {
+        Some(path) => Overrides::from_toml_file(path)?,
+        None => Overrides::default(),
+    };
+    let mut params = Params::default();
+    common.overrides.clone().or(config).apply(&mut params);
+    params.validate()?;
+    Ok(params)
+}
+
+fn simulate(a: SimulateArgs) -> Result<()> {
+    let params = params_from(&a.common)?;
+    if !(a.series_dt.is_finite() && a.series_dt > 0.0) {
+        return Err(Error::invalid("series-dt", a.series_dt, "sample spacing must be a finite number > 0 s"));
+    }
+    if !(a.series_end.is_finite() && (0.0..=10.0).contains(&a.series_end)) {
+        return Err(Error::invalid("series-end", a.series_end, "must satisfy 0 <= series-end <= 10 s"));
+    }
+    let model = Model::new(&params)?;
+    let (result, series) = if a.series.is_some() {
+        let (r, s) = model.run_with_series(SeriesOptions { sample_dt: a.series_dt, t_end: a.series_end })?;
+        (r, Some(s))
+    } else {
+        (model.run()?, None)
+    };
+    let text = match a.common.format {
+        Format::Json => {
+            let mut v = serde_json::to_value(result).map_err(|e| Error::io("<json>", e))?;
+            v["params"] = serde_json::to_value(params).map_err(|e| Error::io("<json>", e))?;
+            v["f1_hz"] = model.f1_hz.into();
+            format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?)
+        }
+        Format::Csv => racket_impact::output::result_csv(&result),
+        Format::Text => racket_impact::output::result_text(&params, &result),
+    };
+    if let (Some(path), Some(rows)) = (&a.series, &series) {
+        racket_impact::output::write_series(path, rows)?;
+    }
+    print!("{text}");
+    if result.recontact {
+        eprintln!("warning: the vibrating frame met the ball again after separation (re-contact not modelled)");
+    }
+    Ok(())
+}
+
+fn modes(a: ModesArgs) -> Result<()> {
+    let params = params_from(&a.common)?;
+    let n = params.numerics.segments;
+    if a.count == 0 || a.count > 20 || a.count > n - 1 {
+        return Err(Error::invalid("count", a.count, format!("must satisfy 1 <= count <= min(20, N-1 = {})", n - 1)));
+    }
+    let beam = Beam::new(&params.racket, n);
+    let modes = beam.modes();
+    let freqs: Vec<f64> = (1..=a.count).map(|k| modes.frequency_hz(k)).collect();
+    let nodes = modes.node_positions(1, &beam.x);
+    let text = match a.common.format {
+        Format::Json => {
+            let v = serde_json::json!({
+                "frequencies_hz": freqs,
+                "mode1_nodes_m": nodes,
+                "segments": n,
+                "params": params.racket,
+            });
+            format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?)
+        }
+        Format::Csv => {
+            let mut s = String::from("mode,frequency_hz\n");
+            for (k, f) in freqs.iter().enumerate() {
+                s.push_str(&format!("{},{}\n", k + 1, f));
+            }
+            s
+        }
+        Format::Text => {
+            let mut s = format!(
+                "free-free racket: L = {} m, M = {} kg, EI = {} N m^2, N = {}\n",
+                params.racket.length, params.racket.mass, params.racket.ei, n
+            );
+            for (k, f) in freqs.iter().enumerate() {
+                s.push_str(&format!("mode {}: {:9.2} Hz\n", k + 1, f));
+            }
+            let list: Vec<String> = nodes.iter().map(|x| format!("{:.2} cm", 100.0 * x)).collect();
+            s.push_str(&format!("mode-1 nodes from the tip: {}\n", list.join(", ")));
+            s
+        }
+    };
+    print!("{text}");
+    Ok(())
+}
+
+fn figures(a: FiguresArgs) -> Result<()> {
+    use racket_impact::experiments;
+    if a.list {
+        for e in experiments::registry() {
+            println!("{:<24} {}\n{:<24} ({})", e.id, e.title, "", e.paper_ref);
+        }
+        return Ok(());
+    }
+    let selected = if a.only.is_empty() {
+        experiments::registry()
+    } else {
+        a.only.iter().map(|id| experiments::find(id)).collect::<Result<Vec<_>>>()?
+    };
+    racket_impact::io::ensure_dir(&a.out)?;
+    for e in &selected {
+        let start = std::time::Instant::now();
+        let table = experiments::run_and_write(e, &a.out)?;
+        eprintln!(
+            "{:<24} {:>4} rows  {:>6.2} s  -> {}/{}.{{csv,png}}",
+            e.id,
+            table.rows.len(),
+            start.elapsed().as_secs_f64(),
+            a.out.display(),
+            e.id
+        );
+    }
+    Ok(())
+}
+
+fn report(a: ReportArgs) -> Result<()> {
+    let rows = racket_impact::report::evaluate()?;
+    let md = racket_impact::report::markdown(&rows);
+    if !a.no_write {
+        racket_impact::io::write_atomic(&a.out, md.as_bytes())?;
+    }
+    print!("{md}");
+    Ok(())
 }

@@ -120,6 +120,15 @@ impl LoadRule {
     }
 }
 
+impl clap::ValueEnum for LoadRule {
+    fn value_variants<'a>() -> &'a [Self] {
+        &[LoadRule::Node, LoadRule::Hat]
+    }
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        Some(clap::builder::PossibleValue::new(self.name()))
+    }
+}
+
 impl std::str::FromStr for LoadRule {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self> {
@@ -220,7 +229,7 @@ impl Racket {
         positive("mass", self.mass, "racket mass", "kg")?;
         positive("ei", self.ei, "bending stiffness EI", "N m^2")?;
         positive("ix", self.ix, "moment of inertia about the long axis", "kg m^2")?;
-        positive("half_width", self.half_width, "string-face half-width", "m")
+        positive("half-width", self.half_width, "string-face half-width", "m")
     }
 }
 
@@ -240,10 +249,7 @@ impl Impact {
             return Err(Error::invalid(
                 "r",
                 self.r,
-                format!(
-                    "off-axis distance must lie on the string face, |r| <= half_width = {} m",
-                    racket.half_width
-                ),
+                format!("off-axis distance must lie on the string face, |r| <= half-width = {} m", racket.half_width),
             ));
         }
         positive("v1", self.v1, "incident ball speed", "m/s")
@@ -283,6 +289,129 @@ impl Params {
     }
 }
 
+/// Overrides of [`Params`], one optional field per command-line flag. The same struct is the
+/// `--config` TOML file (keys spelled as the flags, unknown keys rejected), so a config and
+/// the flags can never drift apart. Precedence: paper defaults < config file < flags.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize, clap::Args)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct Overrides {
+    /// Impact distance from the tip, m (0 <= x <= length)
+    #[arg(long, allow_hyphen_values = true)]
+    pub x: Option<f64>,
+    /// Impact distance from the long axis, m (|r| <= half-width)
+    #[arg(long, allow_hyphen_values = true)]
+    pub r: Option<f64>,
+    /// String-plane stiffness, N/m (> 0)
+    #[arg(long, allow_hyphen_values = true)]
+    pub ks: Option<f64>,
+    /// Frame bending stiffness EI, N m^2 (> 0)
+    #[arg(long, allow_hyphen_values = true)]
+    pub ei: Option<f64>,
+    /// Racket mass, kg (> 0)
+    #[arg(long, allow_hyphen_values = true)]
+    pub mass: Option<f64>,
+    /// Racket length, m (> 0)
+    #[arg(long, allow_hyphen_values = true)]
+    pub length: Option<f64>,
+    /// Moment of inertia about the long axis, kg m^2 (> 0)
+    #[arg(long, allow_hyphen_values = true)]
+    pub ix: Option<f64>,
+    /// Half-width of the string face, m (> 0): the largest |r|
+    #[arg(long, allow_hyphen_values = true)]
+    pub half_width: Option<f64>,
+    /// Ball mass, kg (> 0)
+    #[arg(long, allow_hyphen_values = true)]
+    pub mb: Option<f64>,
+    /// Ball compression stiffness k1, N/m (> 0)
+    #[arg(long, allow_hyphen_values = true)]
+    pub k1: Option<f64>,
+    /// Ball hysteresis exponent p (1 < p <= 10)
+    #[arg(long, allow_hyphen_values = true)]
+    pub p: Option<f64>,
+    /// Incident ball speed, m/s (> 0)
+    #[arg(long, allow_hyphen_values = true)]
+    pub v1: Option<f64>,
+    /// Number of beam segments N (4..=1000)
+    #[arg(long)]
+    pub segments: Option<usize>,
+    /// Load rule: node (the paper's) or hat
+    #[arg(long)]
+    pub load: Option<LoadRule>,
+    /// Time step, s (default: converged automatic step; must be below the stability limit)
+    #[arg(long, allow_hyphen_values = true)]
+    pub dt: Option<f64>,
+}
+
+impl Overrides {
+    /// Read a TOML config file with the flag names as keys.
+    pub fn from_toml_file(path: &std::path::Path) -> Result<Self> {
+        let text = std::fs::read(path).map_err(|e| Error::Config { path: path.into(), message: e.to_string() })?;
+        let text = String::from_utf8(text)
+            .map_err(|_| Error::Config { path: path.into(), message: "not a UTF-8 text file".into() })?;
+        toml::from_str(&text).map_err(|e| Error::Config { path: path.into(), message: one_line(&e.to_string()) })
+    }
+
+    /// Field-wise `self` where set, else `base`.
+    pub fn or(self, base: Overrides) -> Overrides {
+        Overrides {
+            x: self.x.or(base.x),
+            r: self.r.or(base.r),
+            ks: self.ks.or(base.ks),
+            ei: self.ei.or(base.ei),
+            mass: self.mass.or(base.mass),
+            length: self.length.or(base.length),
+            ix: self.ix.or(base.ix),
+            half_width: self.half_width.or(base.half_width),
+            mb: self.mb.or(base.mb),
+            k1: self.k1.or(base.k1),
+            p: self.p.or(base.p),
+            v1: self.v1.or(base.v1),
+            segments: self.segments.or(base.segments),
+            load: self.load.or(base.load),
+            dt: self.dt.or(base.dt),
+        }
+    }
+
+    /// Apply the set fields to `params` (no validation: call [`Params::validate`] after).
+    pub fn apply(&self, params: &mut Params) {
+        let set = |dst: &mut f64, v: Option<f64>| {
+            if let Some(v) = v {
+                *dst = v;
+            }
+        };
+        set(&mut params.impact.x, self.x);
+        set(&mut params.impact.r, self.r);
+        set(&mut params.strings.ks, self.ks);
+        set(&mut params.racket.ei, self.ei);
+        set(&mut params.racket.mass, self.mass);
+        set(&mut params.racket.length, self.length);
+        set(&mut params.racket.ix, self.ix);
+        set(&mut params.racket.half_width, self.half_width);
+        set(&mut params.ball.mass, self.mb);
+        set(&mut params.ball.k1, self.k1);
+        set(&mut params.ball.p, self.p);
+        set(&mut params.impact.v1, self.v1);
+        if let Some(n) = self.segments {
+            params.numerics.segments = n;
+        }
+        if let Some(l) = self.load {
+            params.numerics.load = l;
+        }
+        if self.dt.is_some() {
+            params.numerics.dt = self.dt;
+        }
+    }
+}
+
+/// Fold a multi-line message (e.g. a TOML parse error with a source excerpt) into one line.
+fn one_line(msg: &str) -> String {
+    msg.lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.chars().all(|c| "|^ ".contains(c)))
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -320,5 +449,28 @@ mod tests {
     fn tension_calibration_is_sixty_pounds_for_4e4() {
         assert_eq!(ks_from_tension_lb(60.0), 4.0e4);
         assert!((ks_from_tension_lb(50.0) - 4.0e4 * 5.0 / 6.0).abs() < 1e-9);
+    }
+}
+
+#[cfg(test)]
+mod override_tests {
+    use super::*;
+
+    #[test]
+    fn config_keys_are_the_flag_names_and_unknown_keys_are_rejected() {
+        let o: Overrides = toml::from_str("x = 0.2\nhalf-width = 0.1\nload = \"node\"").unwrap();
+        assert_eq!(o.x, Some(0.2));
+        assert_eq!(o.half_width, Some(0.1));
+        assert_eq!(o.load, Some(LoadRule::Node));
+        assert!(toml::from_str::<Overrides>("xx = 0.2").is_err());
+    }
+
+    #[test]
+    fn flags_override_the_config() {
+        let flags = Overrides { ks: Some(2.0e4), ..Default::default() };
+        let config = Overrides { ks: Some(3.0e4), x: Some(0.3), ..Default::default() };
+        let mut p = Params::default();
+        flags.or(config).apply(&mut p);
+        assert_eq!((p.strings.ks, p.impact.x), (2.0e4, 0.3));
     }
 }

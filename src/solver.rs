@@ -462,7 +462,9 @@ fn hermite_eval(p0: f64, m0: f64, p1: f64, m1: f64, h: f64, s: f64) -> f64 {
 /// Derivative (per unit time) of the Hermite interpolant.
 fn hermite_slope(p0: f64, m0: f64, p1: f64, m1: f64, h: f64, s: f64) -> f64 {
     let s2 = s * s;
-    ((6.0 * s2 - 6.0 * s) * p0 + (3.0 * s2 - 4.0 * s + 1.0) * h * m0 + (6.0 * s - 6.0 * s2) * p1
+    ((6.0 * s2 - 6.0 * s) * p0
+        + (3.0 * s2 - 4.0 * s + 1.0) * h * m0
+        + (6.0 * s - 6.0 * s2) * p1
         + (3.0 * s2 - 2.0 * s) * h * m1)
         / h
 }
@@ -506,11 +508,7 @@ mod tests {
         let (a, h) = (0.2, 0.7);
         for &s in &[0.0, 0.3, 0.8, 1.0] {
             assert_relative_eq!(hermite_eval(f(a), df(a), f(a + h), df(a + h), h, s), f(a + s * h), epsilon = 1e-13);
-            assert_relative_eq!(
-                hermite_slope(f(a), df(a), f(a + h), df(a + h), h, s),
-                df(a + s * h),
-                epsilon = 1e-12
-            );
+            assert_relative_eq!(hermite_slope(f(a), df(a), f(a + h), df(a + h), h, s), df(a + s * h), epsilon = 1e-12);
         }
     }
 

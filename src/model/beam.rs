@@ -187,8 +187,7 @@ impl Beam {
         let mut shapes = Vec::with_capacity(order.len());
         for &k in &order {
             omega.push(eig.eigenvalues[k].max(0.0).sqrt());
-            let mut phi: Vec<f64> =
-                (0..self.nodes()).map(|i| eig.eigenvectors[(i, k)] / self.mass[i].sqrt()).collect();
+            let mut phi: Vec<f64> = (0..self.nodes()).map(|i| eig.eigenvectors[(i, k)] / self.mass[i].sqrt()).collect();
             let peak = phi.iter().fold(0.0_f64, |acc, v| acc.max(v.abs()));
             let sign = if phi[0] < 0.0 { -1.0 } else { 1.0 };
             phi.iter_mut().for_each(|v| *v *= sign / peak);

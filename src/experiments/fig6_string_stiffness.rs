@@ -1,0 +1,87 @@
+//! `fig6_string_stiffness`: paper Fig 6, "The same parameters in Fig. 5 plotted as a function
+//! of k_s for an impact near the tip of the racket at x = 6 cm, r = 0."
+//!
+//! Model: the full impact with the paper's numerics (N = 39; x = 6 cm loads node 3 at 5.46 cm),
+//! k_s log-spaced over three decades. Expect (p. 5-6): "the vibration amplitude can be reduced
+//! essentially to zero if the stiffness is reduced sufficiently so that the impact duration
+//! exceeds about 10 ms"; e_A rises as k_s falls.
+
+use super::fig5_position::{sweep_curves, sweep_values, COLUMNS};
+use super::{col, log_space, paper_params, sweep, Experiment};
+use crate::error::Result;
+use crate::plot::Chart;
+use crate::table::Table;
+
+/// The registry entry.
+pub const EXPERIMENT: Experiment = Experiment {
+    id: "fig6_string_stiffness",
+    title: "e_A, f(ball), f(vib) and tau against ks at x 6 cm, r 0 (EI 150)",
+    paper_ref: "Fig 6 and p. 5-6: vibration ~0 once tau exceeds ~10 ms",
+    run: || stiffness_sweep(EXPERIMENT.id, &[150.0]),
+    chart: |t| stiffness_chart(t, "Fig 6: string stiffness, x 6 cm, r 0, EI 150 N m^2 (125 Hz)", None),
+};
+
+/// Impact position of Figs 6 and 9, m from the tip.
+pub const X_TIP: f64 = 0.06;
+
+/// The k_s values: 31 log-spaced points from 1e3 to 1e6 N/m.
+pub fn ks_values() -> Vec<f64> {
+    log_space(1.0e3, 1.0e6, 31)
+}
+
+/// Sweep k_s at x = 6 cm for each frame stiffness.
+pub fn stiffness_sweep(id: &str, eis: &[f64]) -> Result<Table> {
+    let mut cols = vec!["ei_n_m2", "ks_n_per_m"];
+    cols.extend(COLUMNS);
+    let mut t = Table::new(id, &cols);
+    for &ei in eis {
+        let params: Vec<_> = ks_values()
+            .into_iter()
+            .map(|ks| {
+                let mut p = paper_params(X_TIP, ks);
+                p.racket.ei = ei;
+                p
+            })
+            .collect();
+        for (p, r) in params.iter().zip(sweep(&params)?) {
+            let mut row = vec![ei.into(), p.strings.ks.into()];
+            row.extend(sweep_values(&r));
+            t.push(row)?;
+        }
+    }
+    Ok(t)
+}
+
+/// The four curves against k_s for the first frame, and (if `faint_ei` is set) the same
+/// curves of that frame drawn faintly for comparison.
+pub fn stiffness_chart(t: &Table, title: &str, faint_ei: Option<f64>) -> Chart {
+    let ei = col(t, "ei_n_m2");
+    let main_ei = ei.iter().copied().find(|e| Some(*e) != faint_ei).unwrap_or(150.0);
+    let subset = |value: f64| {
+        let mut s = t.clone();
+        s.rows.retain(|r| r[0].as_f64() == value);
+        s
+    };
+    let main = subset(main_ei);
+    let mut curves = sweep_curves(col(&main, "ks_n_per_m"), &main);
+    if let Some(f) = faint_ei {
+        let faint = subset(f);
+        for mut c in sweep_curves(col(&faint, "ks_n_per_m"), &faint) {
+            c.label = format!("{} (EI {f})", c.label);
+            c.style = crate::plot::LineStyle::Faint;
+            curves.push(c);
+        }
+    }
+    Chart {
+        title: title.into(),
+        x_label: "string-plane stiffness ks (N/m)".into(),
+        y_label: "e_A,  f(ball),  f(vib)".into(),
+        y2_label: Some("impact duration tau (ms)".into()),
+        x_log: true,
+        x_range: Some((1.0e3, 1.0e6)),
+        y_range: Some((0.0, 1.0)),
+        y2_range: Some((0.0, 25.0)),
+        curves,
+        vlines: vec![],
+    }
+}

@@ -1,0 +1,167 @@
+//! `speeds`: what the rebound coefficient means for a serve and a forehand (paper p. 5-6 and
+//! Conclusions). With the racket at rest the ball leaves at `e_A v1`; in the frame of a serve
+//! (ball at rest, racket at `v1`) it leaves at `(1 + e_A) v1`; for a forehand (racket speed
+//! equal to the incoming ball speed) at `(1 + 2 e_A) v1`.
+//!
+//! Paper: at the centre a factor two in k_s changes e_A from 0.41 to 0.44 (+7 %), the serve by
+//! +2 % and the forehand by +3.3 %; "A decrease in string tension from 60 lb to 50 lb would
+//! therefore result in an increase in serve speed of only 0.7 %" (forehand 1.1 %, tau +0.2 ms,
+//! theta -4 % for 50 -> 60 lb); at 6 cm a 200 Hz frame raises e_A from 0.10 to 0.18, serve +7 %.
+//!
+//! Model: tension maps to k_s proportionally, 60 lb = 4e4 N/m (so 30 lb = 2e4 N/m, the paper's
+//! factor two), and every tension is computed directly, not by scaling percentages. Centre
+//! values are read off the N = 39 node-scheme curve at x = 15.8 cm by linear interpolation
+//! between nodes 8 and 9, as a reader of Fig 5 would; theta is for r = 4 cm at 30 m/s (Fig 8,
+//! node 9). The `frame` rows compare EI 150 and 384 at x = 6 cm, k_s 4e4 (Figs 6, 9).
+
+use super::{fig6_string_stiffness::X_TIP, line, paper_params, read_off_curve, Experiment, CENTRE_X, V1_OFF_AXIS};
+use crate::error::Result;
+use crate::params::{ks_from_tension_lb, Params};
+use crate::plot::{Chart, LineStyle, VLine};
+use crate::solver::simulate;
+use crate::table::{fmt_sig, Table};
+
+/// The registry entry.
+pub const EXPERIMENT: Experiment = Experiment {
+    id: "speeds",
+    title: "Serve and forehand speed gains against string tension (centre) and frame stiffness (6 cm)",
+    paper_ref: "p. 5-6 and Conclusions: ks x2 -> e_A +7 %, serve +2 %, forehand +3.3 %; 60 -> 50 lb: +0.7 %, +1.1 %",
+    run,
+    chart,
+};
+
+/// Reference tension, lb.
+pub const REF_TENSION_LB: f64 = 60.0;
+/// Tensions of the curve, lb (30 lb is k_s = 2e4 N/m).
+pub const TENSIONS_LB: [f64; 11] = [30.0, 35.0, 40.0, 45.0, 50.0, 55.0, 60.0, 65.0, 70.0, 75.0, 80.0];
+
+/// One racket setup: e_A, tau and theta as the paper's figures give them.
+#[derive(Debug, Clone, Copy)]
+pub struct Setup {
+    /// Apparent coefficient of restitution.
+    pub e_a: f64,
+    /// Impact duration, s.
+    pub tau_s: f64,
+    /// Rotation for r = 4 cm at 30 m/s, degrees.
+    pub theta_deg: f64,
+}
+
+/// e_A, tau (read off the node-scheme curve at the centre) and theta (r 4 cm, 30 m/s, Fig 8)
+/// for a string stiffness.
+pub fn centre_setup(ks: f64) -> Result<Setup> {
+    let p = paper_params(CENTRE_X, ks);
+    let mut q = p;
+    q.impact.r = 0.04;
+    q.impact.v1 = V1_OFF_AXIS;
+    Ok(Setup {
+        e_a: read_off_curve(&p, CENTRE_X, |r| r.e_a)?,
+        tau_s: read_off_curve(&p, CENTRE_X, |r| r.tau_s)?,
+        theta_deg: simulate(&q)?.theta_end_deg,
+    })
+}
+
+/// e_A and tau at 6 cm (Figs 6, 9) for a frame stiffness, k_s 4e4, and theta there for
+/// r = 4 cm at 30 m/s.
+pub fn tip_setup(ei: f64) -> Result<Setup> {
+    let mut p: Params = paper_params(X_TIP, 4.0e4);
+    p.racket.ei = ei;
+    let r = simulate(&p)?;
+    p.impact.r = 0.04;
+    p.impact.v1 = V1_OFF_AXIS;
+    Ok(Setup { e_a: r.e_a, tau_s: r.tau_s, theta_deg: simulate(&p)?.theta_end_deg })
+}
+
+/// Percentage change of `b` over `a`.
+pub fn gain_pct(a: f64, b: f64) -> f64 {
+    100.0 * (b / a - 1.0)
+}
+
+fn run() -> Result<Table> {
+    let mut t = Table::new(
+        EXPERIMENT.id,
+        &[
+            "group",
+            "tension_lb",
+            "ks_n_per_m",
+            "ei_n_m2",
+            "x_m",
+            "e_a",
+            "tau_s",
+            "theta_r4cm_deg",
+            "e_a_gain_pct",
+            "serve_gain_pct",
+            "forehand_gain_pct",
+            "tau_change_s",
+            "theta_change_pct",
+        ],
+    );
+    let reference = centre_setup(ks_from_tension_lb(REF_TENSION_LB))?;
+    for lb in TENSIONS_LB {
+        let ks = ks_from_tension_lb(lb);
+        let s = centre_setup(ks)?;
+        push(&mut t, "tension", lb, ks, 150.0, CENTRE_X, &reference, &s)?;
+    }
+    let flexible = tip_setup(150.0)?;
+    for ei in [150.0, 384.0] {
+        let s = tip_setup(ei)?;
+        push(&mut t, "frame", REF_TENSION_LB, 4.0e4, ei, X_TIP, &flexible, &s)?;
+    }
+    Ok(t)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn push(t: &mut Table, group: &str, lb: f64, ks: f64, ei: f64, x: f64, a: &Setup, b: &Setup) -> Result<()> {
+    t.push(vec![
+        group.into(),
+        lb.into(),
+        ks.into(),
+        ei.into(),
+        x.into(),
+        b.e_a.into(),
+        b.tau_s.into(),
+        b.theta_deg.into(),
+        gain_pct(a.e_a, b.e_a).into(),
+        gain_pct(1.0 + a.e_a, 1.0 + b.e_a).into(),
+        gain_pct(1.0 + 2.0 * a.e_a, 1.0 + 2.0 * b.e_a).into(),
+        (b.tau_s - a.tau_s).into(),
+        gain_pct(a.theta_deg, b.theta_deg).into(),
+    ])
+}
+
+fn chart(t: &Table) -> Chart {
+    let tension = t.filter("group", "tension");
+    let frame = t.filter("group", "frame");
+    let lb = super::col(&tension, "tension_lb");
+    let serve_frame = super::col(&frame, "serve_gain_pct").last().copied().unwrap_or(f64::NAN);
+    let fh_frame = super::col(&frame, "forehand_gain_pct").last().copied().unwrap_or(f64::NAN);
+    Chart {
+        title: format!(
+            "Speed gains vs 60 lb at the centre; 200 Hz frame at 6 cm: serve {} %, forehand {} %",
+            fmt_sig(serve_frame, 2),
+            fmt_sig(fh_frame, 2)
+        ),
+        x_label: "string tension (lb), ks = 4e4 N/m x tension / 60 lb".into(),
+        y_label: "change relative to 60 lb (%)".into(),
+        y2_label: Some("impact duration change (ms)".into()),
+        x_log: false,
+        x_range: Some((28.0, 82.0)),
+        y_range: Some((-6.0, 22.0)),
+        y2_range: Some((-1.5, 5.5)),
+        curves: vec![
+            line("e_A", lb.clone(), super::col(&tension, "e_a_gain_pct"), 0),
+            line("serve speed (1+e_A) v1", lb.clone(), super::col(&tension, "serve_gain_pct"), 1),
+            line("forehand speed (1+2e_A) v1", lb.clone(), super::col(&tension, "forehand_gain_pct"), 2),
+            line("rotation, r 4 cm", lb.clone(), super::col(&tension, "theta_change_pct"), 3),
+            super::on_right(super::styled(
+                line("tau change (ms)", lb.clone(), super::scaled(super::col(&tension, "tau_change_s"), 1e3), 4),
+                LineStyle::Dashed,
+            )),
+            super::styled(line("paper: serve at 30 and 50 lb", vec![30.0, 50.0], vec![2.0, 0.7], 1), LineStyle::Points),
+            super::styled(
+                line("paper: forehand at 30 and 50 lb", vec![30.0, 50.0], vec![3.3, 1.1], 2),
+                LineStyle::Points,
+            ),
+        ],
+        vlines: vec![VLine { x: 30.0, label: "30 lb = ks 2e4 N/m".into() }],
+    }
+}

@@ -1,0 +1,117 @@
+//! Plain-text, CSV and time-series renderings of one impact, for the command-line tool.
+
+use std::path::Path;
+
+use crate::error::Result;
+use crate::params::Params;
+use crate::solver::{ImpactResult, SeriesRow};
+use crate::table::{fmt_sig, Table, Value};
+
+/// The result as `name value unit` lines, with the impact it describes on top.
+pub fn result_text(params: &Params, r: &ImpactResult) -> String {
+    let p = params;
+    let mut s = format!(
+        "impact: x = {} m (force at {:.4} m, {} load, N = {}), r = {} m, v1 = {} m/s\n\
+         racket: L = {} m, M = {} kg, EI = {} N m^2, Ix = {} kg m^2; strings ks = {} N/m; \
+         ball mb = {} kg, k1 = {} N/m, p = {}\n",
+        p.impact.x,
+        r.x_load_m,
+        p.numerics.load.name(),
+        p.numerics.segments,
+        p.impact.r,
+        fmt_sig(p.impact.v1, 6),
+        p.racket.length,
+        p.racket.mass,
+        p.racket.ei,
+        p.racket.ix,
+        p.strings.ks,
+        p.ball.mass,
+        p.ball.k1,
+        p.ball.p
+    );
+    let lines: [(&str, f64, &str); 15] = [
+        ("e_a", r.e_a, ""),
+        ("tau", r.tau_s * 1e3, "ms"),
+        ("theta_end", r.theta_end_deg, "deg"),
+        ("peak_force", r.peak_force_n, "N"),
+        ("f_ke_ball", r.f_ke_ball, "of initial ball KE"),
+        ("f_ball", r.f_ball, "lost in the ball (Eq 11)"),
+        ("f_rigid", r.f_rigid, "racket rigid-body KE"),
+        ("f_vib", r.f_vib, "racket vibration"),
+        ("f_vib_peak_pe", r.f_vib_peak_pe, "peak bending PE after impact (paper)"),
+        ("f_spin", r.f_spin, "twist about the long axis"),
+        ("t_max_compression", r.t_max_compression_s * 1e3, "ms"),
+        ("y0", r.y0_m * 1e3, "mm ball compression"),
+        ("energy_error", r.energy_error, "relative"),
+        ("momentum_error", r.momentum_error, "relative"),
+        ("dt", r.dt_s, "s"),
+    ];
+    for (name, v, unit) in lines {
+        let line = format!("{name:<18} {:>12} {unit}", fmt_sig(v, 6));
+        s.push_str(line.trim_end());
+        s.push('\n');
+    }
+    if r.recontact {
+        s.push_str("recontact          yes: the frame meets the ball again after separation\n");
+    }
+    s
+}
+
+/// The result as a one-row CSV with the field names of SPEC.md section 2 as the header
+/// (full precision).
+pub fn result_csv(r: &ImpactResult) -> String {
+    let v = serde_json::to_value(r).unwrap_or_default();
+    let mut head = Vec::new();
+    let mut row = Vec::new();
+    if let serde_json::Value::Object(map) = v {
+        for (k, v) in map {
+            head.push(k);
+            row.push(v.to_string());
+        }
+    }
+    format!("{}\n{}\n", head.join(","), row.join(","))
+}
+
+/// The time series as a table.
+pub fn series_table(rows: &[SeriesRow]) -> Table {
+    let mut t = Table::new(
+        "series",
+        &[
+            "t_s",
+            "force_n",
+            "y_ball_m",
+            "y_total_m",
+            "theta_rad",
+            "ke_ball",
+            "pe_ball",
+            "pe_string",
+            "ke_racket",
+            "pe_racket",
+            "ke_spin",
+            "total",
+        ],
+    );
+    for r in rows {
+        let vals = [
+            r.t_s,
+            r.force_n,
+            r.y_ball_m,
+            r.y_total_m,
+            r.theta_rad,
+            r.ke_ball,
+            r.pe_ball,
+            r.pe_string,
+            r.ke_racket,
+            r.pe_racket,
+            r.ke_spin,
+            r.total,
+        ];
+        t.rows.push(vals.iter().map(|&v| Value::Num(v)).collect());
+    }
+    t
+}
+
+/// Write the time series CSV atomically.
+pub fn write_series(path: &Path, rows: &[SeriesRow]) -> Result<()> {
+    crate::io::write_atomic(path, series_table(rows).to_csv().as_bytes())
+}

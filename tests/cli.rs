@@ -1,0 +1,187 @@
+//! The command-line contract (SPEC.md section 5): results match the library, and every class of
+//! bad input gives one line on stderr naming the field, exit code 2, and no output file.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use approx::assert_relative_eq;
+use racket_impact::params::{LoadRule, Params};
+use racket_impact::simulate;
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_racket-impact"))
+}
+
+fn run(args: &[&str]) -> Output {
+    bin().args(args).output().expect("binary runs")
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("racket-impact-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn json_run_parses_and_matches_the_library() {
+    let out = run(&["simulate", "--x", "0.10", "--r", "0.05", "--ks", "4e4", "--load", "node", "--format", "json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let mut p = Params::default();
+    p.numerics.load = LoadRule::Node;
+    let r = simulate(&p).unwrap();
+    assert_relative_eq!(v["e_a"].as_f64().unwrap(), r.e_a, max_relative = 1e-15);
+    assert_relative_eq!(v["tau_s"].as_f64().unwrap(), r.tau_s, max_relative = 1e-15);
+    assert_relative_eq!(v["theta_end_deg"].as_f64().unwrap(), r.theta_end_deg, max_relative = 1e-15);
+    for key in [
+        "f_ball",
+        "f_vib",
+        "f_vib_peak_pe",
+        "f_spin",
+        "f_rigid",
+        "f_ke_ball",
+        "peak_force_n",
+        "energy_error",
+        "momentum_error",
+        "x_load_m",
+    ] {
+        assert!(v[key].is_f64(), "missing {key}");
+    }
+}
+
+#[test]
+fn csv_and_text_formats_carry_the_same_e_a() {
+    let csv = run(&["simulate", "--format", "csv"]);
+    assert!(csv.status.success());
+    let text = String::from_utf8(csv.stdout).unwrap();
+    let mut lines = text.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let row: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let i = head.iter().position(|h| *h == "e_a").unwrap();
+    let e_csv: f64 = row[i].parse().unwrap();
+    assert_relative_eq!(e_csv, simulate(&Params::default()).unwrap().e_a, max_relative = 1e-15);
+    let txt = run(&["simulate"]);
+    assert!(String::from_utf8(txt.stdout).unwrap().lines().any(|l| l.starts_with("e_a ")));
+}
+
+#[test]
+fn config_file_uses_the_flag_names_and_flags_win() {
+    let dir = scratch("config");
+    let cfg = dir.join("c.toml");
+    std::fs::write(&cfg, "x = 0.158\nr = 0.0\nks = 2e4\nload = \"node\"\n").unwrap();
+    let cfg_s = cfg.to_str().unwrap();
+    let a = run(&["simulate", "--config", cfg_s, "--format", "json"]);
+    let b = run(&["simulate", "--config", cfg_s, "--ks", "4e4", "--format", "json"]);
+    let va: serde_json::Value = serde_json::from_slice(&a.stdout).unwrap();
+    let vb: serde_json::Value = serde_json::from_slice(&b.stdout).unwrap();
+    assert_eq!(va["params"]["strings"]["ks"].as_f64(), Some(2.0e4));
+    assert_eq!(vb["params"]["strings"]["ks"].as_f64(), Some(4.0e4));
+    assert_eq!(vb["params"]["impact"]["x"].as_f64(), Some(0.158));
+}
+
+#[test]
+fn series_file_holds_time_force_and_every_energy_term() {
+    let dir = scratch("series");
+    let path = dir.join("s.csv");
+    let out = run(&["simulate", "--series", path.to_str().unwrap(), "--series-end", "0.02"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = std::fs::read_to_string(&path).unwrap();
+    let head = text.lines().next().unwrap();
+    for col in [
+        "t_s",
+        "force_n",
+        "y_ball_m",
+        "y_total_m",
+        "ke_ball",
+        "pe_ball",
+        "pe_string",
+        "ke_racket",
+        "pe_racket",
+        "ke_spin",
+        "total",
+    ] {
+        assert!(head.split(',').any(|h| h == col), "missing {col} in {head}");
+    }
+    let last_t: f64 = text.lines().last().unwrap().split(',').next().unwrap().parse().unwrap();
+    assert!(last_t >= 0.02 - 1e-4, "series ends at {last_t}");
+}
+
+#[test]
+fn modes_reports_125_hz() {
+    let out = run(&["modes", "--format", "json", "--load", "node"]);
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let f1 = v["frequencies_hz"][0].as_f64().unwrap();
+    assert!((f1 - 125.0).abs() < 1.25, "{f1}");
+}
+
+/// Every bad input: exit code 2, one stderr line naming `field`, no output written.
+fn assert_rejected(args: &[&str], field: &str, series: &Path) {
+    let mut full: Vec<&str> = args.to_vec();
+    let s = series.to_str().unwrap();
+    if args[0] == "simulate" {
+        full.extend(["--series", s]);
+    }
+    let out = run(&full);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: not one line: {err}");
+    assert!(err.contains(field), "{args:?}: message does not name {field}: {err}");
+    assert!(out.stdout.is_empty(), "{args:?}: printed a result");
+    assert!(!series.exists(), "{args:?}: wrote the series file");
+}
+
+#[test]
+fn bad_inputs_exit_2_name_the_field_and_write_nothing() {
+    let dir = scratch("bad");
+    let series = dir.join("series.csv");
+    let bad_cfg = dir.join("bad.toml");
+    std::fs::write(&bad_cfg, "ks = 4e4\nstring_tension = 55\n").unwrap();
+    let typo_cfg = dir.join("typo.toml");
+    std::fs::write(&typo_cfg, "ks = \"stiff\"\n").unwrap();
+    let bad_cfg = bad_cfg.to_str().unwrap();
+    let typo_cfg = typo_cfg.to_str().unwrap();
+    let missing = dir.join("missing.toml");
+    let missing = missing.to_str().unwrap();
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["simulate", "--mb", "-0.057"], "mb"),
+        (vec!["simulate", "--mass", "0"], "mass"),
+        (vec!["simulate", "--ks", "NaN"], "ks"),
+        (vec!["simulate", "--ei", "inf"], "ei"),
+        (vec!["simulate", "--k1", "-1"], "k1"),
+        (vec!["simulate", "--ix", "0"], "ix"),
+        (vec!["simulate", "--length", "-0.7"], "length"),
+        (vec!["simulate", "--p", "1.0"], "p"),
+        (vec!["simulate", "--p", "0.5"], "p"),
+        (vec!["simulate", "--x", "0.8"], "x"),
+        (vec!["simulate", "--x", "-0.01"], "x"),
+        (vec!["simulate", "--r", "0.3"], "r"),
+        (vec!["simulate", "--v1", "0"], "v1"),
+        (vec!["simulate", "--segments", "3"], "segments"),
+        (vec!["simulate", "--segments", "100000"], "segments"),
+        (vec!["simulate", "--dt", "1e-3"], "dt"),
+        (vec!["simulate", "--dt", "-1e-6"], "dt"),
+        (vec!["simulate", "--dt", "1e-15"], "dt"),
+        (vec!["simulate", "--ks", "abc"], "--ks"),
+        (vec!["simulate", "--load", "spread"], "--load"),
+        (vec!["simulate", "--config", bad_cfg], "string_tension"),
+        (vec!["simulate", "--config", typo_cfg], "ks"),
+        (vec!["simulate", "--config", missing], "missing.toml"),
+        (vec!["modes", "--ei", "-150"], "ei"),
+        (vec!["modes", "--count", "0"], "count"),
+    ];
+    for (args, field) in cases {
+        assert_rejected(&args, field, &series);
+    }
+}
+
+#[test]
+fn unwritable_series_path_is_an_error_and_leaves_nothing() {
+    let dir = scratch("unwritable");
+    let path = dir.join("no-such-dir").join("s.csv");
+    let out = run(&["simulate", "--series", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("s.csv"));
+    assert!(!dir.join("no-such-dir").exists());
+}

@@ -1,0 +1,108 @@
+//! Golden regression: every experiment's table, formatted at 6 significant digits, must equal
+//! its snapshot in `golden/` (insta; with CI=true a changed or missing snapshot fails and
+//! nothing is written; `make golden` re-blesses deliberately) and the committed
+//! `figures/<id>.csv`. The committed PNGs must be what the code draws now, byte for byte.
+
+use std::path::PathBuf;
+
+use racket_impact::experiments::{self, find};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn check(id: &str) {
+    let exp = find(id).unwrap();
+    let table = (exp.run)().unwrap();
+    let csv = table.to_csv();
+    assert!(!csv.contains("NaN") && !csv.contains("inf"), "{id}: non-finite value in the table");
+    insta::with_settings!({snapshot_path => "../golden", prepend_module_to_snapshot => false, omit_expression => true}, {
+        insta::assert_snapshot!(id, csv);
+    });
+    let committed = std::fs::read_to_string(root().join("figures").join(format!("{id}.csv")))
+        .unwrap_or_else(|e| panic!("figures/{id}.csv: {e} (run `make figures`)"));
+    assert_eq!(committed, csv, "figures/{id}.csv is stale: run `make figures`");
+}
+
+#[test]
+fn concrete_drop() {
+    check("concrete_drop");
+}
+#[test]
+fn clamped_drop() {
+    check("clamped_drop");
+}
+#[test]
+fn modes() {
+    check("modes");
+}
+#[test]
+fn fig4_energy() {
+    check("fig4_energy");
+}
+#[test]
+fn fig5a_position_soft() {
+    check("fig5a_position_soft");
+}
+#[test]
+fn fig5b_position_stiff() {
+    check("fig5b_position_stiff");
+}
+#[test]
+fn fig6_string_stiffness() {
+    check("fig6_string_stiffness");
+}
+#[test]
+fn fig7_off_axis_x10() {
+    check("fig7_off_axis_x10");
+}
+#[test]
+fn fig8_off_axis_centre() {
+    check("fig8_off_axis_centre");
+}
+#[test]
+fn fig9_stiff_frame() {
+    check("fig9_stiff_frame");
+}
+#[test]
+fn speeds() {
+    check("speeds");
+}
+#[test]
+fn convergence() {
+    check("convergence");
+}
+
+#[test]
+fn every_registered_experiment_has_a_golden_test_and_committed_outputs() {
+    let src = std::fs::read_to_string(root().join("tests/golden.rs")).unwrap();
+    for e in experiments::registry() {
+        assert!(src.contains(&format!("check(\"{}\")", e.id)), "no golden test for {}", e.id);
+        for ext in ["csv", "png"] {
+            assert!(root().join("figures").join(format!("{}.{ext}", e.id)).exists(), "figures/{}.{ext} missing", e.id);
+        }
+    }
+}
+
+/// The committed PNGs are what the code draws now, and drawing is deterministic.
+#[test]
+fn committed_pngs_are_current_and_deterministic() {
+    let dir = std::env::temp_dir().join(format!("racket-impact-png-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for e in experiments::registry() {
+        let committed_csv = std::fs::read_to_string(root().join("figures").join(format!("{}.csv", e.id))).unwrap();
+        // draw from the committed table (the golden tests check the table itself)
+        let table = (e.run)().unwrap();
+        assert_eq!(table.to_csv(), committed_csv, "{}: table changed", e.id);
+        let chart = (e.chart)(&table);
+        let a = dir.join(format!("{}-a.png", e.id));
+        let b = dir.join(format!("{}-b.png", e.id));
+        racket_impact::plot::render_png(e.id, &chart, &a).unwrap();
+        racket_impact::plot::render_png(e.id, &chart, &b).unwrap();
+        let (a, b) = (std::fs::read(a).unwrap(), std::fs::read(b).unwrap());
+        assert_eq!(a, b, "{}: rendering is not deterministic", e.id);
+        let committed = std::fs::read(root().join("figures").join(format!("{}.png", e.id))).unwrap();
+        assert!(committed == a, "figures/{}.png is stale: run `make figures`", e.id);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
