@@ -3,7 +3,7 @@
 CARGO ?= cargo
 BIN := target/release/racket-impact
 
-.PHONY: all build test figures report golden bench fmt lint clean
+.PHONY: all build test figures report golden bench fmt lint fuzz clean
 
 all: build
 
@@ -28,6 +28,12 @@ golden:
 
 bench:
 	$(CARGO) bench --locked
+
+# Coverage-guided fuzzing of the config parser (needs `cargo install cargo-fuzz`; the stable
+# toolchain is allowed nightly flags with RUSTC_BOOTSTRAP). FUZZ_SECONDS bounds the run.
+FUZZ_SECONDS ?= 60
+fuzz:
+	cd fuzz && RUSTC_BOOTSTRAP=1 $(CARGO) fuzz run config -- -max_total_time=$(FUZZ_SECONDS) -max_len=512
 
 fmt:
 	$(CARGO) fmt --all

@@ -37,6 +37,32 @@ pub enum Error {
         /// The limit that was reached, s.
         limit_s: f64,
     },
+    /// The integration lost energy conservation beyond the guard (a step too close to the
+    /// stability limit, or parameters far outside the model's range).
+    #[error(
+        "energy not conserved: relative error {error:.3e} exceeds {limit:.0e}; use a smaller dt \
+         (the default is converged) or check the parameters"
+    )]
+    EnergyDrift {
+        /// The largest relative energy error seen.
+        error: f64,
+        /// The guard.
+        limit: f64,
+    },
+    /// The vibrating frame met the ball again after separation, which the model does not
+    /// follow; an experiment refuses to fold such an impact into its numbers.
+    #[error(
+        "re-contact after separation at x = {x} m, r = {r} m, ks = {ks} N/m: the vibrating frame \
+         catches the ball again, which the model does not follow"
+    )]
+    Recontact {
+        /// Impact position, m.
+        x: f64,
+        /// Off-axis distance, m.
+        r: f64,
+        /// String stiffness, N/m.
+        ks: f64,
+    },
     /// The expansion-law root solve (Eq 10) failed; should not happen for valid inputs.
     #[error("expansion-law solve (Eq 10) did not converge for Y_T/Y0 = {z}")]
     ContactSolve {

@@ -138,8 +138,20 @@ fn params_from(common: &Common) -> Result<Params> {
     Ok(params)
 }
 
+/// Fail early, before any computation, when an output file's directory does not exist.
+fn check_output_path(field: &'static str, path: &std::path::Path) -> Result<()> {
+    let parent = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(std::path::Path::new("."));
+    if !parent.is_dir() {
+        return Err(Error::invalid(field, path.display(), format!("directory {} does not exist", parent.display())));
+    }
+    Ok(())
+}
+
 fn simulate(a: SimulateArgs) -> Result<()> {
     let params = params_from(&a.common)?;
+    if let Some(path) = &a.series {
+        check_output_path("series", path)?;
+    }
     if !(a.series_dt.is_finite() && a.series_dt > 0.0) {
         return Err(Error::invalid("series-dt", a.series_dt, "sample spacing must be a finite number > 0 s"));
     }
@@ -247,6 +259,9 @@ fn figures(a: FiguresArgs) -> Result<()> {
 }
 
 fn report(a: ReportArgs) -> Result<()> {
+    if !a.no_write {
+        check_output_path("out", &a.out)?;
+    }
     let rows = racket_impact::report::evaluate()?;
     let md = racket_impact::report::markdown(&rows);
     if !a.no_write {

@@ -332,7 +332,7 @@ pub struct Overrides {
     #[arg(long, allow_hyphen_values = true)]
     pub v1: Option<f64>,
     /// Number of beam segments N (4..=1000)
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub segments: Option<usize>,
     /// Load rule: node (the paper's) or hat
     #[arg(long)]
@@ -345,10 +345,20 @@ pub struct Overrides {
 impl Overrides {
     /// Read a TOML config file with the flag names as keys.
     pub fn from_toml_file(path: &std::path::Path) -> Result<Self> {
-        let text = std::fs::read(path).map_err(|e| Error::Config { path: path.into(), message: e.to_string() })?;
-        let text = String::from_utf8(text)
-            .map_err(|_| Error::Config { path: path.into(), message: "not a UTF-8 text file".into() })?;
-        toml::from_str(&text).map_err(|e| Error::Config { path: path.into(), message: one_line(&e.to_string()) })
+        let bytes = std::fs::read(path).map_err(|e| Error::Config { path: path.into(), message: e.to_string() })?;
+        Self::from_toml_bytes(path, &bytes)
+    }
+
+    /// Parse the contents of a config file (`path` only names it in errors). An empty file, a
+    /// file that is not UTF-8 text, a TOML syntax error, a wrong type and an unknown key are all
+    /// errors with one line naming the file and, where TOML knows it, the key and line.
+    pub fn from_toml_bytes(path: &std::path::Path, bytes: &[u8]) -> Result<Self> {
+        let err = |message: String| Error::Config { path: path.into(), message };
+        let text = std::str::from_utf8(bytes).map_err(|_| err("not a UTF-8 text file".into()))?;
+        if text.trim().is_empty() {
+            return Err(err("is empty (give at least one key, e.g. ks = 4e4)".into()));
+        }
+        toml::from_str(text).map_err(|e| err(one_line(&e.to_string())))
     }
 
     /// Field-wise `self` where set, else `base`.

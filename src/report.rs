@@ -16,11 +16,11 @@ use crate::error::{Error, Result};
 use crate::experiments::fig4_energy;
 use crate::experiments::fig6_string_stiffness::{ks_values, X_TIP};
 use crate::experiments::speeds::{centre_setup, gain_pct, tip_setup, Setup};
-use crate::experiments::{converged, paper_params, read_off_curve, CENTRE_X, V1_OFF_AXIS};
+use crate::experiments::{converged, impact, paper_params, read_off_curve, CENTRE_X, V1_OFF_AXIS};
 use crate::model::beam::Beam;
 use crate::model::reduced::{clamped_drop, concrete_drop};
-use crate::params::{drop_speed, ks_from_tension_lb, Ball, Params, Racket, Strings, DROP_HEIGHT_100_IN};
-use crate::solver::{simulate, ImpactResult};
+use crate::params::{drop_speed, ks_from_tension_lb, Ball, Racket, Strings, DROP_HEIGHT_100_IN};
+use crate::solver::ImpactResult;
 use crate::table::fmt_sig;
 
 /// The claims file, compiled in.
@@ -157,22 +157,18 @@ impl Cache {
     }
 }
 
-fn run(p: &Params) -> Result<ImpactResult> {
-    simulate(p)
-}
-
 /// Theta (deg) at (x, r 4 cm, 30 m/s) for a string stiffness, N = 39 node scheme.
 fn theta_r4(x: f64, ks: f64) -> Result<f64> {
     let mut p = paper_params(x, ks);
     p.impact.r = 0.04;
     p.impact.v1 = V1_OFF_AXIS;
-    Ok(run(&p)?.theta_end_deg)
+    Ok(impact(&p)?.theta_end_deg)
 }
 
 /// A centre quantity three ways: read off the node curve, at node 9, converged.
 fn centre_three(ks: f64, q: fn(&ImpactResult) -> f64) -> Result<Ours> {
     let p = paper_params(CENTRE_X, ks);
-    Ok(Ours(read_off_curve(&p, CENTRE_X, q)?, Some(q(&run(&p)?)), Some(q(&run(&converged(p))?))))
+    Ok(Ours(read_off_curve(&p, CENTRE_X, q)?, Some(q(&impact(&p)?)), Some(q(&impact(&converged(p))?))))
 }
 
 fn compute(id: &str, cache: &mut Cache) -> Result<Ours> {
@@ -205,7 +201,7 @@ fn compute(id: &str, cache: &mut Cache) -> Result<Ours> {
                 _ => |r| r.f_ke_ball,
             };
             let p = fig4_energy::params();
-            Ok(Ours(q(&run(&p)?), None, Some(q(&run(&converged(p))?))))
+            Ok(Ours(q(&impact(&p)?), None, Some(q(&impact(&converged(p))?))))
         }
         "fig5_centre_e_a_soft" => centre_three(2.0e4, |r| r.e_a),
         "fig5_centre_e_a_stiff" => centre_three(4.0e4, |r| r.e_a),
@@ -213,12 +209,12 @@ fn compute(id: &str, cache: &mut Cache) -> Result<Ours> {
         "fig5_centre_tau_stiff" => centre_three(4.0e4, |r| r.tau_s * 1e3),
         "fig5_tip_e_a" => {
             let p = paper_params(0.0, 4.0e4);
-            Ok(Ours(run(&p)?.e_a, None, Some(run(&converged(p))?.e_a)))
+            Ok(Ours(impact(&p)?.e_a, None, Some(impact(&converged(p))?.e_a)))
         }
         "fig5_node_f_vib" => {
             let p = paper_params(0.16, 4.0e4);
             let q = |r: &ImpactResult| r.f_vib_peak_pe;
-            Ok(Ours(read_off_curve(&p, 0.16, q)?, Some(q(&run(&p)?)), Some(q(&run(&converged(p))?))))
+            Ok(Ours(read_off_curve(&p, 0.16, q)?, Some(q(&impact(&p)?)), Some(q(&impact(&converged(p))?))))
         }
         "speeds_ks_half_e_a_gain" | "speeds_ks_half_serve_gain" | "speeds_ks_half_forehand_gain" => {
             let (a, b) = (cache.centre(4.0e4)?, cache.centre(2.0e4)?);
@@ -256,7 +252,7 @@ fn compute(id: &str, cache: &mut Cache) -> Result<Ours> {
             // the paper's f(vib) at the stiffest k_s whose impact lasts at least 10 ms
             let mut last = f64::NAN;
             for ks in ks_values() {
-                let r = run(&paper_params(X_TIP, ks))?;
+                let r = impact(&paper_params(X_TIP, ks))?;
                 if r.tau_s >= 0.010 {
                     last = r.f_vib_peak_pe;
                 }
@@ -266,7 +262,7 @@ fn compute(id: &str, cache: &mut Cache) -> Result<Ours> {
         "fig9_e_a_ei150" | "fig9_e_a_ei384" => {
             let mut p = paper_params(X_TIP, 4.0e4);
             p.racket.ei = if id.ends_with("150") { 150.0 } else { 384.0 };
-            Ok(Ours(run(&p)?.e_a, None, Some(run(&converged(p))?.e_a)))
+            Ok(Ours(impact(&p)?.e_a, None, Some(impact(&converged(p))?.e_a)))
         }
         "fig9_serve_gain" => {
             let (a, b) = (tip_setup(150.0)?, tip_setup(384.0)?);
@@ -277,7 +273,7 @@ fn compute(id: &str, cache: &mut Cache) -> Result<Ours> {
             let s = cache.centre(4.0e4)?;
             let mut p = paper_params(CENTRE_X, 4.0e4);
             p.impact.v1 = 60.0 / (1.0 + s.e_a);
-            plain(run(&p)?.peak_force_n)
+            plain(impact(&p)?.peak_force_n)
         }
         other => Err(Error::invalid("claim id", other, "no computation is defined for this claim")),
     }

@@ -26,6 +26,8 @@ pub const DEFAULT_DT_FRACTION: f64 = 0.5;
 pub const DEFAULT_CONTACT_PHASE_PER_STEP: f64 = 2.0e-3;
 /// The impact must end within this many compression half-periods `pi sqrt(m_b / k_series)`.
 pub const IMPACT_TIME_LIMIT_HALF_PERIODS: f64 = 20.0;
+/// An impact whose relative energy error exceeds this is an error, never a result.
+pub const ENERGY_ERROR_LIMIT: f64 = 1.0e-4;
 /// Refuse a time step that would need more steps than this for the time limit.
 pub const MAX_STEPS: f64 = 2.0e9;
 
@@ -316,6 +318,9 @@ impl Model {
                 record(&mut rows, t, &st, &cs, &l);
             }
         }
+        if energy_err > ENERGY_ERROR_LIMIT || energy_err.is_nan() {
+            return Err(Error::EnergyDrift { error: energy_err, limit: ENERGY_ERROR_LIMIT });
+        }
         let result = ImpactResult {
             e_a,
             tau_s: tau,
@@ -528,6 +533,18 @@ mod tests {
         p.numerics.dt = Some(1e-14);
         let msg = Model::new(&p).unwrap_err().to_string();
         assert!(msg.starts_with("invalid dt = ") && msg.contains("steps"), "{msg}");
+    }
+
+    #[test]
+    fn a_step_at_the_stability_limit_is_caught_by_the_energy_guard() {
+        let mut p = Params::paper();
+        let limit = Model::new(&p).unwrap().dt_limit;
+        p.numerics.dt = Some(limit * 0.9999);
+        match simulate(&p) {
+            Err(Error::EnergyDrift { error, .. }) => assert!(error > ENERGY_ERROR_LIMIT),
+            Ok(r) => assert!(r.energy_error <= ENERGY_ERROR_LIMIT, "{r:?}"),
+            Err(e) => panic!("unexpected error {e}"),
+        }
     }
 
     #[test]

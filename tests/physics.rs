@@ -238,3 +238,17 @@ fn peak_bending_energy_after_impact_matches_the_vibration_energy() {
     let r = simulate(&Params::paper()).unwrap();
     assert_relative_eq!(r.f_vib_peak_pe, r.f_vib, max_relative = 0.01);
 }
+
+#[test]
+fn a_recontact_is_flagged_and_refused_by_the_paper_experiments() {
+    // A tip impact on very stiff strings: the tip recoils, vibrates back and meets the ball,
+    // which still drifts forward (e_A < 0), again after separation.
+    let mut p = Params::paper();
+    p.impact.x = 0.0;
+    p.impact.r = 0.0;
+    p.strings.ks = 1.0e6;
+    let r = simulate(&p).unwrap();
+    assert!(r.recontact && r.e_a < 0.0, "{r:?}");
+    let err = racket_impact::experiments::impact(&p).unwrap_err();
+    assert!(matches!(err, racket_impact::Error::Recontact { .. }), "{err}");
+}

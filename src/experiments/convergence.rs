@@ -9,11 +9,11 @@
 //! rows repeat the paper's N = 39 impact with multiples of the default step: the default is
 //! converged far below the discretisation error.
 
-use super::{col, fig4_energy, line, styled, Experiment};
+use super::{col, fig4_energy, impact, line, styled, Experiment};
 use crate::error::Result;
 use crate::params::{LoadRule, Params};
 use crate::plot::{Chart, LineStyle};
-use crate::solver::{simulate, Model};
+use crate::solver::Model;
 use crate::table::{fmt_sig, Table};
 
 /// The registry entry.
@@ -38,9 +38,9 @@ fn run() -> Result<Table> {
     let mut reference = fig4_energy::params();
     reference.numerics.load = LoadRule::Hat;
     reference.numerics.segments = 320;
-    let e_ref = simulate(&reference)?.e_a;
+    let e_ref = impact(&reference)?.e_a;
     let mut push = |study: &str, p: &Params| -> Result<()> {
-        let r = simulate(p)?;
+        let r = impact(p)?;
         t.push(vec![
             study.into(),
             p.numerics.load.name().into(),

@@ -36,6 +36,7 @@ pub fn params() -> Params {
 fn run() -> Result<Table> {
     let model = Model::new(&params())?;
     let (r, rows) = model.run_with_series(SeriesOptions { sample_dt: 5.0e-5, t_end: 0.025 })?;
+    let r = super::checked(&model.params, r)?;
     let mut t = Table::new(
         EXPERIMENT.id,
         &[

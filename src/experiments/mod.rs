@@ -25,6 +25,20 @@ use crate::error::{Error, Result};
 use crate::params::{LoadRule, Params};
 use crate::plot::Chart;
 use crate::solver::{simulate, ImpactResult};
+
+/// One impact for an experiment: as [`simulate`], but a re-contact after separation (which the
+/// model does not follow) is an error rather than a number in a paper figure.
+pub fn impact(p: &Params) -> Result<ImpactResult> {
+    checked(p, simulate(p)?)
+}
+
+/// Refuse a result with a re-contact.
+pub fn checked(p: &Params, r: ImpactResult) -> Result<ImpactResult> {
+    if r.recontact {
+        return Err(Error::Recontact { x: p.impact.x, r: p.impact.r, ks: p.strings.ks });
+    }
+    Ok(r)
+}
 use crate::table::Table;
 
 pub mod clamped_drop;
@@ -85,9 +99,25 @@ pub fn find(id: &str) -> Result<Experiment> {
 /// Run one experiment and write `<out>/<id>.csv` and `<out>/<id>.png` (atomically).
 pub fn run_and_write(exp: &Experiment, out: &Path) -> Result<Table> {
     let table = (exp.run)()?;
+    if let Some((row, col)) = first_non_finite(&table) {
+        return Err(Error::invalid(
+            "table",
+            format!("{}: row {row}, column {col}", exp.id),
+            "every number in an experiment table must be finite",
+        ));
+    }
     crate::io::write_atomic(&out.join(format!("{}.csv", exp.id)), table.to_csv().as_bytes())?;
     crate::plot::render_png(exp.id, &(exp.chart)(&table), &out.join(format!("{}.png", exp.id)))?;
     Ok(table)
+}
+
+/// The first non-finite number in a table: (row, column name).
+pub fn first_non_finite(t: &Table) -> Option<(usize, String)> {
+    t.rows.iter().enumerate().find_map(|(i, row)| {
+        row.iter()
+            .position(|v| matches!(v, crate::table::Value::Num(x) if !x.is_finite()))
+            .map(|j| (i, t.columns[j].clone()))
+    })
 }
 
 /// "Centre of the strings": the node of mode 1 as the paper places it, m from the tip.
@@ -127,14 +157,14 @@ pub fn read_off_curve(p: &Params, x: f64, quantity: impl Fn(&ImpactResult) -> f6
         let mut q = *p;
         q.numerics.load = LoadRule::Node;
         q.impact.x = i as f64 * s;
-        simulate(&q).map(|r| quantity(&r))
+        impact(&q).map(|r| quantity(&r))
     };
     Ok((1.0 - w) * at(j)? + w * at(j + 1)?)
 }
 
-/// Run `simulate` for each parameter set, in order.
+/// Run [`impact`] for each parameter set, in order.
 pub fn sweep(params: &[Params]) -> Result<Vec<ImpactResult>> {
-    params.iter().map(simulate).collect()
+    params.iter().map(impact).collect()
 }
 
 /// `n` log-spaced values from `a` to `b` inclusive.

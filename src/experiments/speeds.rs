@@ -14,11 +14,12 @@
 //! between nodes 8 and 9, as a reader of Fig 5 would; theta is for r = 4 cm at 30 m/s (Fig 8,
 //! node 9). The `frame` rows compare EI 150 and 384 at x = 6 cm, k_s 4e4 (Figs 6, 9).
 
-use super::{fig6_string_stiffness::X_TIP, line, paper_params, read_off_curve, Experiment, CENTRE_X, V1_OFF_AXIS};
+use super::{
+    fig6_string_stiffness::X_TIP, impact, line, paper_params, read_off_curve, Experiment, CENTRE_X, V1_OFF_AXIS,
+};
 use crate::error::Result;
 use crate::params::{ks_from_tension_lb, Params};
 use crate::plot::{Chart, LineStyle, VLine};
-use crate::solver::simulate;
 use crate::table::{fmt_sig, Table};
 
 /// The registry entry.
@@ -56,7 +57,7 @@ pub fn centre_setup(ks: f64) -> Result<Setup> {
     Ok(Setup {
         e_a: read_off_curve(&p, CENTRE_X, |r| r.e_a)?,
         tau_s: read_off_curve(&p, CENTRE_X, |r| r.tau_s)?,
-        theta_deg: simulate(&q)?.theta_end_deg,
+        theta_deg: impact(&q)?.theta_end_deg,
     })
 }
 
@@ -65,10 +66,10 @@ pub fn centre_setup(ks: f64) -> Result<Setup> {
 pub fn tip_setup(ei: f64) -> Result<Setup> {
     let mut p: Params = paper_params(X_TIP, 4.0e4);
     p.racket.ei = ei;
-    let r = simulate(&p)?;
+    let r = impact(&p)?;
     p.impact.r = 0.04;
     p.impact.v1 = V1_OFF_AXIS;
-    Ok(Setup { e_a: r.e_a, tau_s: r.tau_s, theta_deg: simulate(&p)?.theta_end_deg })
+    Ok(Setup { e_a: r.e_a, tau_s: r.tau_s, theta_deg: impact(&p)?.theta_end_deg })
 }
 
 /// Percentage change of `b` over `a`.

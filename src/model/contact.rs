@@ -102,11 +102,15 @@ impl Contact {
     fn solve_expansion(&self, z: f64, u_guess: f64) -> Result<f64> {
         let (a, p) = (self.alpha, self.p);
         let h = |u: f64| u + a * u.powf(p) - z;
-        // h(min(z, 1)) >= 0 whenever z <= 1 + alpha (Y_T at or below its maximum); above that
-        // (the frame springs back and reloads the ball on its expansion curve) h(z) >= 0.
-        let hi = if z <= 1.0 + a { z.min(1.0) } else { z };
+        // Upper bounds of the root (h >= 0 there): z itself, (z/alpha)^(1/p), and 1 whenever
+        // z <= 1 + alpha (Y_T at or below its maximum; above it the frame has sprung back and
+        // reloads the ball on its expansion curve). The smallest keeps Newton short.
+        let mut hi = z.min((z / a).powf(1.0 / p));
+        if z <= 1.0 + a {
+            hi = hi.min(1.0);
+        }
         let mut u = if u_guess > 0.0 && u_guess < hi && h(u_guess) >= 0.0 { u_guess } else { hi };
-        for _ in 0..100 {
+        for _ in 0..200 {
             let hu = h(u);
             if hu <= 0.0 {
                 return Ok(u);
@@ -176,6 +180,23 @@ mod tests {
                 assert!(yb >= 0.0);
                 assert_relative_eq!(yb + k2 * yb.powf(c.p) / c.ks, yt, max_relative = 1e-12);
                 assert_relative_eq!(st.force, c.ks * (yt - yb), max_relative = 1e-9);
+            }
+        }
+    }
+
+    #[test]
+    fn expansion_solve_converges_at_the_extremes_of_the_parameter_ranges() {
+        for &p in &[1.0 + 1e-9, 1.01, 2.55, 10.0] {
+            for &ks in &[1.0, 1.0e3, 1.0e6, 1.0e12] {
+                let c = Contact::new(&Ball { mass: 0.057, k1: 3.0e4, p }, &Strings { ks });
+                let y0 = 0.01;
+                for &z in &[1e-300, 1e-12, 1e-3, 0.5, 1.0, 1.0 + c.alpha, 2.0 * (1.0 + c.alpha)] {
+                    let st = c.state(z * y0, Phase::Expansion { y0 }, 0.7).unwrap();
+                    let u = st.u;
+                    assert!(u.is_finite() && u >= 0.0);
+                    let lhs = u + c.alpha * u.powf(p);
+                    assert!((lhs - z).abs() <= 1e-12 * z.max(1e-300) + 1e-300, "p {p} ks {ks} z {z}: {lhs}");
+                }
             }
         }
     }

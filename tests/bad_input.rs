@@ -1,0 +1,181 @@
+//! The bad-input catalogue: every malformed or out-of-range input, through flags, config files
+//! and output paths, gives exit code 2, exactly one line on stderr naming the field (and, for
+//! range violations, the allowed range), prints no result, and creates or changes no file.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+const SENTINEL: &str = "previous content\n";
+
+struct Scratch {
+    dir: PathBuf,
+}
+
+impl Scratch {
+    fn new(name: &str) -> Self {
+        let dir = std::env::temp_dir().join(format!("racket-impact-bad-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        Scratch { dir }
+    }
+    fn file(&self, name: &str, bytes: &[u8]) -> String {
+        let p = self.dir.join(name);
+        std::fs::write(&p, bytes).unwrap();
+        p.to_str().unwrap().to_string()
+    }
+    fn path(&self, name: &str) -> String {
+        self.dir.join(name).to_str().unwrap().to_string()
+    }
+    /// Every file below the scratch dir with its bytes, to check nothing changed.
+    fn snapshot(&self) -> Vec<(PathBuf, Vec<u8>)> {
+        fn walk(d: &Path, out: &mut Vec<(PathBuf, Vec<u8>)>) {
+            let mut entries: Vec<_> = std::fs::read_dir(d).unwrap().map(|e| e.unwrap().path()).collect();
+            entries.sort();
+            for p in entries {
+                if p.is_dir() {
+                    walk(&p, out);
+                } else {
+                    out.push((p.clone(), std::fs::read(&p).unwrap()));
+                }
+            }
+        }
+        let mut out = Vec::new();
+        walk(&self.dir, &mut out);
+        out
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.dir);
+    }
+}
+
+/// What a case must name: the field, and whether it is a range check (our validation, whose
+/// message states the allowed range) or a parse error (clap or TOML, which names the flag/key).
+struct Case {
+    args: Vec<String>,
+    field: &'static str,
+    range: bool,
+}
+
+fn case(args: &[&str], field: &'static str, range: bool) -> Case {
+    Case { args: args.iter().map(|s| s.to_string()).collect(), field, range }
+}
+
+#[test]
+fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
+    let s = Scratch::new("catalogue");
+    let series = s.file("series.csv", SENTINEL.as_bytes());
+    let unknown_key = s.file("unknown.toml", b"ks = 4e4\nstring_tension = 55\n");
+    let wrong_type = s.file("wrong_type.toml", b"ks = \"stiff\"\n");
+    let empty = s.file("empty.toml", b"");
+    let blank = s.file("blank.toml", b"  \n\n");
+    let binary = s.file("binary.toml", &[0xff, 0xfe, 0x00, 0x81, 0x13, 0x37, 0xc3, 0x28]);
+    let nul = s.file("nul.toml", b"ks = 4e4\0\n");
+    let nan_cfg = s.file("nan.toml", b"ks = nan\n");
+    let p_cfg = s.file("p.toml", b"p = 1\n");
+    let syntax = s.file("syntax.toml", b"ks = \n");
+    let dup = s.file("dup.toml", b"ks = 4e4\nks = 5e4\n");
+    let table_cfg = s.file("table.toml", b"[racket]\nei = 150\n");
+    let neg_seg = s.file("negseg.toml", b"segments = -3\n");
+    let missing = s.path("missing.toml");
+    let a_file = s.file("a_file", b"not a directory\n");
+    let under_file = format!("{a_file}/out");
+    let no_dir_series = s.path("no/such/dir/series.csv");
+    let no_dir_report = s.path("no/such/dir/REPORT.md");
+
+    let sim = |extra: &[&str]| -> Vec<String> {
+        let mut v = vec!["simulate".to_string(), "--series".to_string(), series.clone()];
+        v.extend(extra.iter().map(|x| x.to_string()));
+        v
+    };
+    let mut cases: Vec<Case> = vec![
+        case(&["--mb", "-0.057"], "mb", true),
+        case(&["--mb", "0"], "mb", true),
+        case(&["--mass", "0"], "mass", true),
+        case(&["--mass", "-0.34"], "mass", true),
+        case(&["--ks", "NaN"], "ks", true),
+        case(&["--ks", "inf"], "ks", true),
+        case(&["--ks", "-4e4"], "ks", true),
+        case(&["--ei", "-inf"], "ei", true),
+        case(&["--ei", "0"], "ei", true),
+        case(&["--k1", "-1"], "k1", true),
+        case(&["--ix", "0"], "ix", true),
+        case(&["--length", "-0.7"], "length", true),
+        case(&["--p", "1.0"], "p", true),
+        case(&["--p", "0.5"], "p", true),
+        case(&["--p", "11"], "p", true),
+        case(&["--x", "0.8"], "x", true),
+        case(&["--x", "-0.01"], "x", true),
+        case(&["--x", "nan"], "x", true),
+        case(&["--r", "0.3"], "r", true),
+        case(&["--r", "-0.2"], "r", true),
+        case(&["--half-width", "0"], "half-width", true),
+        case(&["--v1", "0"], "v1", true),
+        case(&["--v1", "-30"], "v1", true),
+        case(&["--segments", "3"], "segments", true),
+        case(&["--segments", "100000"], "segments", true),
+        case(&["--segments", "-5"], "--segments", false),
+        case(&["--segments", "39.5"], "--segments", false),
+        case(&["--dt", "1e-3"], "dt", true),
+        case(&["--dt", "-1e-6"], "dt", true),
+        case(&["--dt", "0"], "dt", true),
+        case(&["--dt", "1e-15"], "dt", true),
+        case(&["--ks", "abc"], "--ks", false),
+        case(&["--ks", ""], "--ks", false),
+        case(&["--load", "spread"], "--load", false),
+        case(&["--x", "0.1", "--x", "0.2"], "--x", false),
+        case(&["--format", "xml"], "--format", false),
+        case(&["--series-dt", "0"], "series-dt", true),
+        case(&["--config", &unknown_key], "string_tension", false),
+        case(&["--config", &wrong_type], "ks", false),
+        case(&["--config", &empty], "empty", false),
+        case(&["--config", &blank], "empty", false),
+        case(&["--config", &binary], "UTF-8", false),
+        case(&["--config", &nul], "nul.toml", false),
+        case(&["--config", &nan_cfg], "ks", true),
+        case(&["--config", &p_cfg], "p", true),
+        case(&["--config", &syntax], "ks", false),
+        case(&["--config", &dup], "ks", false),
+        case(&["--config", &table_cfg], "racket", false),
+        case(&["--config", &neg_seg], "segments", false),
+        case(&["--config", &missing], "missing.toml", false),
+    ]
+    .into_iter()
+    .map(|c| Case { args: sim(&c.args.iter().map(String::as_str).collect::<Vec<_>>()), ..c })
+    .collect();
+    cases.extend([
+        case(&["simulate", "--series", &no_dir_series], "series", true),
+        case(&["simulate", "--series", &format!("{a_file}/s.csv")], "series", true),
+        case(&["figures", "--only", "fig4_energy", "--out", &under_file], "out", false),
+        case(&["figures", "--only", "no_such_experiment", "--out", &s.path("figs")], "no_such_experiment", false),
+        case(&["report", "--out", &no_dir_report], "out", true),
+        case(&["modes", "--count", "0"], "count", true),
+        case(&["modes", "--ei", "-150"], "ei", true),
+        case(&["modes", "--segments", "2"], "segments", true),
+        case(&["no-such-command"], "no-such-command", false),
+    ]);
+    assert!(cases.len() >= 30);
+
+    for c in &cases {
+        let before = s.snapshot();
+        let out = Command::new(env!("CARGO_BIN_EXE_racket-impact")).args(&c.args).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{:?}: exit {:?}, stderr {err}", c.args, out.status.code());
+        assert_eq!(err.trim_end().lines().count(), 1, "{:?}: not one line: {err}", c.args);
+        assert!(err.contains(c.field), "{:?}: message does not name {}: {err}", c.args, c.field);
+        if c.range {
+            assert!(
+                ["must", "<=", ">", "does not exist"].iter().any(|w| err.contains(w)),
+                "{:?}: no allowed range in: {err}",
+                c.args
+            );
+        }
+        assert!(out.stdout.is_empty(), "{:?}: printed a result", c.args);
+        assert!(s.snapshot() == before, "{:?}: created or changed a file", c.args);
+        assert!(!err.contains("panicked"), "{:?}: panic", c.args);
+    }
+    assert_eq!(std::fs::read_to_string(&series).unwrap(), SENTINEL);
+    assert!(!s.dir.join("figs").exists(), "figures created its output directory for an unknown id");
+}
