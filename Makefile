@@ -22,8 +22,9 @@ figures: build
 report: build
 	$(BIN) report
 
-# Deliberately re-bless the golden snapshots (review `git diff golden/` afterwards).
-golden:
+# Deliberately re-bless: regenerate figures/ and REPORT.md, then rewrite the golden snapshots
+# (review `git diff golden/ figures/ REPORT.md` afterwards).
+golden: figures
 	INSTA_UPDATE=always CI= $(CARGO) nextest run --locked --no-fail-fast
 
 bench:

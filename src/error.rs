@@ -63,6 +63,28 @@ pub enum Error {
         /// String stiffness, N/m.
         ks: f64,
     },
+    /// Explicit time stepping would take too long for these parameters.
+    #[error(
+        "these parameters need about {steps:.2e} time steps of {dt_s:.3e} s on {nodes} nodes (limit \
+         {limit:.0e} node-steps): the frame is too stiff, too light or too finely divided, or the \
+         contact too soft, for explicit time stepping; check ei, mass, length, segments, ks, k1, mb, ix"
+    )]
+    TooManySteps {
+        /// Estimated steps for the contact limit plus the post-impact window.
+        steps: f64,
+        /// The time step, s.
+        dt_s: f64,
+        /// Beam nodes.
+        nodes: usize,
+        /// The limit on steps x nodes.
+        limit: f64,
+    },
+    /// A result came out non-finite (guard; parameter ranges are meant to prevent it).
+    #[error("the impact produced a non-finite {field}; the parameters are outside the model's range")]
+    NonFinite {
+        /// The offending result field.
+        field: &'static str,
+    },
     /// The expansion-law root solve (Eq 10) failed; should not happen for valid inputs.
     #[error("expansion-law solve (Eq 10) did not converge for Y_T/Y0 = {z}")]
     ContactSolve {

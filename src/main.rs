@@ -81,10 +81,10 @@ struct SimulateArgs {
     #[arg(long)]
     series: Option<PathBuf>,
     /// Sample spacing of the time series, s
-    #[arg(long, default_value_t = 2.0e-5)]
+    #[arg(long, default_value_t = 2.0e-5, allow_hyphen_values = true)]
     series_dt: f64,
     /// Extend the time series to at least this time, s
-    #[arg(long, default_value_t = 0.0)]
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     series_end: f64,
 }
 
@@ -93,7 +93,7 @@ struct ModesArgs {
     #[command(flatten)]
     common: Common,
     /// Number of flexible modes to list (1..=20, at most N-1)
-    #[arg(long, default_value_t = 4)]
+    #[arg(long, default_value_t = 4, allow_hyphen_values = true)]
     count: usize,
 }
 
@@ -106,8 +106,15 @@ fn main() -> ExitCode {
                 print!("{e}");
                 return ExitCode::SUCCESS;
             }
+            // clap's message spreads over several lines (the allowed values, usage, a hint):
+            // keep what names the field and the allowed values, on one line
             let text = e.render().to_string();
-            eprintln!("{}", text.lines().next().unwrap_or("error: bad arguments"));
+            let parts: Vec<&str> = text
+                .lines()
+                .map(str::trim)
+                .filter(|l| !l.is_empty() && !l.starts_with("Usage:") && !l.starts_with("For more information"))
+                .collect();
+            eprintln!("{}", if parts.is_empty() { "error: bad arguments".to_string() } else { parts.join(" ") });
             return ExitCode::from(2);
         }
     };

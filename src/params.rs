@@ -22,9 +22,9 @@ pub fn drop_speed(height: f64) -> f64 {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Ball {
-    /// Ball mass `m_b`, kg; finite and > 0. Paper: 0.057 kg.
+    /// Ball mass `m_b`, kg; 1e-4..=10 ([`ranges::MB`]). Paper: 0.057 kg.
     pub mass: f64,
-    /// Compression spring constant `k1` (Eq 3), N/m; finite and > 0. Paper: 3e4 N/m.
+    /// Compression spring constant `k1` (Eq 3), N/m; 1..=1e9. Paper: 3e4 N/m.
     pub k1: f64,
     /// Hysteresis exponent `p` of the expansion law (Eq 4); 1 < p <= 10
     /// (p = 1 would be lossless). Paper: 2.55.
@@ -41,7 +41,7 @@ impl Default for Ball {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Strings {
-    /// String-plane stiffness `k_s`, N/m; finite and > 0. Paper: 2e4 (soft) and 4e4 (stiff).
+    /// String-plane stiffness `k_s`, N/m; 1..=1e12. Paper: 2e4 (soft) and 4e4 (stiff).
     pub ks: f64,
 }
 
@@ -61,15 +61,15 @@ pub fn ks_from_tension_lb(tension_lb: f64) -> f64 {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Racket {
-    /// Length `L`, m; finite and > 0. Paper: 0.71 m.
+    /// Length `L`, m; 0.05..=5. Paper: 0.71 m.
     pub length: f64,
-    /// Mass `M`, kg; finite and > 0. Paper: 0.34 kg.
+    /// Mass `M`, kg; 1e-3..=1e6 (a very heavy frame emulates a clamped one). Paper: 0.34 kg.
     pub mass: f64,
-    /// Bending stiffness `EI`, N m^2; finite and > 0. Paper: 150 (125 Hz); wide body 384 (200 Hz).
+    /// Bending stiffness `EI`, N m^2; 1e-2..=1e9. Paper: 150 (125 Hz); wide body 384 (200 Hz).
     pub ei: f64,
-    /// Moment of inertia about the long axis `I_x`, kg m^2; finite and > 0. Paper: 0.0015.
+    /// Moment of inertia about the long axis `I_x`, kg m^2; 1e-7..=1e4. Paper: 0.0015.
     pub ix: f64,
-    /// Half-width of the string face, m: the largest allowed |r|; finite and > 0.
+    /// Half-width of the string face, m: the largest allowed |r|; 1e-3..=1.
     /// Not in the paper (its Figs 7-8 go to r = 10 cm); 0.125 m is a typical 25 cm wide head.
     pub half_width: f64,
 }
@@ -88,7 +88,7 @@ pub struct Impact {
     pub x: f64,
     /// Impact distance from the long axis, m (signed: -r mirrors the impact); |r| <= half_width.
     pub r: f64,
-    /// Incident ball speed `v1` (racket at rest), m/s; finite and > 0.
+    /// Incident ball speed `v1` (racket at rest), m/s; 1e-3..=1e3 (results scale exactly with v1).
     pub v1: f64,
 }
 
@@ -144,7 +144,7 @@ impl std::str::FromStr for LoadRule {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Numerics {
-    /// Number of beam segments `N` (N+1 nodes); 4 <= N <= 1000. Paper: 39.
+    /// Number of beam segments `N` (N+1 nodes); 4 <= N <= 400. Paper: 39.
     pub segments: usize,
     /// Load rule; `node` is the paper's, `hat` the default for users' impacts.
     pub load: LoadRule,
@@ -183,7 +183,7 @@ pub struct Params {
 }
 
 /// Largest allowed number of segments.
-pub const MAX_SEGMENTS: usize = 1000;
+pub const MAX_SEGMENTS: usize = 400;
 /// Smallest allowed number of segments (a free-free beam needs interior curvature points).
 pub const MIN_SEGMENTS: usize = 4;
 
@@ -203,11 +203,43 @@ fn positive(field: &'static str, v: f64, what: &str, unit: &str) -> Result<()> {
     }
 }
 
+/// A physical range check: `lo <= v <= hi`. The ranges are wide (far beyond any racket sport)
+/// but keep every energy and frequency representable, so a result is never NaN.
+fn within(field: &'static str, v: f64, what: &str, unit: &str, (lo, hi): (f64, f64)) -> Result<()> {
+    if v.is_finite() && (lo..=hi).contains(&v) {
+        Ok(())
+    } else {
+        Err(Error::invalid(field, v, format!("{what} must satisfy {lo:e} <= {field} <= {hi:e} {unit}")))
+    }
+}
+
+/// Allowed ranges, (min, max), in the fields' units.
+pub mod ranges {
+    /// Ball mass, kg.
+    pub const MB: (f64, f64) = (1.0e-4, 10.0);
+    /// Ball compression stiffness, N/m.
+    pub const K1: (f64, f64) = (1.0, 1.0e9);
+    /// String-plane stiffness, N/m.
+    pub const KS: (f64, f64) = (1.0, 1.0e12);
+    /// Racket length, m.
+    pub const LENGTH: (f64, f64) = (0.05, 5.0);
+    /// Racket mass, kg.
+    pub const MASS: (f64, f64) = (1.0e-3, 1.0e6);
+    /// Bending stiffness, N m^2.
+    pub const EI: (f64, f64) = (1.0e-2, 1.0e9);
+    /// Moment of inertia about the long axis, kg m^2.
+    pub const IX: (f64, f64) = (1.0e-7, 1.0e4);
+    /// String-face half-width, m.
+    pub const HALF_WIDTH: (f64, f64) = (1.0e-3, 1.0);
+    /// Incident speed, m/s (results scale exactly with v1, so nothing is lost).
+    pub const V1: (f64, f64) = (1.0e-3, 1.0e3);
+}
+
 impl Ball {
     /// Check every field against the range in its doc.
     pub fn validate(&self) -> Result<()> {
-        positive("mb", self.mass, "ball mass", "kg")?;
-        positive("k1", self.k1, "ball compression stiffness", "N/m")?;
+        within("mb", self.mass, "ball mass", "kg", ranges::MB)?;
+        within("k1", self.k1, "ball compression stiffness", "N/m", ranges::K1)?;
         if !(self.p.is_finite() && self.p > 1.0 && self.p <= 10.0) {
             return Err(Error::invalid("p", self.p, "hysteresis exponent must satisfy 1 < p <= 10"));
         }
@@ -218,18 +250,18 @@ impl Ball {
 impl Strings {
     /// Check every field against the range in its doc.
     pub fn validate(&self) -> Result<()> {
-        positive("ks", self.ks, "string-plane stiffness", "N/m")
+        within("ks", self.ks, "string-plane stiffness", "N/m", ranges::KS)
     }
 }
 
 impl Racket {
     /// Check every field against the range in its doc.
     pub fn validate(&self) -> Result<()> {
-        positive("length", self.length, "racket length", "m")?;
-        positive("mass", self.mass, "racket mass", "kg")?;
-        positive("ei", self.ei, "bending stiffness EI", "N m^2")?;
-        positive("ix", self.ix, "moment of inertia about the long axis", "kg m^2")?;
-        positive("half-width", self.half_width, "string-face half-width", "m")
+        within("length", self.length, "racket length", "m", ranges::LENGTH)?;
+        within("mass", self.mass, "racket mass", "kg", ranges::MASS)?;
+        within("ei", self.ei, "bending stiffness EI", "N m^2", ranges::EI)?;
+        within("ix", self.ix, "moment of inertia about the long axis", "kg m^2", ranges::IX)?;
+        within("half-width", self.half_width, "string-face half-width", "m", ranges::HALF_WIDTH)
     }
 }
 
@@ -252,7 +284,7 @@ impl Impact {
                 format!("off-axis distance must lie on the string face, |r| <= half-width = {} m", racket.half_width),
             ));
         }
-        positive("v1", self.v1, "incident ball speed", "m/s")
+        within("v1", self.v1, "incident ball speed", "m/s", ranges::V1)
     }
 }
 
@@ -331,7 +363,7 @@ pub struct Overrides {
     /// Incident ball speed, m/s (> 0)
     #[arg(long, allow_hyphen_values = true)]
     pub v1: Option<f64>,
-    /// Number of beam segments N (4..=1000)
+    /// Number of beam segments N (4..=400)
     #[arg(long, allow_hyphen_values = true)]
     pub segments: Option<usize>,
     /// Load rule: node (the paper's) or hat

@@ -28,8 +28,9 @@ pub const DEFAULT_CONTACT_PHASE_PER_STEP: f64 = 2.0e-3;
 pub const IMPACT_TIME_LIMIT_HALF_PERIODS: f64 = 20.0;
 /// An impact whose relative energy error exceeds this is an error, never a result.
 pub const ENERGY_ERROR_LIMIT: f64 = 1.0e-4;
-/// Refuse a time step that would need more steps than this for the time limit.
-pub const MAX_STEPS: f64 = 2.0e9;
+/// Refuse parameters whose expected run (two rigid-contact half-periods plus the post-impact
+/// window of two fundamental periods) needs more node-steps than this (about 15 s here).
+pub const MAX_NODE_STEPS: f64 = 1.0e9;
 
 /// What one impact reports (SPEC.md section 2). Energies are fractions of `m_b v1^2 / 2`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -163,17 +164,6 @@ impl Model {
                         format!("time step must be below the stability limit 2/omega_max = {dt_limit:.4e} s"),
                     ));
                 }
-                if t_limit / dt > MAX_STEPS {
-                    return Err(Error::invalid(
-                        "dt",
-                        dt,
-                        format!(
-                            "time step is so small that the impact could need more than {MAX_STEPS:e} steps; \
-                             use dt >= {:.3e} s",
-                            t_limit / MAX_STEPS
-                        ),
-                    ));
-                }
                 dt
             }
             None => {
@@ -181,6 +171,24 @@ impl Model {
                 (DEFAULT_DT_FRACTION * dt_limit).min(DEFAULT_CONTACT_PHASE_PER_STEP / omega_contact)
             }
         };
+        let t_expected = 2.0 * t_limit / IMPACT_TIME_LIMIT_HALF_PERIODS + 2.0 / f1_hz;
+        let steps = t_expected / dt;
+        let work = steps * beam.nodes() as f64;
+        if !(dt.is_finite() && dt > 0.0 && f1_hz.is_finite() && f1_hz > 0.0 && work <= MAX_NODE_STEPS) {
+            if let Some(user_dt) = params.numerics.dt {
+                return Err(Error::invalid(
+                    "dt",
+                    user_dt,
+                    format!(
+                        "time step is so small that the run needs about {steps:.2e} steps on {} nodes \
+                         (limit {MAX_NODE_STEPS:.0e} node-steps); use dt >= {:.3e} s",
+                        beam.nodes(),
+                        dt * work / MAX_NODE_STEPS
+                    ),
+                ));
+            }
+            return Err(Error::TooManySteps { steps, dt_s: dt, nodes: beam.nodes(), limit: MAX_NODE_STEPS });
+        }
         Ok(Model { params: *params, beam, contact, load, f1_hz, dt_limit, dt, time_limit_s: t_limit })
     }
 
@@ -318,7 +326,7 @@ impl Model {
                 record(&mut rows, t, &st, &cs, &l);
             }
         }
-        if energy_err > ENERGY_ERROR_LIMIT || energy_err.is_nan() {
+        if energy_err > ENERGY_ERROR_LIMIT {
             return Err(Error::EnergyDrift { error: energy_err, limit: ENERGY_ERROR_LIMIT });
         }
         let result = ImpactResult {
@@ -340,7 +348,33 @@ impl Model {
             recontact,
             dt_s: dt,
         };
+        result.check_finite()?;
         Ok((result, rows))
+    }
+}
+
+impl ImpactResult {
+    /// Every field finite, or an error naming the first that is not (`f64::max` would hide a
+    /// NaN in the running error maxima, so the check is on the final numbers).
+    pub fn check_finite(&self) -> Result<()> {
+        let fields = [
+            ("e_a", self.e_a),
+            ("tau_s", self.tau_s),
+            ("theta_end_deg", self.theta_end_deg),
+            ("f_ball", self.f_ball),
+            ("f_vib", self.f_vib),
+            ("f_vib_peak_pe", self.f_vib_peak_pe),
+            ("f_spin", self.f_spin),
+            ("f_rigid", self.f_rigid),
+            ("f_ke_ball", self.f_ke_ball),
+            ("peak_force_n", self.peak_force_n),
+            ("energy_error", self.energy_error),
+            ("momentum_error", self.momentum_error),
+        ];
+        match fields.iter().find(|(_, v)| !v.is_finite()) {
+            Some((field, _)) => Err(Error::NonFinite { field }),
+            None => Ok(()),
+        }
     }
 }
 

@@ -124,7 +124,7 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
         case(&["--dt", "1e-15"], "dt", true),
         case(&["--ks", "abc"], "--ks", false),
         case(&["--ks", ""], "--ks", false),
-        case(&["--load", "spread"], "--load", false),
+        case(&["--load", "spread"], "node, hat", false),
         case(&["--x", "0.1", "--x", "0.2"], "--x", false),
         case(&["--format", "xml"], "--format", false),
         case(&["--series-dt", "0"], "series-dt", true),
@@ -141,6 +141,14 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
         case(&["--config", &table_cfg], "racket", false),
         case(&["--config", &neg_seg], "segments", false),
         case(&["--config", &missing], "missing.toml", false),
+        case(&["--ei", "1e-6"], "ei", true),
+        case(&["--mass", "1e300"], "mass", true),
+        case(&["--ei", "1e9", "--mass", "1e-3"], "ei", false),
+        case(&["--v1", "1e-300"], "v1", true),
+        case(&["--k1", "1e-300"], "k1", true),
+        case(&["--half-width", "1e300", "--r", "1e200"], "half-width", true),
+        case(&["--segments", "1000"], "segments", true),
+        case(&["--series-end", "-1"], "series-end", true),
     ]
     .into_iter()
     .map(|c| Case { args: sim(&c.args.iter().map(String::as_str).collect::<Vec<_>>()), ..c })
@@ -154,6 +162,8 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
         case(&["modes", "--count", "0"], "count", true),
         case(&["modes", "--ei", "-150"], "ei", true),
         case(&["modes", "--segments", "2"], "segments", true),
+        case(&["modes", "--count", "-1"], "--count", false),
+        case(&["modes", "--length", "1e-300"], "length", true),
         case(&["no-such-command"], "no-such-command", false),
     ]);
     assert!(cases.len() >= 30);

@@ -25,11 +25,31 @@ fn scratch(name: &str) -> PathBuf {
 
 #[test]
 fn json_run_parses_and_matches_the_library() {
-    let out = run(&["simulate", "--x", "0.10", "--r", "0.05", "--ks", "4e4", "--load", "node", "--format", "json"]);
+    let out = run(&[
+        "simulate",
+        "--x",
+        "0.23",
+        "--r",
+        "-0.03",
+        "--ks",
+        "3.1e4",
+        "--ei",
+        "200",
+        "--v1",
+        "25",
+        "--segments",
+        "50",
+        "--load",
+        "node",
+        "--format",
+        "json",
+    ]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let mut p = Params::default();
     p.numerics.load = LoadRule::Node;
+    p.numerics.segments = 50;
+    (p.impact.x, p.impact.r, p.impact.v1, p.strings.ks, p.racket.ei) = (0.23, -0.03, 25.0, 3.1e4, 200.0);
     let r = simulate(&p).unwrap();
     assert_relative_eq!(v["e_a"].as_f64().unwrap(), r.e_a, max_relative = 1e-15);
     assert_relative_eq!(v["tau_s"].as_f64().unwrap(), r.tau_s, max_relative = 1e-15);

@@ -49,7 +49,7 @@ fn paper_claims_of_section_4_are_all_listed() {
         "fig4_ke_ball",
         "fig5_centre_e_a_soft",
         "fig5_centre_e_a_stiff",
-        "fig5_tip_e_a",
+        "fig5_dead_spot",
         "fig5_node_f_vib",
         "fig5_centre_tau_soft",
         "fig5_centre_tau_stiff",

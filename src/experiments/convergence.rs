@@ -92,7 +92,7 @@ fn chart(t: &Table) -> Chart {
         y_range: Some((0.14, 0.22)),
         y2_range: None,
         curves: vec![
-            styled(line("node load (paper)", col(&node, "segments"), col(&node, "e_a"), 1), LineStyle::Solid),
+            styled(line("node load (paper), each N", col(&node, "segments"), col(&node, "e_a"), 1), LineStyle::Points),
             line("hat load", col(&hat, "segments"), col(&hat, "e_a"), 5),
             styled(line("converged (hat, N = 320)", vec![10.0, 400.0], vec![e_ref; 2], 0), LineStyle::Dashed),
             styled(line("paper: e_A = 0.166 at N = 39", vec![39.0], vec![0.166], 4), LineStyle::Points),

@@ -65,7 +65,7 @@ fn chart(t: &Table, title: &str) -> Chart {
         y2_label: Some("impact duration tau (ms)".into()),
         x_log: false,
         x_range: Some((0.0, 71.0)),
-        y_range: Some((-0.05, 0.6)),
+        y_range: Some((-0.1, 0.6)),
         y2_range: Some((0.0, 8.0)),
         curves: sweep_curves(x, t),
         vlines: vec![VLine { x: CENTRE_X * 100.0, label: "centre of the strings (15.8 cm)".into() }],
