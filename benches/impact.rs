@@ -1,6 +1,9 @@
-//! Criterion benchmarks: one impact at the paper's settings, a fine `hat` beam, and a sweep.
+//! Criterion benchmarks (`make bench`): one impact at the paper's settings, a fine `hat` beam,
+//! a 100-point Fig 5-style sweep, every experiment's table without PNG encoding, and the PNG
+//! rendering alone.
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use racket_impact::experiments;
 use racket_impact::params::{LoadRule, Params};
 use racket_impact::solver::{simulate, Model};
 
@@ -12,26 +15,48 @@ fn paper_impact(c: &mut Criterion) {
     let mut fine = p;
     fine.numerics.segments = 160;
     fine.numerics.load = LoadRule::Hat;
-    c.bench_function("fig4_impact_n160_hat", |b| b.iter(|| simulate(std::hint::black_box(&fine)).unwrap()));
+    let mut group = c.benchmark_group("fine");
+    group.sample_size(10);
+    group.bench_function("fig4_impact_n160_hat", |b| b.iter(|| simulate(std::hint::black_box(&fine)).unwrap()));
+    group.finish();
 }
 
-fn sweep(c: &mut Criterion) {
+fn sweeps(c: &mut Criterion) {
     let mut group = c.benchmark_group("sweep");
     group.sample_size(10);
-    group.bench_function("fig5_style_40_positions", |b| {
-        b.iter(|| {
-            (0..=39)
-                .map(|i| {
-                    let mut p = Params::paper();
-                    p.impact.r = 0.0;
-                    p.impact.x = 0.71 * i as f64 / 39.0;
-                    simulate(&p).unwrap().e_a
-                })
-                .sum::<f64>()
+    let params: Vec<Params> = (0..100)
+        .map(|i| {
+            let mut p = Params::paper();
+            p.impact.r = 0.0;
+            p.impact.x = 0.71 * i as f64 / 99.0;
+            p
         })
+        .collect();
+    group.bench_function("fig5_style_100_positions_parallel", |b| {
+        b.iter(|| experiments::sweep(std::hint::black_box(&params)).unwrap())
+    });
+    group.bench_function("all_experiment_tables_no_png", |b| {
+        b.iter(|| experiments::registry().iter().map(|e| (e.run)().unwrap().rows.len()).sum::<usize>())
     });
     group.finish();
 }
 
-criterion_group!(benches, paper_impact, sweep);
+fn png(c: &mut Criterion) {
+    let dir = std::env::temp_dir().join(format!("racket-impact-bench-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let charts: Vec<_> = experiments::registry().iter().map(|e| (e.id, (e.chart)(&(e.run)().unwrap()))).collect();
+    let mut group = c.benchmark_group("png");
+    group.sample_size(10);
+    group.bench_function("render_all_12_figures", |b| {
+        b.iter(|| {
+            for (id, chart) in &charts {
+                racket_impact::plot::render_png(id, chart, &dir.join(format!("{id}.png"))).unwrap();
+            }
+        })
+    });
+    group.finish();
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+criterion_group!(benches, paper_impact, sweeps, png);
 criterion_main!(benches);

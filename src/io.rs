@@ -67,6 +67,50 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     commit_temp(&tmp, path)
 }
 
+/// A file written in pieces and published atomically: the bytes go to a hidden temporary file
+/// next to the target; [`AtomicFile::commit`] syncs it and renames it over the target. Dropped
+/// without a commit (an error, a panic), the temporary file is removed and the target is
+/// untouched. Used for streamed outputs such as `sweep`, whose size is not known in advance.
+pub struct AtomicFile {
+    tmp: PathBuf,
+    path: PathBuf,
+    out: Option<std::io::BufWriter<File>>,
+}
+
+impl AtomicFile {
+    /// Start writing `path` (its directory must exist).
+    pub fn create(path: &Path) -> Result<Self> {
+        let tmp = temp_sibling(path, "")?;
+        let file = File::create(&tmp).map_err(|e| Error::io(path, e))?;
+        Ok(AtomicFile { tmp, path: path.to_path_buf(), out: Some(std::io::BufWriter::new(file)) })
+    }
+
+    /// Append bytes.
+    pub fn write(&mut self, bytes: &[u8]) -> Result<()> {
+        match self.out.as_mut() {
+            Some(w) => w.write_all(bytes).map_err(|e| Error::io(&self.path, e)),
+            None => Err(Error::io(&self.path, "already committed")),
+        }
+    }
+
+    /// Flush, sync and rename over the target.
+    pub fn commit(mut self) -> Result<()> {
+        let w = self.out.take().ok_or_else(|| Error::io(&self.path, "already committed"))?;
+        let file = w.into_inner().map_err(|e| Error::io(&self.path, e.error()))?;
+        file.sync_all().map_err(|e| Error::io(&self.path, e))?;
+        drop(file);
+        commit_temp(&self.tmp, &self.path)
+    }
+}
+
+impl Drop for AtomicFile {
+    fn drop(&mut self) {
+        if self.out.take().is_some() {
+            let _ = fs::remove_file(&self.tmp);
+        }
+    }
+}
+
 /// Create `dir` and any missing parents (like `mkdir -p`).
 ///
 /// Succeeds if the directory already exists; fails with an [`Error::Io`] naming `dir` if it

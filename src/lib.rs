@@ -26,6 +26,7 @@
 //! - [`experiments`]: one module per result of the paper (figure -> module table there).
 //! - [`table`], [`plot`], [`io`]: result tables, the one look of every figure, atomic writes.
 //! - [`report`]: the paper's numbers beside ours.
+//! - [`sweep`]: parallel, streamed parameter sweeps.
 //!
 //! ## Example
 //! The Fig 4 impact with the paper's numerics:
@@ -54,6 +55,7 @@ pub mod params;
 pub mod plot;
 pub mod report;
 pub mod solver;
+pub mod sweep;
 pub mod table;
 
 pub use error::{Error, Result};

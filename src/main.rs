@@ -29,6 +29,26 @@ enum Command {
     Figures(FiguresArgs),
     /// The paper's numbers beside ours: writes REPORT.md and prints it
     Report(ReportArgs),
+    /// Run the cartesian product of ranges or lists of any parameters, in parallel, as CSV
+    ///
+    /// After the options, give any parameter as `--KEY SPEC`, where SPEC is a value (0.1), a
+    /// list (2e4,4e4 or node,hat), a range start:stop:count or a log range start:stop:count:log.
+    /// Keys: x r ks ei mass length ix half-width mb k1 p v1 segments load dt.
+    /// Example: racket-impact sweep --out s.csv --x 0.02:0.60:50 --ks 2e4,4e4 --load node
+    Sweep(SweepArgs),
+}
+
+#[derive(Args, Debug)]
+struct SweepArgs {
+    /// TOML file with fixed values for any parameter (as for `simulate`)
+    #[arg(long)]
+    config: Option<PathBuf>,
+    /// Output CSV file (written atomically); standard output if absent
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// The varied parameters: --KEY SPEC pairs
+    #[arg(trailing_var_arg = true, allow_hyphen_values = true, value_name = "--KEY SPEC")]
+    specs: Vec<String>,
 }
 
 #[derive(Args, Debug)]
@@ -123,6 +143,7 @@ fn main() -> ExitCode {
         Command::Modes(a) => modes(a),
         Command::Figures(a) => figures(a),
         Command::Report(a) => report(a),
+        Command::Sweep(a) => sweep(a),
     };
     match outcome {
         Ok(()) => ExitCode::SUCCESS,
@@ -276,4 +297,83 @@ fn report(a: ReportArgs) -> Result<()> {
     }
     print!("{md}");
     Ok(())
+}
+
+fn sweep(a: SweepArgs) -> Result<()> {
+    use racket_impact::sweep::{parse_spec, Sweep};
+    use std::io::{IsTerminal, Write};
+    let base = match &a.config {
+        Some(path) => Overrides::from_toml_file(path)?,
+        None => Overrides::default(),
+    };
+    if a.specs.len() % 2 != 0 || a.specs.is_empty() {
+        return Err(Error::invalid(
+            "sweep",
+            a.specs.join(" "),
+            "give parameters as --KEY SPEC pairs, e.g. --ks 2e4,4e4",
+        ));
+    }
+    let mut axes = Vec::new();
+    for pair in a.specs.chunks(2) {
+        let key = pair[0].strip_prefix("--").ok_or_else(|| {
+            Error::invalid("sweep", &pair[0], "expected --KEY before each SPEC (e.g. --x 0.02:0.60:50)")
+        })?;
+        if axes.iter().any(|ax: &racket_impact::sweep::Axis| ax.key == key) {
+            return Err(Error::invalid("sweep", key, "each parameter may be given once"));
+        }
+        axes.push(parse_spec(key, &pair[1])?);
+    }
+    let sweep = Sweep { base, axes };
+    sweep.validate_all()?; // a bad value anywhere fails before anything is written
+    if let Some(path) = &a.out {
+        check_output_path("out", path)?;
+    }
+    let total = sweep.len();
+    let bar = indicatif::ProgressBar::hidden();
+    bar.set_length(total);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} impacts, {per_sec}, eta {eta}")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    let started = std::time::Instant::now();
+    let show = std::io::stderr().is_terminal();
+    let mut file = match &a.out {
+        Some(path) => Some(racket_impact::io::AtomicFile::create(path)?),
+        None => None,
+    };
+    let stdout = std::io::stdout();
+    let mut emit = |bytes: &[u8]| -> Result<()> {
+        match file.as_mut() {
+            Some(f) => f.write(bytes),
+            None => stdout.lock().write_all(bytes).map_err(|e| Error::io("<stdout>", e)),
+        }
+    };
+    emit(csv_line(&sweep.header()).as_bytes())?;
+    let mut buf = String::new();
+    let outcome = sweep.run(
+        |rows| {
+            buf.clear();
+            rows.iter().for_each(|r| buf.push_str(&csv_line(r)));
+            emit(buf.as_bytes())
+        },
+        |done| {
+            if show && bar.is_hidden() && started.elapsed().as_secs_f64() > 1.0 {
+                bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+            }
+            bar.set_position(done);
+        },
+    );
+    bar.finish_and_clear();
+    outcome?; // on error the temporary file is dropped, the target untouched
+    match file {
+        Some(f) => f.commit(),
+        None => Ok(()),
+    }
+}
+
+/// One CSV line (fields quoted only where needed).
+fn csv_line(fields: &[String]) -> String {
+    let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(Vec::new());
+    let _ = w.write_record(fields);
+    String::from_utf8(w.into_inner().unwrap_or_default()).unwrap_or_default()
 }

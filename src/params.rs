@@ -393,6 +393,45 @@ impl Overrides {
         toml::from_str(text).map_err(|e| err(one_line(&e.to_string())))
     }
 
+    /// The keys, spelled as the flags and config keys.
+    pub const KEYS: [&'static str; 15] =
+        ["x", "r", "ks", "ei", "mass", "length", "ix", "half-width", "mb", "k1", "p", "v1", "segments", "load", "dt"];
+
+    /// Set one field from its text, as a flag would (used by `sweep`, which varies any key).
+    pub fn set(&mut self, key: &str, value: &str) -> Result<()> {
+        let num = |field: &'static str| -> Result<Option<f64>> {
+            value.trim().parse::<f64>().map(Some).map_err(|_| Error::invalid(field, value, "must be a number"))
+        };
+        match key {
+            "x" => self.x = num("x")?,
+            "r" => self.r = num("r")?,
+            "ks" => self.ks = num("ks")?,
+            "ei" => self.ei = num("ei")?,
+            "mass" => self.mass = num("mass")?,
+            "length" => self.length = num("length")?,
+            "ix" => self.ix = num("ix")?,
+            "half-width" => self.half_width = num("half-width")?,
+            "mb" => self.mb = num("mb")?,
+            "k1" => self.k1 = num("k1")?,
+            "p" => self.p = num("p")?,
+            "v1" => self.v1 = num("v1")?,
+            "dt" => self.dt = num("dt")?,
+            "segments" => {
+                self.segments = Some(value.trim().parse().map_err(|_| {
+                    Error::invalid("segments", value, "must be a whole number of segments, 4 <= N <= 400")
+                })?)
+            }
+            "load" => self.load = Some(value.trim().parse()?),
+            _ => {
+                return Err(Error::Config {
+                    path: "<sweep>".into(),
+                    message: format!("unknown parameter '{key}' (known: {})", Self::KEYS.join(", ")),
+                })
+            }
+        }
+        Ok(())
+    }
+
     /// Field-wise `self` where set, else `base`.
     pub fn or(self, base: Overrides) -> Overrides {
         Overrides {

@@ -154,3 +154,35 @@ fn a_recontact_is_reported_on_stderr_and_in_the_json() {
     assert_eq!(v["recontact"].as_bool(), Some(true));
     assert!(String::from_utf8_lossy(&out.stderr).starts_with("warning: the vibrating frame met the ball again"));
 }
+
+#[test]
+fn sweep_streams_the_cartesian_product_in_order_and_matches_simulate() {
+    let dir = scratch("sweep");
+    let path = dir.join("s.csv");
+    let out =
+        run(&["sweep", "--out", path.to_str().unwrap(), "--ks", "2e4,4e4", "--x", "0.05:0.25:5", "--load", "node"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = std::fs::read_to_string(&path).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 11);
+    assert!(lines[0].starts_with("ks_n_per_m,x_m,load,e_a,tau_s"));
+    let row: Vec<&str> = lines[7].split(',').collect(); // ks 4e4, x = 0.1
+    assert_eq!((row[0], row[1]), ("4e4", "0.1"));
+    let mut p = Params::default();
+    p.numerics.load = LoadRule::Node;
+    p.impact.x = 0.1;
+    p.strings.ks = 4e4;
+    assert_relative_eq!(row[3].parse::<f64>().unwrap(), simulate(&p).unwrap().e_a, max_relative = 1e-15);
+}
+
+#[test]
+fn a_sweep_with_a_bad_value_anywhere_writes_nothing() {
+    let dir = scratch("sweep-bad");
+    let path = dir.join("s.csv");
+    let out = run(&["sweep", "--out", path.to_str().unwrap(), "--x", "0.1:0.9:5"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("invalid x = 0.9"));
+    assert!(std::fs::read_dir(&dir).unwrap().next().is_none(), "left a file behind");
+    let stdout = run(&["sweep", "--x", "0.1:0.9:5"]);
+    assert!(stdout.stdout.is_empty());
+}

@@ -39,10 +39,26 @@ fn run() -> Result<Table> {
     reference.numerics.load = LoadRule::Hat;
     reference.numerics.segments = 320;
     let e_ref = impact(&reference)?.e_a;
-    let mut push = |study: &str, p: &Params| -> Result<()> {
-        let r = impact(p)?;
+    let mut runs: Vec<(&str, Params)> = Vec::new();
+    for load in [LoadRule::Node, LoadRule::Hat] {
+        for n in SEGMENTS {
+            let mut p = fig4_energy::params();
+            p.numerics.load = load;
+            p.numerics.segments = n;
+            runs.push(("segments", p));
+        }
+    }
+    let paper = fig4_energy::params();
+    let dt0 = Model::new(&paper)?.dt;
+    for k in DT_FACTORS {
+        let mut p = paper;
+        p.numerics.dt = Some(dt0 * k);
+        runs.push(("dt", p));
+    }
+    let params: Vec<Params> = runs.iter().map(|(_, p)| *p).collect();
+    for ((study, p), r) in runs.iter().zip(super::sweep(&params)?) {
         t.push(vec![
-            study.into(),
+            (*study).into(),
             p.numerics.load.name().into(),
             p.numerics.segments.into(),
             r.dt_s.into(),
@@ -51,22 +67,7 @@ fn run() -> Result<Table> {
             r.tau_s.into(),
             r.theta_end_deg.into(),
             (r.e_a / e_ref - 1.0).into(),
-        ])
-    };
-    for load in [LoadRule::Node, LoadRule::Hat] {
-        for n in SEGMENTS {
-            let mut p = fig4_energy::params();
-            p.numerics.load = load;
-            p.numerics.segments = n;
-            push("segments", &p)?;
-        }
-    }
-    let paper = fig4_energy::params();
-    let dt0 = Model::new(&paper)?.dt;
-    for k in DT_FACTORS {
-        let mut p = paper;
-        p.numerics.dt = Some(dt0 * k);
-        push("dt", &p)?;
+        ])?;
     }
     Ok(t)
 }

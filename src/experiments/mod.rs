@@ -162,9 +162,10 @@ pub fn read_off_curve(p: &Params, x: f64, quantity: impl Fn(&ImpactResult) -> f6
     Ok((1.0 - w) * at(j)? + w * at(j + 1)?)
 }
 
-/// Run [`impact`] for each parameter set, in order.
+/// Run [`impact`] for each parameter set, in parallel, results in the order given.
 pub fn sweep(params: &[Params]) -> Result<Vec<ImpactResult>> {
-    params.iter().map(impact).collect()
+    use rayon::prelude::*;
+    params.par_iter().map(impact).collect()
 }
 
 /// `n` log-spaced values from `a` to `b` inclusive.
