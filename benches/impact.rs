@@ -12,6 +12,11 @@ fn paper_impact(c: &mut Criterion) {
     c.bench_function("fig4_impact_n39_node", |b| b.iter(|| simulate(std::hint::black_box(&p)).unwrap()));
     let model = Model::new(&p).unwrap();
     c.bench_function("fig4_impact_n39_node_prepared", |b| b.iter(|| model.run().unwrap()));
+    let mut modal = p;
+    modal.numerics.solver = racket_impact::params::SolverKind::Modal;
+    c.bench_function("fig4_impact_n39_node_modal", |b| b.iter(|| simulate(std::hint::black_box(&modal)).unwrap()));
+    let prepared = racket_impact::modal::ModalModel::new(&modal).unwrap();
+    c.bench_function("fig4_impact_n39_node_modal_prepared", |b| b.iter(|| prepared.run().unwrap()));
     let mut fine = p;
     fine.numerics.segments = 160;
     fine.numerics.load = LoadRule::Hat;

@@ -23,6 +23,7 @@
 //! - [`params`]: parameter structs (defaults = the paper), validation, `--config` overrides.
 //! - [`model`]: the contact law, the discrete beam and its modes, closed-form drop tests.
 //! - [`solver`]: one impact by velocity-Verlet time stepping, with the energy ledger.
+//! - [`modal`]: an independent modal-superposition solver with a contact-sized step.
 //! - [`experiments`]: one module per result of the paper (figure -> module table there).
 //! - [`table`], [`plot`], [`io`]: result tables, the one look of every figure, atomic writes.
 //! - [`report`]: the paper's numbers beside ours.
@@ -49,6 +50,7 @@
 pub mod error;
 pub mod experiments;
 pub mod io;
+pub mod modal;
 pub mod model;
 pub mod output;
 pub mod params;

@@ -187,11 +187,14 @@ fn simulate(a: SimulateArgs) -> Result<()> {
         return Err(Error::invalid("series-end", a.series_end, "must satisfy 0 <= series-end <= 10 s"));
     }
     let model = Model::new(&params)?;
-    let (result, series) = if a.series.is_some() {
+    let (result, series) = if let Some(path) = &a.series {
+        if params.numerics.solver != racket_impact::params::SolverKind::Fd {
+            return Err(Error::invalid("series", path.display(), "a time series needs --solver fd"));
+        }
         let (r, s) = model.run_with_series(SeriesOptions { sample_dt: a.series_dt, t_end: a.series_end })?;
         (r, Some(s))
     } else {
-        (model.run()?, None)
+        (racket_impact::simulate(&params)?, None)
     };
     let text = match a.common.format {
         Format::Json => {

@@ -140,6 +140,47 @@ impl std::str::FromStr for LoadRule {
     }
 }
 
+/// Which solver integrates the impact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum SolverKind {
+    /// Explicit finite differences in time (velocity Verlet), the reference.
+    #[default]
+    Fd,
+    /// Modal superposition with exact modal propagation and a contact-sized step.
+    Modal,
+}
+
+impl SolverKind {
+    /// The name used on the command line and in configs.
+    pub fn name(self) -> &'static str {
+        match self {
+            SolverKind::Fd => "fd",
+            SolverKind::Modal => "modal",
+        }
+    }
+}
+
+impl clap::ValueEnum for SolverKind {
+    fn value_variants<'a>() -> &'a [Self] {
+        &[SolverKind::Fd, SolverKind::Modal]
+    }
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        Some(clap::builder::PossibleValue::new(self.name()))
+    }
+}
+
+impl std::str::FromStr for SolverKind {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self> {
+        match s {
+            "fd" => Ok(SolverKind::Fd),
+            "modal" => Ok(SolverKind::Modal),
+            other => Err(Error::invalid("solver", other, "must be 'fd' or 'modal'")),
+        }
+    }
+}
+
 /// Discretisation and time stepping.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -151,18 +192,21 @@ pub struct Numerics {
     /// Time step, s; `None` picks a converged default. Must be finite, > 0 and below the
     /// stability limit `2 / omega_max` (checked when the beam is built).
     pub dt: Option<f64>,
+    /// The solver: `fd` (explicit, the reference) or `modal`.
+    #[serde(default)]
+    pub solver: SolverKind,
 }
 
 impl Default for Numerics {
     fn default() -> Self {
-        Numerics { segments: 39, load: LoadRule::Hat, dt: None }
+        Numerics { segments: 39, load: LoadRule::Hat, dt: None, solver: SolverKind::Fd }
     }
 }
 
 impl Numerics {
     /// The paper's numerics: N = 39 with the force on the nearest node.
     pub fn paper() -> Self {
-        Numerics { segments: 39, load: LoadRule::Node, dt: None }
+        Numerics { segments: 39, load: LoadRule::Node, dt: None, solver: SolverKind::Fd }
     }
 }
 
@@ -372,6 +416,9 @@ pub struct Overrides {
     /// Time step, s (default: converged automatic step; must be below the stability limit)
     #[arg(long, allow_hyphen_values = true)]
     pub dt: Option<f64>,
+    /// Solver: fd (explicit time stepping, the reference) or modal (modal superposition)
+    #[arg(long)]
+    pub solver: Option<SolverKind>,
 }
 
 impl Overrides {
@@ -394,8 +441,24 @@ impl Overrides {
     }
 
     /// The keys, spelled as the flags and config keys.
-    pub const KEYS: [&'static str; 15] =
-        ["x", "r", "ks", "ei", "mass", "length", "ix", "half-width", "mb", "k1", "p", "v1", "segments", "load", "dt"];
+    pub const KEYS: [&'static str; 16] = [
+        "x",
+        "r",
+        "ks",
+        "ei",
+        "mass",
+        "length",
+        "ix",
+        "half-width",
+        "mb",
+        "k1",
+        "p",
+        "v1",
+        "segments",
+        "load",
+        "dt",
+        "solver",
+    ];
 
     /// Set one field from its text, as a flag would (used by `sweep`, which varies any key).
     pub fn set(&mut self, key: &str, value: &str) -> Result<()> {
@@ -422,6 +485,7 @@ impl Overrides {
                 })?)
             }
             "load" => self.load = Some(value.trim().parse()?),
+            "solver" => self.solver = Some(value.trim().parse()?),
             _ => {
                 return Err(Error::Config {
                     path: "<sweep>".into(),
@@ -450,6 +514,7 @@ impl Overrides {
             segments: self.segments.or(base.segments),
             load: self.load.or(base.load),
             dt: self.dt.or(base.dt),
+            solver: self.solver.or(base.solver),
         }
     }
 
@@ -480,6 +545,9 @@ impl Overrides {
         }
         if self.dt.is_some() {
             params.numerics.dt = self.dt;
+        }
+        if let Some(s) = self.solver {
+            params.numerics.solver = s;
         }
     }
 }

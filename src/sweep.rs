@@ -95,6 +95,7 @@ pub fn column_name(key: &str) -> &'static str {
         "v1" => "v1_m_per_s",
         "segments" => "segments",
         "load" => "load",
+        "solver" => "solver",
         _ => "dt_s",
     }
 }

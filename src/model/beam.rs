@@ -197,6 +197,23 @@ impl Beam {
     }
 }
 
+impl Beam {
+    /// The flexible modes (the two rigid-body modes left out), ascending: `omega^2` (rad^2/s^2)
+    /// and shapes normalised to unit modal mass, `phi^T M phi = 1`.
+    pub fn modes_mass_normalised(&self) -> (Vec<f64>, Vec<Vec<f64>>) {
+        let eig = self.mass_normalised_stiffness().symmetric_eigen();
+        let mut order: Vec<usize> = (0..self.nodes()).collect();
+        order.sort_by(|&a, &b| eig.eigenvalues[a].total_cmp(&eig.eigenvalues[b]));
+        let flexible = &order[2..];
+        let lam = flexible.iter().map(|&k| eig.eigenvalues[k]).collect();
+        let shapes = flexible
+            .iter()
+            .map(|&k| (0..self.nodes()).map(|i| eig.eigenvectors[(i, k)] / self.mass[i].sqrt()).collect())
+            .collect();
+        (lam, shapes)
+    }
+}
+
 impl Modes {
     /// Frequency of flexible mode `k` (1 = fundamental), Hz.
     pub fn frequency_hz(&self, k: usize) -> f64 {

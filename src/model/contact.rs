@@ -100,29 +100,7 @@ impl Contact {
 
     /// Solve `u + alpha u^p = z` for `u >= 0` (Eq 10 in units of `Y0`).
     fn solve_expansion(&self, z: f64, u_guess: f64) -> Result<f64> {
-        let (a, p) = (self.alpha, self.p);
-        let h = |u: f64| u + a * u.powf(p) - z;
-        // Upper bounds of the root (h >= 0 there): z itself, (z/alpha)^(1/p), and 1 whenever
-        // z <= 1 + alpha (Y_T at or below its maximum; above it the frame has sprung back and
-        // reloads the ball on its expansion curve). The smallest keeps Newton short.
-        let mut hi = z.min((z / a).powf(1.0 / p));
-        if z <= 1.0 + a {
-            hi = hi.min(1.0);
-        }
-        let mut u = if u_guess > 0.0 && u_guess < hi && h(u_guess) >= 0.0 { u_guess } else { hi };
-        for _ in 0..200 {
-            let hu = h(u);
-            if hu <= 0.0 {
-                return Ok(u);
-            }
-            let step = hu / (1.0 + a * p * u.powf(p - 1.0));
-            let next = (u - step).max(0.0);
-            if step <= 4.0 * f64::EPSILON * u || next == u {
-                return Ok(next);
-            }
-            u = next;
-        }
-        Err(Error::ContactSolve { z })
+        solve_u(self.alpha, self.p, z, u_guess)
     }
 
     /// Energy held by the ball plus the energy it has already dissipated ("PE ball" of Fig 4), J.
@@ -146,6 +124,35 @@ impl Contact {
     pub fn ball_loss(&self, y0: f64) -> f64 {
         (self.p - 1.0) * self.k1 * y0 * y0 / (2.0 * (self.p + 1.0))
     }
+}
+
+/// Solve `u + a u^p = z` for `u >= 0` with `a > 0`, `p > 1`, `z >= 0`: Eq 10 in units of `Y0`
+/// (`a = k1/k_s`), and, with `a` enlarged by a compliance term, the implicit contact step of the
+/// modal solver. Newton from an upper bound of the root converges monotonically (the left side
+/// is increasing and convex), so the result is never negative and the loop always ends.
+pub fn solve_u(a: f64, p: f64, z: f64, u_guess: f64) -> Result<f64> {
+    let h = |u: f64| u + a * u.powf(p) - z;
+    // Upper bounds of the root (h >= 0 there): z itself, (z/a)^(1/p), and 1 whenever
+    // z <= 1 + a (Y_T at or below its maximum; above it the frame has sprung back and
+    // reloads the ball on its expansion curve). The smallest keeps Newton short.
+    let mut hi = z.min((z / a).powf(1.0 / p));
+    if z <= 1.0 + a {
+        hi = hi.min(1.0);
+    }
+    let mut u = if u_guess > 0.0 && u_guess < hi && h(u_guess) >= 0.0 { u_guess } else { hi };
+    for _ in 0..200 {
+        let hu = h(u);
+        if hu <= 0.0 {
+            return Ok(u);
+        }
+        let step = hu / (1.0 + a * p * u.powf(p - 1.0));
+        let next = (u - step).max(0.0);
+        if step <= 4.0 * f64::EPSILON * u || next == u {
+            return Ok(next);
+        }
+        u = next;
+    }
+    Err(Error::ContactSolve { z })
 }
 
 #[cfg(test)]
