@@ -377,34 +377,34 @@ pub struct Overrides {
     /// Impact distance from the long axis, m (|r| <= half-width)
     #[arg(long, allow_hyphen_values = true)]
     pub r: Option<f64>,
-    /// String-plane stiffness, N/m (> 0)
+    /// String-plane stiffness, N/m (1 ..= 1e12)
     #[arg(long, allow_hyphen_values = true)]
     pub ks: Option<f64>,
-    /// Frame bending stiffness EI, N m^2 (> 0)
+    /// Frame bending stiffness EI, N m^2 (1e-2 ..= 1e9)
     #[arg(long, allow_hyphen_values = true)]
     pub ei: Option<f64>,
-    /// Racket mass, kg (> 0)
+    /// Racket mass, kg (1e-3 ..= 1e6)
     #[arg(long, allow_hyphen_values = true)]
     pub mass: Option<f64>,
-    /// Racket length, m (> 0)
+    /// Racket length, m (0.05 ..= 5)
     #[arg(long, allow_hyphen_values = true)]
     pub length: Option<f64>,
-    /// Moment of inertia about the long axis, kg m^2 (> 0)
+    /// Moment of inertia about the long axis, kg m^2 (1e-7 ..= 1e4)
     #[arg(long, allow_hyphen_values = true)]
     pub ix: Option<f64>,
-    /// Half-width of the string face, m (> 0): the largest |r|
+    /// Half-width of the string face, m (1e-3 ..= 1): the largest |r|
     #[arg(long, allow_hyphen_values = true)]
     pub half_width: Option<f64>,
-    /// Ball mass, kg (> 0)
+    /// Ball mass, kg (1e-4 ..= 10)
     #[arg(long, allow_hyphen_values = true)]
     pub mb: Option<f64>,
-    /// Ball compression stiffness k1, N/m (> 0)
+    /// Ball compression stiffness k1, N/m (1 ..= 1e9)
     #[arg(long, allow_hyphen_values = true)]
     pub k1: Option<f64>,
     /// Ball hysteresis exponent p (1 < p <= 10)
     #[arg(long, allow_hyphen_values = true)]
     pub p: Option<f64>,
-    /// Incident ball speed, m/s (> 0)
+    /// Incident ball speed, m/s (1e-3 ..= 1e3)
     #[arg(long, allow_hyphen_values = true)]
     pub v1: Option<f64>,
     /// Number of beam segments N (4..=400)
