@@ -140,23 +140,6 @@ pub fn claims() -> Result<Vec<Claim>> {
 /// Our numbers for one claim: (as the paper computes it, nearest node, converged).
 struct Ours(f64, Option<f64>, Option<f64>);
 
-/// Memo of the expensive setups shared by several claims.
-#[derive(Default)]
-struct Cache {
-    centre: Vec<(u64, Setup)>,
-}
-
-impl Cache {
-    fn centre(&mut self, ks: f64) -> Result<Setup> {
-        if let Some((_, s)) = self.centre.iter().find(|(k, _)| *k == ks.to_bits()) {
-            return Ok(*s);
-        }
-        let s = centre_setup(ks)?;
-        self.centre.push((ks.to_bits(), s));
-        Ok(s)
-    }
-}
-
 /// Theta (deg) at (x, r 4 cm, 30 m/s) for a string stiffness, N = 39 node scheme.
 fn theta_r4(x: f64, ks: f64) -> Result<f64> {
     let mut p = paper_params(x, ks);
@@ -171,7 +154,7 @@ fn centre_three(ks: f64, q: fn(&ImpactResult) -> f64) -> Result<Ours> {
     Ok(Ours(read_off_curve(&p, CENTRE_X, q)?, Some(q(&impact(&p)?)), Some(q(&impact(&converged(p))?))))
 }
 
-fn compute(id: &str, cache: &mut Cache) -> Result<Ours> {
+fn compute(id: &str) -> Result<Ours> {
     let ball = Ball::default();
     let v_drop = drop_speed(DROP_HEIGHT_100_IN);
     let paper_beam = || Beam::new(&Racket::default(), 39).modes();
@@ -222,34 +205,34 @@ fn compute(id: &str, cache: &mut Cache) -> Result<Ours> {
             Ok(Ours(read_off_curve(&p, 0.16, q)?, Some(q(&impact(&p)?)), Some(q(&impact(&converged(p))?))))
         }
         "speeds_ks_half_e_a_gain" | "speeds_ks_half_serve_gain" | "speeds_ks_half_forehand_gain" => {
-            let (a, b) = (cache.centre(4.0e4)?, cache.centre(2.0e4)?);
+            let (a, b) = (centre_setup(4.0e4)?, centre_setup(2.0e4)?);
             plain(speed_gain(id, &a, &b))
         }
         "speeds_60_50_serve_gain" | "speeds_60_50_forehand_gain" => {
-            let (a, b) = (cache.centre(4.0e4)?, cache.centre(lb50)?);
+            let (a, b) = (centre_setup(4.0e4)?, centre_setup(lb50)?);
             plain(speed_gain(id, &a, &b))
         }
         "speeds_60_50_tau_change" => {
-            let (a, b) = (cache.centre(4.0e4)?, cache.centre(lb50)?);
+            let (a, b) = (centre_setup(4.0e4)?, centre_setup(lb50)?);
             plain((b.tau_s - a.tau_s) * 1e3)
         }
         "speeds_50_60_theta_change" => {
-            let (a, b) = (cache.centre(lb50)?, cache.centre(4.0e4)?);
+            let (a, b) = (centre_setup(lb50)?, centre_setup(4.0e4)?);
             plain(gain_pct(a.theta_deg, b.theta_deg))
         }
         "discussion_tau_ks_half" => {
-            let (a, b) = (cache.centre(4.0e4)?, cache.centre(2.0e4)?);
+            let (a, b) = (centre_setup(4.0e4)?, centre_setup(2.0e4)?);
             plain((b.tau_s - a.tau_s) * 1e3)
         }
         "discussion_angle_30_rad_s" => {
-            let (a, b) = (cache.centre(4.0e4)?, cache.centre(lb50)?);
+            let (a, b) = (centre_setup(4.0e4)?, centre_setup(lb50)?);
             plain((30.0 * (b.tau_s - a.tau_s)).to_degrees())
         }
-        "intro_swing_angle" => plain((30.0 * cache.centre(4.0e4)?.tau_s).to_degrees()),
-        "fig8_theta_r4_50lb" => plain(cache.centre(lb50)?.theta_deg),
-        "fig8_theta_r4_60lb" => plain(cache.centre(4.0e4)?.theta_deg),
+        "intro_swing_angle" => plain((30.0 * centre_setup(4.0e4)?.tau_s).to_degrees()),
+        "fig8_theta_r4_50lb" => plain(centre_setup(lb50)?.theta_deg),
+        "fig8_theta_r4_60lb" => plain(centre_setup(4.0e4)?.theta_deg),
         "speeds_50_60_tau_change" => {
-            let (a, b) = (cache.centre(lb50)?, cache.centre(4.0e4)?);
+            let (a, b) = (centre_setup(lb50)?, centre_setup(4.0e4)?);
             plain(gain_pct(a.tau_s, b.tau_s))
         }
         "strings_ks_40lb" => plain(ks_from_tension_lb(40.0)),
@@ -308,7 +291,7 @@ pub fn evaluate() -> Result<Vec<Row>> {
     claims()?
         .into_par_iter()
         .map(|claim| {
-            let Ours(ours, nearest_node, converged) = compute(&claim.id, &mut Cache::default())?;
+            let Ours(ours, nearest_node, converged) = compute(&claim.id)?;
             let paper = claim.paper_value()?;
             let (kind, tolerance) = claim.tolerance()?;
             let error = match kind {

@@ -153,6 +153,16 @@ impl Table {
         Table { name: self.name.clone(), columns: self.columns.clone(), rows }
     }
 
+    /// Only the rows whose numeric `column` equals `value` exactly (an unknown column gives an
+    /// empty table). Used to split a long table into curves, e.g. one per string stiffness.
+    pub fn filter_num(&self, column: &str, value: f64) -> Table {
+        let rows = match self.column_index(column) {
+            Some(i) => self.rows.iter().filter(|r| r.get(i).map(Value::as_f64) == Some(value)).cloned().collect(),
+            None => Vec::new(),
+        };
+        Table { name: self.name.clone(), columns: self.columns.clone(), rows }
+    }
+
     /// The distinct text values of `column`, in order of first appearance (empty if the column
     /// does not exist). Handy together with [`Table::filter`].
     pub fn distinct_text(&self, column: &str) -> Vec<String> {

@@ -57,15 +57,10 @@ pub fn stiffness_sweep(id: &str, eis: &[f64]) -> Result<Table> {
 pub fn stiffness_chart(t: &Table, title: &str, faint_ei: Option<f64>) -> Chart {
     let ei = col(t, "ei_n_m2");
     let main_ei = ei.iter().copied().find(|e| Some(*e) != faint_ei).unwrap_or(150.0);
-    let subset = |value: f64| {
-        let mut s = t.clone();
-        s.rows.retain(|r| r[0].as_f64() == value);
-        s
-    };
-    let main = subset(main_ei);
+    let main = t.filter_num("ei_n_m2", main_ei);
     let mut curves = sweep_curves(col(&main, "ks_n_per_m"), &main);
     if let Some(f) = faint_ei {
-        let faint = subset(f);
+        let faint = t.filter_num("ei_n_m2", f);
         for mut c in sweep_curves(col(&faint, "ks_n_per_m"), &faint) {
             c.label = format!("{} (EI {f})", c.label);
             c.style = crate::plot::LineStyle::Faint;

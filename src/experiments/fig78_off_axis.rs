@@ -62,8 +62,7 @@ fn run(id: &str, x: f64) -> Result<Table> {
 fn chart(t: &Table, title: &str) -> Chart {
     let mut curves = Vec::new();
     for (i, ks) in KS_VALUES.iter().enumerate() {
-        let mut s = t.clone();
-        s.rows.retain(|r| r[0].as_f64() == *ks);
+        let s = t.filter_num("ks_n_per_m", *ks);
         let r_cm = scaled(col(&s, "r_m"), 100.0);
         let name = if i == 0 { "ks 2e4" } else { "ks 4e4" };
         curves.push(line(format!("theta, {name}"), r_cm.clone(), col(&s, "theta_end_deg"), 2 * i + 1));
