@@ -72,11 +72,54 @@ pub struct Racket {
     /// Half-width of the string face, m: the largest allowed |r|; 1e-3..=1.
     /// Not in the paper (its Figs 7-8 go to r = 10 cm); 0.125 m is a typical 25 cm wide head.
     pub half_width: f64,
+    /// Length of the string face from the tip, m; 0 < head_length <= L. When set, the string
+    /// face is the ellipse with axes `head_length` along and `2 half_width` across the racket
+    /// (`x` from 0 to `head_length`), and impacts outside it are refused. When absent (the
+    /// paper's racket) the face is the strip `0 <= x <= L`, `|r| <= half_width`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub head_length: Option<f64>,
+    /// How mass and stiffness vary along the racket; absent for the paper's uniform beam.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub profile: Option<Profile>,
 }
 
 impl Default for Racket {
     fn default() -> Self {
-        Racket { length: 0.71, mass: 0.34, ei: 150.0, ix: 0.0015, half_width: 0.125 }
+        Racket { length: 0.71, mass: 0.34, ei: 150.0, ix: 0.0015, half_width: 0.125, head_length: None, profile: None }
+    }
+}
+
+/// A non-uniform racket: linear density and bending stiffness, each piecewise linear between
+/// four knots along the racket (tip, end of the head, start of the handle, butt). The paper
+/// says its method extends to head-heavy and head-light rackets; this is that extension.
+///
+/// The density only sets the shape of the mass distribution: node masses are the density
+/// integrated against each node's hat function, then scaled so they sum to [`Racket::mass`].
+/// The stiffness multiplies [`Racket::ei`]: `EI(x) = ei * stiffness(x)`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Profile {
+    /// Knot positions as fractions of the length from the tip: 0 = k0 < k1 < k2 < k3 = 1.
+    pub knots: [f64; 4],
+    /// Relative linear density at the knots; each finite and > 0.
+    pub density: [f64; 4],
+    /// Relative bending stiffness at the knots; each 1e-3..=1e3 ([`ranges::STIFFNESS_REL`]).
+    pub stiffness: [f64; 4],
+}
+
+impl Profile {
+    /// Linear interpolation of knot values `v` at the fraction `f` (0 = tip, 1 = butt).
+    pub fn at(&self, v: &[f64; 4], f: f64) -> f64 {
+        let k = &self.knots;
+        let i = if f <= k[1] {
+            0
+        } else if f <= k[2] {
+            1
+        } else {
+            2
+        };
+        let w = ((f - k[i]) / (k[i + 1] - k[i])).clamp(0.0, 1.0);
+        v[i] + w * (v[i + 1] - v[i])
     }
 }
 
@@ -277,6 +320,8 @@ pub mod ranges {
     pub const HALF_WIDTH: (f64, f64) = (1.0e-3, 1.0);
     /// Incident speed, m/s (results scale exactly with v1, so nothing is lost).
     pub const V1: (f64, f64) = (1.0e-3, 1.0e3);
+    /// Relative bending stiffness of a [`super::Profile`] knot.
+    pub const STIFFNESS_REL: (f64, f64) = (1.0e-3, 1.0e3);
 }
 
 impl Ball {
@@ -305,7 +350,54 @@ impl Racket {
         within("mass", self.mass, "racket mass", "kg", ranges::MASS)?;
         within("ei", self.ei, "bending stiffness EI", "N m^2", ranges::EI)?;
         within("ix", self.ix, "moment of inertia about the long axis", "kg m^2", ranges::IX)?;
-        within("half-width", self.half_width, "string-face half-width", "m", ranges::HALF_WIDTH)
+        within("half-width", self.half_width, "string-face half-width", "m", ranges::HALF_WIDTH)?;
+        if let Some(h) = self.head_length {
+            if !(h.is_finite() && h > 0.0 && h <= self.length) {
+                return Err(Error::invalid(
+                    "head-length",
+                    h,
+                    format!("string-face length must satisfy 0 < head-length <= L = {} m", self.length),
+                ));
+            }
+        }
+        if let Some(p) = &self.profile {
+            p.validate()?;
+        }
+        Ok(())
+    }
+
+    /// Half-width of the string face at `x` (m from the tip), m; `None` off the face along x.
+    pub fn face_half_width(&self, x: f64) -> Option<f64> {
+        match self.head_length {
+            None => (0.0..=self.length).contains(&x).then_some(self.half_width),
+            Some(h) => {
+                let a = 0.5 * h;
+                let q = (x - a) / a;
+                (q.abs() <= 1.0).then(|| self.half_width * (1.0 - q * q).max(0.0).sqrt())
+            }
+        }
+    }
+}
+
+impl Profile {
+    /// Check the knots and values.
+    pub fn validate(&self) -> Result<()> {
+        let k = &self.knots;
+        let ascending = k.windows(2).all(|w| w[0] < w[1]);
+        if !(k.iter().all(|v| v.is_finite()) && k[0] == 0.0 && k[3] == 1.0 && ascending) {
+            return Err(Error::invalid(
+                "profile.knots",
+                format!("{k:?}"),
+                "knots must be fractions of the length with 0 = k0 < k1 < k2 < k3 = 1",
+            ));
+        }
+        for &d in &self.density {
+            positive("profile.density", d, "relative linear density", "at every knot")?;
+        }
+        for &e in &self.stiffness {
+            within("profile.stiffness", e, "relative bending stiffness", "at every knot", ranges::STIFFNESS_REL)?;
+        }
+        Ok(())
     }
 }
 
@@ -313,20 +405,23 @@ impl Impact {
     /// Check the impact against the racket it hits.
     pub fn validate(&self, racket: &Racket) -> Result<()> {
         finite("x", self.x, "m")?;
-        if !(0.0..=racket.length).contains(&self.x) {
-            return Err(Error::invalid(
-                "x",
-                self.x,
-                format!("impact point must lie on the racket, 0 <= x <= L = {} m", racket.length),
-            ));
-        }
+        let Some(half) = racket.face_half_width(self.x) else {
+            let msg = match racket.head_length {
+                None => format!("impact point must lie on the racket, 0 <= x <= L = {} m", racket.length),
+                Some(h) => format!("impact point must lie on the string face, 0 <= x <= head-length = {h} m"),
+            };
+            return Err(Error::invalid("x", self.x, msg));
+        };
         finite("r", self.r, "m")?;
-        if self.r.abs() > racket.half_width {
-            return Err(Error::invalid(
-                "r",
-                self.r,
-                format!("off-axis distance must lie on the string face, |r| <= half-width = {} m", racket.half_width),
-            ));
+        if self.r.abs() > half {
+            let msg = match racket.head_length {
+                None => format!("off-axis distance must lie on the string face, |r| <= half-width = {half} m"),
+                Some(_) => format!(
+                    "off-axis distance must lie inside the head outline, |r| <= {half:.4} m at x = {} m",
+                    self.x
+                ),
+            };
+            return Err(Error::invalid("r", self.r, msg));
         }
         within("v1", self.v1, "incident ball speed", "m/s", ranges::V1)
     }

@@ -19,7 +19,7 @@ fn params() -> impl Strategy<Value = Params> {
         .prop_map(|((mb, k1, p), ks, (length, mass, ei, ix), (xf, rf), (segments, hat))| Params {
             ball: Ball { mass: mb, k1, p },
             strings: Strings { ks },
-            racket: Racket { length, mass, ei, ix, half_width: 0.125 },
+            racket: Racket { length, mass, ei, ix, half_width: 0.125, head_length: None, profile: None },
             impact: Impact { x: xf * length, r: rf * 0.10, v1: 20.0 },
             numerics: Numerics {
                 segments,

@@ -3,17 +3,23 @@
 //! ```text
 //! nodes       x_i = i s,  i = 0..N,  s = L/N,  tip at x = 0, butt at x = L
 //! masses      m = M/N at interior nodes, m/2 at the two end nodes
-//! stiffness   K = (EI / s^3) D^T D,  D the (N-1) x (N+1) second difference (rows 1 -2 1)
+//! stiffness   K = D^T diag(kappa_j) D,  kappa_j = EI(x_j) / s^3,
+//!             D the (N-1) x (N+1) second difference (rows 1 -2 1)
 //! ```
 //! `D^T D` is the energy-consistent form of Eq 6 with free ends (`y'' = y''' = 0`): the bending
-//! energy is `EI/(2 s^3) sum_j (y_{j-1} - 2 y_j + y_{j+1})^2`, and `K` has exactly two zero modes
-//! (translation and rotation), so the discrete beam conserves momentum and energy.
+//! energy is `sum_j kappa_j (y_{j-1} - 2 y_j + y_{j+1})^2 / 2`, and `K` has exactly two zero
+//! modes (translation and rotation), so the discrete beam conserves momentum and energy.
+//!
+//! A non-uniform racket ([`Profile`]) lumps its piecewise-linear density onto the nodes
+//! (`m_i = integral of lambda(x) h_i(x) dx` with the hat function `h_i` of node i, which for a
+//! uniform density gives the masses above), scaled so they sum to `M`, and evaluates
+//! `EI(x_j) = EI * stiffness(x_j / L)` at the interior nodes.
 //! `K` is applied as a five-point stencil; the dense matrix exists only for the eigenproblem
 //! `K phi = omega^2 M phi`, solved as the symmetric problem `M^-1/2 K M^-1/2` with nalgebra.
 
 use nalgebra::DMatrix;
 
-use crate::params::{LoadRule, Racket};
+use crate::params::{LoadRule, Profile, Racket};
 
 /// The discrete beam.
 #[derive(Debug, Clone)]
@@ -26,8 +32,9 @@ pub struct Beam {
     pub x: Vec<f64>,
     /// Lumped node masses, kg (N+1 values).
     pub mass: Vec<f64>,
-    /// `EI / s^3`, N/m.
-    pub kappa: f64,
+    /// `kappa_j = EI(x_j) / s^3` at each node, N/m (the two end entries are 0: no curvature
+    /// is defined there).
+    pub kappa: Vec<f64>,
     /// Total mass, kg.
     pub total_mass: f64,
     /// Centre of mass from the tip, m.
@@ -62,15 +69,31 @@ impl Beam {
     pub fn new(racket: &Racket, segments: usize) -> Self {
         let n = segments;
         let s = racket.length / n as f64;
-        let m = racket.mass / n as f64;
         let x: Vec<f64> = (0..=n).map(|i| i as f64 * s).collect();
-        let mut mass = vec![m; n + 1];
-        mass[0] = 0.5 * m;
-        mass[n] = 0.5 * m;
+        let (mass, mut kappa) = match &racket.profile {
+            None => {
+                let m = racket.mass / n as f64;
+                let mut mass = vec![m; n + 1];
+                mass[0] = 0.5 * m;
+                mass[n] = 0.5 * m;
+                (mass, vec![racket.ei / (s * s * s); n + 1])
+            }
+            Some(profile) => {
+                let raw = lumped_masses(profile, n);
+                let scale = racket.mass / raw.iter().sum::<f64>();
+                let mass = raw.iter().map(|m| m * scale).collect();
+                let kappa = (0..=n)
+                    .map(|i| racket.ei * profile.at(&profile.stiffness, i as f64 / n as f64) / (s * s * s))
+                    .collect();
+                (mass, kappa)
+            }
+        };
+        kappa[0] = 0.0;
+        kappa[n] = 0.0;
         let total_mass: f64 = mass.iter().sum();
         let x_cm = mass.iter().zip(&x).map(|(m, x)| m * x).sum::<f64>() / total_mass;
         let i_cm = mass.iter().zip(&x).map(|(m, x)| m * (x - x_cm).powi(2)).sum();
-        Beam { segments: n, s, x, mass, kappa: racket.ei / (s * s * s), total_mass, x_cm, i_cm }
+        Beam { segments: n, s, x, mass, kappa, total_mass, x_cm, i_cm }
     }
 
     /// Number of nodes, N+1.
@@ -89,22 +112,25 @@ impl Beam {
         }
     }
 
-    /// Elastic forces `f = -K y`, N, using `curv` (N+1 values) as scratch.
+    /// Elastic forces `f = -K y`, N, using `curv` (N+1 values) as scratch: `curv` receives
+    /// the bending moments `kappa_j c_j` and `f = -D^T curv`.
     pub fn elastic_forces(&self, y: &[f64], curv: &mut [f64], f: &mut [f64]) {
         Self::curvature(y, curv);
+        for (c, k) in curv.iter_mut().zip(&self.kappa) {
+            *c *= k;
+        }
         let n = self.segments;
         for i in 0..=n {
             let left = if i >= 1 { curv[i - 1] } else { 0.0 };
             let right = if i < n { curv[i + 1] } else { 0.0 };
-            f[i] = -self.kappa * (left - 2.0 * curv[i] + right);
+            f[i] = -(left - 2.0 * curv[i] + right);
         }
     }
 
     /// Bending energy `y^T K y / 2`, J.
     pub fn bending_energy(&self, y: &[f64]) -> f64 {
         let n = self.segments;
-        let sum: f64 = (1..n).map(|j| (y[j - 1] - 2.0 * y[j] + y[j + 1]).powi(2)).sum();
-        0.5 * self.kappa * sum
+        0.5 * (1..n).map(|j| self.kappa[j] * (y[j - 1] - 2.0 * y[j] + y[j + 1]).powi(2)).sum::<f64>()
     }
 
     /// Kinetic energy of the nodes, J.
@@ -144,7 +170,7 @@ impl Beam {
         }
     }
 
-    /// The dense stiffness matrix `K = (EI/s^3) D^T D`.
+    /// The dense stiffness matrix `K = D^T diag(kappa) D`.
     pub fn stiffness_matrix(&self) -> DMatrix<f64> {
         let n = self.nodes();
         let mut k = DMatrix::zeros(n, n);
@@ -152,7 +178,7 @@ impl Beam {
         for j in 1..self.segments {
             for (a, sa) in stencil.iter().enumerate() {
                 for (b, sb) in stencil.iter().enumerate() {
-                    k[(j - 1 + a, j - 1 + b)] += self.kappa * sa * sb;
+                    k[(j - 1 + a, j - 1 + b)] += self.kappa[j] * sa * sb;
                 }
             }
         }
@@ -214,6 +240,30 @@ impl Beam {
     }
 }
 
+/// Node masses (up to a common scale) of a profile on `n` segments of unit total length: the
+/// piecewise-linear density integrated against each node's hat function, exactly (the product
+/// of two linear functions is quadratic, so Simpson's rule is exact on every piece between
+/// consecutive breakpoints, the nodes and the knots).
+fn lumped_masses(profile: &Profile, n: usize) -> Vec<f64> {
+    let h = 1.0 / n as f64;
+    let mut mass = vec![0.0; n + 1];
+    for seg in 0..n {
+        let (a, b) = (seg as f64 * h, (seg + 1) as f64 * h);
+        let mut cuts = vec![a];
+        cuts.extend(profile.knots.iter().copied().filter(|&k| k > a && k < b));
+        cuts.push(b);
+        for w in cuts.windows(2) {
+            let (lo, hi) = (w[0], w[1]);
+            let simpson = |g: &dyn Fn(f64) -> f64| (hi - lo) / 6.0 * (g(lo) + 4.0 * g(0.5 * (lo + hi)) + g(hi));
+            let dens = |f: f64| profile.at(&profile.density, f);
+            // the hat of the left node falls from 1 at a to 0 at b; the right node's rises
+            mass[seg] += simpson(&|f| dens(f) * (b - f) / h);
+            mass[seg + 1] += simpson(&|f| dens(f) * (f - a) / h);
+        }
+    }
+    mass
+}
+
 impl Modes {
     /// Frequency of flexible mode `k` (1 = fundamental), Hz.
     pub fn frequency_hz(&self, k: usize) -> f64 {
@@ -267,6 +317,42 @@ mod tests {
         beam.elastic_forces(&y, &mut curv, &mut f);
         assert!(f.iter().all(|v| v.abs() < 1e-6), "{f:?}");
         assert!(beam.bending_energy(&y) < 1e-12);
+    }
+
+    #[test]
+    fn a_uniform_profile_gives_the_uniform_beam() {
+        let flat = Profile { knots: [0.0, 0.3, 0.55, 1.0], density: [2.0; 4], stiffness: [1.0; 4] };
+        let uniform = Beam::new(&Racket::default(), 39);
+        let profiled = Beam::new(&Racket { profile: Some(flat), ..Racket::default() }, 39);
+        for i in 0..40 {
+            assert_relative_eq!(uniform.mass[i], profiled.mass[i], max_relative = 1e-13);
+            assert_relative_eq!(uniform.kappa[i], profiled.kappa[i], max_relative = 1e-13);
+        }
+    }
+
+    #[test]
+    fn lumping_keeps_the_mass_and_the_first_moment_of_the_density() {
+        // hat functions reproduce constants and linear functions exactly
+        let p = Profile { knots: [0.0, 0.37, 0.61, 1.0], density: [1.0, 3.0, 0.5, 2.0], stiffness: [1.0; 4] };
+        let m = lumped_masses(&p, 23);
+        let fine = 200_000;
+        let (mut m0, mut m1) = (0.0, 0.0);
+        for k in 0..fine {
+            let f = (k as f64 + 0.5) / fine as f64;
+            m0 += p.at(&p.density, f) / fine as f64;
+            m1 += f * p.at(&p.density, f) / fine as f64;
+        }
+        let xs: Vec<f64> = (0..=23).map(|i| i as f64 / 23.0).collect();
+        assert_relative_eq!(m.iter().sum::<f64>(), m0, max_relative = 1e-8);
+        assert_relative_eq!(m.iter().zip(&xs).map(|(m, x)| m * x).sum::<f64>(), m1, max_relative = 1e-8);
+    }
+
+    #[test]
+    fn a_stiffer_frame_profile_raises_the_fundamental() {
+        let soft = Profile { knots: [0.0, 0.4, 0.6, 1.0], density: [1.0; 4], stiffness: [1.0; 4] };
+        let stiff = Profile { stiffness: [1.0, 1.5, 1.5, 1.2], ..soft };
+        let f = |p| Beam::new(&Racket { profile: Some(p), ..Racket::default() }, 39).modes().frequency_hz(1);
+        assert!(f(stiff) > f(soft) * 1.05);
     }
 
     #[test]
