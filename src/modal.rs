@@ -19,6 +19,7 @@
 
 use crate::error::{Error, Result};
 use crate::model::contact::{solve_u, Contact, ContactState, Phase};
+use crate::model::free::FreeVibration;
 use crate::params::Params;
 use crate::solver::{hermite_eval, hermite_max, hermite_root, ImpactResult, Model};
 
@@ -52,7 +53,7 @@ impl ModalModel {
     pub fn new(params: &Params) -> Result<Self> {
         let base = Model::new(params)?;
         let beam = &base.beam;
-        let modes = beam.modes_mass_normalised();
+        let basis = std::sync::Arc::clone(&base.basis);
         let lp = base.load;
         let at_load = |phi: &[f64]| lp.weights[0] * phi[lp.nodes[0]] + lp.weights[1] * phi[lp.nodes[1]];
         let g_t = 1.0 / beam.total_mass.sqrt();
@@ -65,7 +66,7 @@ impl ModalModel {
         let cutoff = MODE_CUTOFF * omega_contact;
         let (mut lam, mut omega, mut g, mut cos, mut sin) = (vec![], vec![], vec![], vec![], vec![]);
         let mut residual = 0.0;
-        for (l, phi) in modes.0.iter().zip(&modes.1) {
+        for (l, phi) in basis.lam.iter().zip(&basis.shapes) {
             let gk = at_load(phi);
             let w = l.sqrt();
             if w <= cutoff {
@@ -109,7 +110,7 @@ impl ModalModel {
         let mut next = s.clone();
         let mut phase = Phase::Compression;
         let (mut f0, mut t, mut yt0, mut ytd0) = (0.0, 0.0, 0.0, v1);
-        let (mut u, mut y0, mut t_max) = (0.0, 0.0, 0.0);
+        let (mut u, mut y0, mut t_max) = ((0.0, 0.0), 0.0, 0.0);
         let (mut peak_force, mut energy_err, mut momentum_err): (f64, f64, f64) = (0.0, 0.0, 0.0);
         let alpha = c.k1 / c.ks;
         let k_series = c.compression_stiffness();
@@ -133,7 +134,7 @@ impl ModalModel {
                 t_max = t + sm * h;
                 y0 = c.ball_compression_at_max(ytm);
                 phase = Phase::Expansion { y0 };
-                u = 1.0;
+                u = (1.0, 1.0);
                 f_end = self.expansion_force(c, alpha, y0, a, &mut u)?;
                 yt1 = self.advance(&s, f0, f_end, &mut next);
                 ytd1 = self.yt_rate(&next, (f_end - f0) / h);
@@ -160,13 +161,13 @@ impl ModalModel {
     }
 
     /// The end force of a step in expansion, from `Y_T(h) = A - B F1` and Eq 10.
-    fn expansion_force(&self, c: &Contact, alpha: f64, y0: f64, a: f64, u: &mut f64) -> Result<f64> {
+    fn expansion_force(&self, c: &Contact, alpha: f64, y0: f64, a: f64, u: &mut (f64, f64)) -> Result<f64> {
         if a <= 0.0 {
-            *u = 0.0;
+            *u = (0.0, 0.0);
             return Ok(0.0);
         }
         *u = solve_u(alpha + self.compliance * c.k1, c.p, a / y0, *u)?;
-        Ok(c.k1 * y0 * u.powf(c.p))
+        Ok(c.k1 * y0 * u.1)
     }
 
     /// Advance `s` over one step with the force going linearly from `f0` to `f1` into `out`;
@@ -207,10 +208,10 @@ impl ModalModel {
         v - self.residual * fdot
     }
 
-    fn contact_state(&self, c: &Contact, phase: Phase, f: f64, y0: f64, u: f64) -> ContactState {
+    fn contact_state(&self, c: &Contact, phase: Phase, f: f64, y0: f64, u: (f64, f64)) -> ContactState {
         match phase {
-            Phase::Compression => ContactState { force: f, ball_compression: f / c.k1, u: 0.0 },
-            Phase::Expansion { .. } => ContactState { force: f, ball_compression: u * y0, u },
+            Phase::Compression => ContactState { force: f, ball_compression: f / c.k1, u: 0.0, u_pow: 0.0 },
+            Phase::Expansion { .. } => ContactState { force: f, ball_compression: u.0 * y0, u: u.0, u_pow: u.1 },
         }
     }
 
@@ -269,83 +270,16 @@ impl ModalModel {
         Ok(result)
     }
 
-    /// Peak bending PE over two fundamental periods of free vibration (sampled every quarter
-    /// radian of the fastest retained mode by exact rotation of each mode's phase, the highest
-    /// local maxima refined by golden section), and whether the frame meets the ball again.
-    /// `s` is the state `lag` seconds after separation; the window is two fundamental periods
-    /// from separation itself, so it starts at `-lag` in the state's time.
+    /// Peak bending PE over two fundamental periods of free vibration from separation, and
+    /// whether the frame meets the ball again within that window, in closed form
+    /// ([`FreeVibration`]). `s` is the state `lag` seconds after separation.
     fn after_impact(&self, s: &State, lag: f64) -> (f64, bool) {
-        let n = self.lam.len();
-        let pe = |t: f64| -> f64 {
-            (0..n)
-                .map(|k| {
-                    let w = self.omega[k];
-                    let q = s.q[k] * (w * t).cos() + s.v[k] / w * (w * t).sin();
-                    0.5 * self.lam[k] * q * q
-                })
-                .sum()
-        };
+        let free = FreeVibration::new(&self.omega, &s.q, &s.v, &self.g);
         let window = 2.0 / self.base.f1_hz;
-        let t0 = -lag;
-        let w_max = self.omega.last().copied().unwrap_or(1.0).max(2.0 * std::f64::consts::PI * self.base.f1_hz);
-        let samples = ((window * w_max / 0.25).ceil() as usize).clamp(64, 200_000);
-        let dt = window / samples as f64;
-        // each mode as a phasor (q, v/w) rotated by w dt per sample
-        let rot: Vec<(f64, f64)> = self.omega.iter().map(|w| ((w * dt).cos(), (w * dt).sin())).collect();
-        let mut a: Vec<f64> = (0..n)
-            .map(|k| {
-                let w = self.omega[k];
-                s.q[k] * (w * t0).cos() + s.v[k] / w * (w * t0).sin()
-            })
-            .collect();
-        let mut b: Vec<f64> = (0..n)
-            .map(|k| {
-                let w = self.omega[k];
-                s.v[k] / w * (w * t0).cos() - s.q[k] * (w * t0).sin()
-            })
-            .collect();
-        let rigid_y0: f64 = (0..3).map(|i| self.g_rigid[i] * s.rq[i]).sum();
-        let rigid_v: f64 = (0..3).map(|i| self.g_rigid[i] * s.rv[i]).sum();
-        let mut values = Vec::with_capacity(samples + 1);
-        values.push(pe(t0));
-        let mut recontact = false;
-        for i in 1..=samples {
-            let (mut e, mut y_flex) = (0.0, 0.0);
-            for k in 0..n {
-                let (c, sn) = rot[k];
-                let (qa, qb) = (a[k] * c + b[k] * sn, b[k] * c - a[k] * sn);
-                a[k] = qa;
-                b[k] = qb;
-                e += 0.5 * self.lam[k] * qa * qa;
-                y_flex += self.g[k] * qa;
-            }
-            values.push(e);
-            let t = t0 + i as f64 * dt;
-            recontact |= t > 0.0 && s.yb + s.vb * t - (rigid_y0 + rigid_v * t + y_flex) > 0.0;
-        }
-        // refine the highest few local maxima (near-equal peaks of a multi-mode vibration)
-        let mut peaks: Vec<usize> = (0..values.len())
-            .filter(|&i| {
-                (i == 0 || values[i] >= values[i - 1]) && (i + 1 == values.len() || values[i] >= values[i + 1])
-            })
-            .collect();
-        peaks.sort_by(|&i, &j| values[j].total_cmp(&values[i]));
-        let r = 0.5 * (5f64.sqrt() - 1.0);
-        let mut best = values.iter().copied().fold(0.0, f64::max);
-        for &i in peaks.iter().take(4) {
-            let t = t0 + i as f64 * dt;
-            let (mut lo, mut hi) = ((t - dt).max(t0), (t + dt).min(t0 + window));
-            for _ in 0..40 {
-                let (m1, m2) = (hi - r * (hi - lo), lo + r * (hi - lo));
-                if pe(m1) > pe(m2) {
-                    hi = m2;
-                } else {
-                    lo = m1;
-                }
-            }
-            best = best.max(pe(0.5 * (lo + hi)));
-        }
-        (best, recontact)
+        let peak = free.peak_pe(-lag, window - lag);
+        let gap0 = s.yb - (0..3).map(|i| self.g_rigid[i] * s.rq[i]).sum::<f64>();
+        let rate = s.vb - (0..3).map(|i| self.g_rigid[i] * s.rv[i]).sum::<f64>();
+        (peak, free.meets_ball(gap0, rate, window - lag))
     }
 }
 

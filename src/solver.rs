@@ -9,18 +9,27 @@
 //! twist     I_x theta'' = F r                                                      (Eq 7)
 //! contact   Y_T = y_b - (sum_i w_i y_i + r theta),  F = F(Y_T, phase)              (Eq 8)
 //! ```
-//! After separation the racket is stepped on, force-free, for two periods of its fundamental
-//! mode, to measure the paper's vibration energy (peak bending PE) and to extend the time series.
+//! The stepping is allocation-free: the banded stiffness is applied as a five-point stencil
+//! through the bending moments `kappa_j c_j`, and the energy ledger and momentum are
+//! accumulated in the same passes. After separation the free racket is linear, so the paper's
+//! vibration measure (peak bending PE over two fundamental periods) and the re-contact check
+//! come from the closed-form modal solution of the discrete beam ([`FreeVibration`]), whose
+//! modes are computed once per racket and cached. A time series, when asked for, is extended by
+//! stepping on.
+
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
 
 use serde::Serialize;
 
 use crate::error::{Error, Result};
 use crate::model::beam::{Beam, LoadPoint};
 use crate::model::contact::{Contact, ContactState, Phase};
-use crate::params::Params;
+use crate::model::free::FreeVibration;
+use crate::params::{Params, Racket};
 
 /// Fraction of the stability limit used by the default time step.
-pub const DEFAULT_DT_FRACTION: f64 = 0.5;
+pub const DEFAULT_DT_FRACTION: f64 = 0.9;
 /// The default step also resolves the contact: at most this many radians of the stiffest
 /// contact oscillation per step.
 pub const DEFAULT_CONTACT_PHASE_PER_STEP: f64 = 2.0e-3;
@@ -134,17 +143,66 @@ pub struct Model {
     pub dt: f64,
     /// The contact phase must end within this simulated time, s (a guard, not physics).
     pub time_limit_s: f64,
+    /// The racket's modes (shared by every impact on the same racket).
+    pub basis: Arc<Basis>,
+}
+
+/// The discrete beam of one racket with its flexible modes: computed once per racket and
+/// discretisation and cached, so a sweep over impact points, speeds, strings or balls pays for
+/// the eigen-decomposition once.
+#[derive(Debug)]
+pub struct Basis {
+    /// The discrete beam.
+    pub beam: Beam,
+    /// `1 / m_i`, 1/kg.
+    pub inv_mass: Vec<f64>,
+    /// Flexible modes, ascending: `omega^2`, rad^2/s^2.
+    pub lam: Vec<f64>,
+    /// `omega`, rad/s.
+    pub omega: Vec<f64>,
+    /// Shapes normalised to unit modal mass (`phi^T M phi = 1`), one per flexible mode.
+    pub shapes: Vec<Vec<f64>>,
+}
+
+/// Cached bases, keyed by the beam-defining numbers of the racket and the segment count.
+static BASES: OnceLock<Mutex<HashMap<Vec<u64>, Arc<Basis>>>> = OnceLock::new();
+/// The cache is emptied when it grows beyond this many rackets.
+const BASIS_CACHE_LIMIT: usize = 256;
+
+impl Basis {
+    /// The basis of a racket on `segments` segments, from the cache or computed.
+    pub fn of(racket: &Racket, segments: usize) -> Arc<Basis> {
+        let mut key = vec![segments as u64, racket.length.to_bits(), racket.mass.to_bits(), racket.ei.to_bits()];
+        if let Some(p) = &racket.profile {
+            key.extend(p.knots.iter().chain(&p.density).chain(&p.stiffness).map(|v| v.to_bits()));
+        }
+        let cache = BASES.get_or_init(|| Mutex::new(HashMap::new()));
+        if let Some(b) = cache.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
+            return Arc::clone(b);
+        }
+        let beam = Beam::new(racket, segments);
+        let (lam, shapes) = beam.modes_mass_normalised();
+        let omega = lam.iter().map(|l| l.max(0.0).sqrt()).collect();
+        let inv_mass = beam.mass.iter().map(|m| 1.0 / m).collect();
+        let basis = Arc::new(Basis { beam, inv_mass, lam, omega, shapes });
+        let mut map = cache.lock().unwrap_or_else(|e| e.into_inner());
+        if map.len() >= BASIS_CACHE_LIMIT {
+            map.clear();
+        }
+        map.insert(key, Arc::clone(&basis));
+        basis
+    }
 }
 
 impl Model {
     /// Validate the parameters, discretise the racket and choose (or check) the time step.
     pub fn new(params: &Params) -> Result<Self> {
         params.validate()?;
-        let beam = Beam::new(&params.racket, params.numerics.segments);
+        let basis = Basis::of(&params.racket, params.numerics.segments);
+        let beam = basis.beam.clone();
         let contact = Contact::new(&params.ball, &params.strings);
         let load = beam.load_point(params.impact.x, params.numerics.load);
-        let ev = beam.eigenvalues();
-        let f1_hz = ev[2].max(0.0).sqrt() / (2.0 * std::f64::consts::PI);
+        let f1_hz = basis.omega[0] / (2.0 * std::f64::consts::PI);
         // Weyl: the contact spring adds at most k_c |g|^2 to the largest eigenvalue, where g is
         // the mass-normalised coupling vector of the ball, the load nodes and the twist.
         let lp = &load;
@@ -152,7 +210,8 @@ impl Model {
             + lp.weights[0].powi(2) / beam.mass[lp.nodes[0]]
             + lp.weights[1].powi(2) / beam.mass[lp.nodes[1]]
             + params.impact.r.powi(2) / params.racket.ix;
-        let omega_max = (ev[ev.len() - 1] + contact.max_stiffness() * g2).sqrt();
+        let lam_max = basis.lam.last().copied().unwrap_or(0.0);
+        let omega_max = (lam_max + contact.max_stiffness() * g2).sqrt();
         let dt_limit = 2.0 / omega_max;
         let t_limit = time_limit(params, &contact);
         let dt = match params.numerics.dt {
@@ -189,7 +248,7 @@ impl Model {
             }
             return Err(Error::TooManySteps { steps, dt_s: dt, nodes: beam.nodes(), limit: MAX_NODE_STEPS });
         }
-        Ok(Model { params: *params, beam, contact, load, f1_hz, dt_limit, dt, time_limit_s: t_limit })
+        Ok(Model { params: *params, beam, contact, load, f1_hz, dt_limit, dt, time_limit_s: t_limit, basis })
     }
 
     /// Run the impact.
@@ -214,21 +273,9 @@ impl Model {
         let p0 = mb * v1;
         let t_limit = self.time_limit_s;
 
-        let mut st = Stepper {
-            yb: 0.0,
-            vb: v1,
-            ab: 0.0,
-            y: vec![0.0; n],
-            v: vec![0.0; n],
-            a: vec![0.0; n],
-            th: 0.0,
-            om: 0.0,
-            al: 0.0,
-            elastic: vec![0.0; n],
-            curv: vec![0.0; n],
-        };
+        let mut st = Stepper::new(n, v1);
         let mut phase = Phase::Compression;
-        let mut cs = ContactState { force: 0.0, ball_compression: 0.0, u: 0.0 };
+        let mut cs = ContactState::ZERO;
         let mut t = 0.0;
         let mut yt_prev = 0.0;
         let mut ytd_prev = v1;
@@ -241,13 +288,13 @@ impl Model {
         let mut rows = series.map(|_| Vec::new());
         let mut step: usize = 0;
 
-        let ledger = |st: &Stepper, phase: Phase, cs: &ContactState| -> Ledger {
+        let ledger = |st: &Stepper, phase: Phase, cs: &ContactState, pe: f64, ke: f64| -> Ledger {
             Ledger {
                 ke_ball: 0.5 * mb * st.vb * st.vb,
                 pe_ball: self.contact.ball_energy_with_loss(phase, cs),
                 pe_string: self.contact.string_energy(cs.force),
-                ke_racket: beam.kinetic_energy(&st.v),
-                pe_racket: beam.bending_energy(&st.y),
+                ke_racket: ke,
+                pe_racket: pe,
                 ke_spin: 0.5 * ix * st.om * st.om,
             }
         };
@@ -257,7 +304,7 @@ impl Model {
                 rows.push(l.row(t, e0, cs.force, st.yb, yt, st.th));
             }
         };
-        record(&mut rows, 0.0, &st, &cs, &ledger(&st, phase, &cs));
+        record(&mut rows, 0.0, &st, &cs, &ledger(&st, phase, &cs, 0.0, 0.0));
 
         // contact phase
         let (tau, theta_end) = loop {
@@ -265,11 +312,10 @@ impl Model {
                 return Err(Error::ImpactDidNotEnd { limit_s: t_limit });
             }
             let (th_prev, om_prev) = (st.th, st.om);
-            st.drift(dt);
-            beam.elastic_forces(&st.y, &mut st.curv, &mut st.elastic);
+            let pe = st.drift(dt, &beam.kappa);
             let yt = st.yb - (w0 * st.y[j0] + w1 * st.y[j1] + r * st.th);
-            cs = self.contact.state(yt, phase, cs.u)?;
-            st.kick(dt, cs.force, self);
+            cs = self.contact.state(yt, phase, cs.guess())?;
+            let (mut ke, mut mom) = st.kick(dt, cs.force, self);
             let mut ytd = st.vb - (w0 * st.v[j0] + w1 * st.v[j1] + r * st.om);
             if phase == Phase::Compression && ytd <= 0.0 {
                 // The maximum of Y_T lies in this step: switch to the expansion law there.
@@ -278,16 +324,18 @@ impl Model {
                 y0 = self.contact.ball_compression_at_max(yt_max);
                 phase = Phase::Expansion { y0 };
                 let f_old = cs.force;
-                cs = self.contact.state(yt, phase, 1.0)?;
+                cs = self.contact.state(yt, phase, (1.0, 1.0))?;
                 st.correct_force(dt, cs.force - f_old, self);
                 ytd = st.vb - (w0 * st.v[j0] + w1 * st.v[j1] + r * st.om);
+                ke = beam.kinetic_energy(&st.v);
+                mom = beam.momentum(&st.v);
             }
             t += dt;
             step += 1;
             peak_force = peak_force.max(cs.force);
-            let l = ledger(&st, phase, &cs);
+            let l = ledger(&st, phase, &cs, pe, ke);
             energy_err = energy_err.max((l.total() - e0).abs() / e0);
-            momentum_err = momentum_err.max((mb * st.vb + beam.momentum(&st.v) - p0).abs() / p0);
+            momentum_err = momentum_err.max((mb * st.vb + mom - p0).abs() / p0);
             if step % stride == 0 {
                 record(&mut rows, t, &st, &cs, &l);
             }
@@ -307,29 +355,9 @@ impl Model {
         let f_vib = e_racket / e0 - f_rigid;
         let f_spin = 0.5 * ix * st.om * st.om / e0;
         let f_ball = self.contact.ball_loss(y0) / e0;
-        let mut peak_pe = beam.bending_energy(&st.y);
-        let mut recontact = false;
         // the paper's window: two fundamental periods from the separation time itself
         let t_post = (tau + 2.0 / self.f1_hz).max(series.map(|o| o.t_end).unwrap_or(0.0));
-        let t_window_end = tau + 2.0 / self.f1_hz;
-        while t < t_post {
-            st.drift(dt);
-            beam.elastic_forces(&st.y, &mut st.curv, &mut st.elastic);
-            st.kick(dt, 0.0, self);
-            t += dt;
-            step += 1;
-            let yt = st.yb - (w0 * st.y[j0] + w1 * st.y[j1] + r * st.th);
-            recontact |= yt > 0.0;
-            let l = ledger(&st, phase, &cs);
-            if t <= t_window_end {
-                peak_pe = peak_pe.max(l.pe_racket);
-            }
-            energy_err = energy_err.max((l.total() - e0).abs() / e0);
-            momentum_err = momentum_err.max((mb * st.vb + beam.momentum(&st.v) - p0).abs() / p0);
-            if step % stride == 0 {
-                record(&mut rows, t, &st, &cs, &l);
-            }
-        }
+        let (peak_pe, recontact) = self.after_impact(&st, t - tau, t_post - t);
         if energy_err > ENERGY_ERROR_LIMIT {
             return Err(Error::EnergyDrift { error: energy_err, limit: ENERGY_ERROR_LIMIT });
         }
@@ -353,7 +381,53 @@ impl Model {
             dt_s: dt,
         };
         result.check_finite()?;
+        // A time series is extended by stepping the free racket on (the result above does
+        // not depend on it).
+        if rows.is_some() {
+            while t < t_post {
+                let pe = st.drift(dt, &beam.kappa);
+                let (ke, _) = st.kick(dt, 0.0, self);
+                t += dt;
+                step += 1;
+                if step % stride == 0 {
+                    record(&mut rows, t, &st, &cs, &ledger(&st, phase, &cs, pe, ke));
+                }
+            }
+        }
         Ok((result, rows))
+    }
+
+    /// The free vibration after separation, in closed form: the peak bending PE over the
+    /// paper's window (two fundamental periods from separation) and whether the frame meets the
+    /// ball again before `ahead` seconds from now. `st` is the state `lag` seconds after
+    /// separation.
+    fn after_impact(&self, st: &Stepper, lag: f64, ahead: f64) -> (f64, bool) {
+        let basis = &self.basis;
+        let beam = &basis.beam;
+        let [j0, j1] = self.load.nodes;
+        let [w0, w1] = self.load.weights;
+        let k = basis.lam.len();
+        let (mut q, mut qd, mut g) = (Vec::with_capacity(k), Vec::with_capacity(k), Vec::with_capacity(k));
+        for phi in &basis.shapes {
+            let (mut a, mut b) = (0.0, 0.0);
+            for (((f, m), y), v) in phi.iter().zip(&beam.mass).zip(&st.y).zip(&st.v) {
+                let pm = f * m;
+                a += pm * y;
+                b += pm * v;
+            }
+            q.push(a);
+            qd.push(b);
+            g.push(w0 * phi[j0] + w1 * phi[j1]);
+        }
+        let free = FreeVibration::new(&basis.omega, &q, &qd, &g);
+        let peak = free.peak_pe(-lag, 2.0 / self.f1_hz - lag);
+        // the gap without the vibration is affine in time: ball minus rigid motion of the load point
+        let r = self.params.impact.r;
+        let flex0: f64 = g.iter().zip(&q).map(|(g, q)| g * q).sum();
+        let flex_rate: f64 = g.iter().zip(&qd).map(|(g, v)| g * v).sum();
+        let gap0 = st.yb - r * st.th - (w0 * st.y[j0] + w1 * st.y[j1] - flex0);
+        let rate = st.vb - r * st.om - (w0 * st.v[j0] + w1 * st.v[j1] - flex_rate);
+        (peak, free.meets_ball(gap0, rate, ahead))
     }
 }
 
@@ -395,7 +469,7 @@ fn time_limit(p: &Params, contact: &Contact) -> f64 {
     IMPACT_TIME_LIMIT_HALF_PERIODS * std::f64::consts::PI * (p.ball.mass / contact.compression_stiffness()).sqrt()
 }
 
-/// The state of the ball, the beam and the twist, with scratch buffers.
+/// The state of the ball, the beam and the twist, with the bending-moment buffer.
 struct Stepper {
     yb: f64,
     vb: f64,
@@ -406,46 +480,80 @@ struct Stepper {
     th: f64,
     om: f64,
     al: f64,
-    elastic: Vec<f64>,
-    curv: Vec<f64>,
+    /// `moment[i + 1] = kappa_i c_i` for node i; zero padding at both ends.
+    moment: Vec<f64>,
 }
 
 impl Stepper {
-    /// Positions to the end of the step, `y += v dt + a dt^2 / 2`.
-    fn drift(&mut self, dt: f64) {
-        let h = 0.5 * dt * dt;
-        self.yb += self.vb * dt + self.ab * h;
-        for i in 0..self.y.len() {
-            self.y[i] += self.v[i] * dt + self.a[i] * h;
+    fn new(nodes: usize, v1: f64) -> Self {
+        let zeros = vec![0.0; nodes];
+        Stepper {
+            yb: 0.0,
+            vb: v1,
+            ab: 0.0,
+            y: zeros.clone(),
+            v: zeros.clone(),
+            a: zeros,
+            th: 0.0,
+            om: 0.0,
+            al: 0.0,
+            moment: vec![0.0; nodes + 2],
         }
-        self.th += self.om * dt + self.al * h;
     }
 
-    /// New accelerations from the elastic forces and the contact force `f`, and the velocity
-    /// half-kicks `v += (a_old + a_new) dt / 2`.
-    fn kick(&mut self, dt: f64, f: f64, model: &Model) {
+    /// Positions to the end of the step, `y += v dt + a dt^2 / 2`, then the bending moments
+    /// `kappa_j (y_{j-1} - 2 y_j + y_{j+1})`; returns the bending energy, J.
+    fn drift(&mut self, dt: f64, kappa: &[f64]) -> f64 {
+        let h = 0.5 * dt * dt;
+        self.yb += self.vb * dt + self.ab * h;
+        self.th += self.om * dt + self.al * h;
+        for ((y, v), a) in self.y.iter_mut().zip(&self.v).zip(&self.a) {
+            *y += v * dt + a * h;
+        }
+        let mut twice_pe = 0.0;
+        // kappa is zero at the two end nodes, so their moments stay zero
+        let inner = &mut self.moment[2..self.y.len()];
+        for ((m, w), k) in inner.iter_mut().zip(self.y.windows(3)).zip(&kappa[1..]) {
+            let c = w[0] - 2.0 * w[1] + w[2];
+            *m = k * c;
+            twice_pe += *m * c;
+        }
+        0.5 * twice_pe
+    }
+
+    /// New accelerations from the bending moments and the contact force `f`, and the velocity
+    /// half-kicks `v += (a_old + a_new) dt / 2`; returns the beam's kinetic energy (J) and
+    /// momentum (kg m/s).
+    fn kick(&mut self, dt: f64, f: f64, model: &Model) -> (f64, f64) {
         let half = 0.5 * dt;
-        let beam = &model.beam;
         let ab = -f / model.params.ball.mass;
         self.vb += (self.ab + ab) * half;
         self.ab = ab;
         let al = f * model.params.impact.r / model.params.racket.ix;
         self.om += (self.al + al) * half;
         self.al = al;
+        let basis = &model.basis;
+        for (((v, a), w), im) in
+            self.v.iter_mut().zip(self.a.iter_mut()).zip(self.moment.windows(3)).zip(&basis.inv_mass)
+        {
+            let an = (2.0 * w[1] - w[0] - w[2]) * im;
+            *v += (*a + an) * half;
+            *a = an;
+        }
         let [j0, j1] = model.load.nodes;
         let [w0, w1] = model.load.weights;
-        for i in 0..self.y.len() {
-            let mut force = self.elastic[i];
-            if i == j0 {
-                force += w0 * f;
-            }
-            if i == j1 {
-                force += w1 * f;
-            }
-            let a = force / beam.mass[i];
-            self.v[i] += (self.a[i] + a) * half;
-            self.a[i] = a;
+        for (j, w) in [(j0, w0), (j1, w1)] {
+            let da = w * f * basis.inv_mass[j];
+            self.a[j] += da;
+            self.v[j] += da * half;
         }
+        let (mut twice_ke, mut mom) = (0.0, 0.0);
+        for (v, m) in self.v.iter().zip(&basis.beam.mass) {
+            let p = m * v;
+            twice_ke += p * v;
+            mom += p;
+        }
+        (0.5 * twice_ke, mom)
     }
 
     /// Replace the contact force of the last kick by one `df` larger (used at the phase switch).

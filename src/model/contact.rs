@@ -52,6 +52,18 @@ pub struct ContactState {
     pub ball_compression: f64,
     /// Expansion-law variable `u = Y_b / Y0` (0 in compression); a warm start for the next solve.
     pub u: f64,
+    /// `u^p`, kept with `u` so the next solve starts without a power function.
+    pub u_pow: f64,
+}
+
+impl ContactState {
+    /// No contact.
+    pub const ZERO: ContactState = ContactState { force: 0.0, ball_compression: 0.0, u: 0.0, u_pow: 0.0 };
+
+    /// The warm start `(u, u^p)` this state offers the next expansion solve.
+    pub fn guess(&self) -> (f64, f64) {
+        (self.u, self.u_pow)
+    }
 }
 
 impl Contact {
@@ -78,29 +90,24 @@ impl Contact {
         self.ks * yt_max / (self.k1 + self.ks)
     }
 
-    /// Force and compressions at total compression `yt` in the given phase. `u_guess` is the
-    /// previous step's `u` (any value is safe: it is only used when it lies right of the root).
-    pub fn state(&self, yt: f64, phase: Phase, u_guess: f64) -> Result<ContactState> {
+    /// Force and compressions at total compression `yt` in the given phase. `guess` is the
+    /// previous step's `(u, u^p)` (any pair is safe: it is only used when it lies right of the
+    /// root, and `u^p` only when it is consistent with `u`).
+    pub fn state(&self, yt: f64, phase: Phase, guess: (f64, f64)) -> Result<ContactState> {
         if yt <= 0.0 {
-            return Ok(ContactState { force: 0.0, ball_compression: 0.0, u: 0.0 });
+            return Ok(ContactState::ZERO);
         }
         match phase {
             Phase::Compression => {
                 let force = self.k_series * yt;
-                Ok(ContactState { force, ball_compression: force / self.k1, u: 0.0 })
+                Ok(ContactState { force, ball_compression: force / self.k1, u: 0.0, u_pow: 0.0 })
             }
             Phase::Expansion { y0 } => {
                 let z = yt / y0;
-                let u = self.solve_expansion(z, u_guess)?;
-                let force = self.k1 * y0 * u.powf(self.p);
-                Ok(ContactState { force, ball_compression: u * y0, u })
+                let (u, up) = solve_u(self.alpha, self.p, z, guess)?;
+                Ok(ContactState { force: self.k1 * y0 * up, ball_compression: u * y0, u, u_pow: up })
             }
         }
-    }
-
-    /// Solve `u + alpha u^p = z` for `u >= 0` (Eq 10 in units of `Y0`).
-    fn solve_expansion(&self, z: f64, u_guess: f64) -> Result<f64> {
-        solve_u(self.alpha, self.p, z, u_guess)
     }
 
     /// Energy held by the ball plus the energy it has already dissipated ("PE ball" of Fig 4), J.
@@ -110,7 +117,7 @@ impl Contact {
             Phase::Expansion { y0 } => {
                 let q = self.p + 1.0;
                 let full = self.k1 * y0 * y0;
-                0.5 * full - full * (1.0 - st.u.powf(q)) / q
+                0.5 * full - full * (1.0 - st.u * st.u_pow) / q
             }
         }
     }
@@ -130,29 +137,81 @@ impl Contact {
 /// (`a = k1/k_s`), and, with `a` enlarged by a compliance term, the implicit contact step of the
 /// modal solver. Newton from an upper bound of the root converges monotonically (the left side
 /// is increasing and convex), so the result is never negative and the loop always ends.
-pub fn solve_u(a: f64, p: f64, z: f64, u_guess: f64) -> Result<f64> {
-    let h = |u: f64| u + a * u.powf(p) - z;
-    // Upper bounds of the root (h >= 0 there): z itself, (z/a)^(1/p), and 1 whenever
-    // z <= 1 + a (Y_T at or below its maximum; above it the frame has sprung back and
-    // reloads the ball on its expansion curve). The smallest keeps Newton short.
-    let mut hi = z.min((z / a).powf(1.0 / p));
-    if z <= 1.0 + a {
-        hi = hi.min(1.0);
-    }
-    let mut u = if u_guess > 0.0 && u_guess < hi && h(u_guess) >= 0.0 { u_guess } else { hi };
-    for _ in 0..200 {
-        let hu = h(u);
-        if hu <= 0.0 {
-            return Ok(u);
+/// Returns `(u, u^p)`. `guess` is `(u, u^p)` of the previous solve; `u^p` of each iterate is
+/// carried from the previous one by [`pow_near`], so a warm-started solve usually needs no
+/// power function at all.
+pub fn solve_u(a: f64, p: f64, z: f64, guess: (f64, f64)) -> Result<(f64, f64)> {
+    let pow = |u: f64| if u > 0.0 { u.powf(p) } else { 0.0 };
+    let (u_guess, guess_pow) = guess;
+    // The previous step's u is an upper bound whenever z has not grown (the usual case in
+    // expansion): Newton starts there, one or two iterations from the root. A start far above
+    // the root would lose digits to cancellation in `u - step`, so the guess must also lie
+    // below the cheap bounds z (u < z always) and 1 (when z <= 1 + a).
+    let cheap = if z <= 1.0 + a { z.min(1.0) } else { z };
+    let mut u = u_guess;
+    let mut up = if u > 0.0 && guess_pow > 0.0 && guess_pow.is_finite() { guess_pow } else { pow(u) };
+    if !(u > 0.0 && u <= cheap && u + a * up - z >= 0.0) {
+        // Upper bounds of the root (h >= 0 there): z itself, (z/a)^(1/p), and 1 whenever
+        // z <= 1 + a (Y_T at or below its maximum; above it the frame has sprung back and
+        // reloads the ball on its expansion curve). The smallest keeps Newton short.
+        u = z.min((z / a).powf(1.0 / p));
+        if z <= 1.0 + a {
+            u = u.min(1.0);
         }
-        let step = hu / (1.0 + a * p * u.powf(p - 1.0));
+        up = pow(u);
+    }
+    for _ in 0..200 {
+        let hu = u + a * up - z;
+        if hu <= 0.0 || u <= 0.0 {
+            return Ok((u, up));
+        }
+        let d1 = 1.0 + a * p * up / u;
+        let mut step = hu / d1;
+        let halley = step < 1e-5 * u;
+        if halley {
+            // close to the root: Halley's correction (third order; its overshoot is of the
+            // order of the cube of the step, below rounding)
+            let d2 = a * p * (p - 1.0) * up / (u * u);
+            step = hu / (d1 - 0.5 * hu * d2 / d1);
+        }
         let next = (u - step).max(0.0);
-        if step <= 4.0 * f64::EPSILON * u || next == u {
-            return Ok(next);
+        let next_pow = pow_near(next, u, up, p);
+        // after a Halley step of 1e-6 the error is of order 1e-18: done
+        if (halley && step <= 1e-6 * u) || step <= 4.0 * f64::EPSILON * u || next == u {
+            return Ok((next, next_pow));
         }
         u = next;
+        up = next_pow;
     }
     Err(Error::ContactSolve { z })
+}
+
+/// `u^p` from a nearby `u0` with known `p0 = u0^p`: `p0 exp(p ln(u/u0))` by short series when
+/// `u/u0` is within 1 % of 1 (rounding-level accurate: the neglected terms are below 1e-17
+/// relative), `powf` otherwise.
+pub fn pow_near(u: f64, u0: f64, p0: f64, p: f64) -> f64 {
+    if u <= 0.0 {
+        return 0.0;
+    }
+    let x = u / u0 - 1.0;
+    if !(x.abs() < 0.01 && u0 > 0.0) {
+        return u.powf(p);
+    }
+    // ln(1 + x) = 2 atanh(s), s = x / (2 + x), |s| < 0.005
+    let s = x / (2.0 + x);
+    let s2 = s * s;
+    let ln = 2.0 * s * (1.0 + s2 * (1.0 / 3.0 + s2 * (1.0 / 5.0 + s2 * (1.0 / 7.0))));
+    let y = p * ln;
+    if y.abs() >= 0.02 {
+        return u.powf(p);
+    }
+    // exp(y) to y^8 / 8!
+    let e = 1.0
+        + y * (1.0
+            + y * (1.0 / 2.0
+                + y * (1.0 / 6.0
+                    + y * (1.0 / 24.0 + y * (1.0 / 120.0 + y * (1.0 / 720.0 + y * (1.0 / 5040.0 + y / 40320.0)))))));
+    p0 * e
 }
 
 #[cfg(test)]
@@ -169,8 +228,8 @@ mod tests {
         let c = contact(4.0e4);
         let yt_max = 0.01;
         let y0 = c.ball_compression_at_max(yt_max);
-        let fc = c.state(yt_max, Phase::Compression, 0.0).unwrap().force;
-        let fe = c.state(yt_max, Phase::Expansion { y0 }, 0.3).unwrap();
+        let fc = c.state(yt_max, Phase::Compression, (0.0, 0.0)).unwrap().force;
+        let fe = c.state(yt_max, Phase::Expansion { y0 }, (0.3, 0.3f64.powf(c.p))).unwrap();
         assert_relative_eq!(fc, fe.force, max_relative = 1e-13);
         assert_relative_eq!(fe.u, 1.0, max_relative = 1e-13);
     }
@@ -181,7 +240,7 @@ mod tests {
         let y0 = 0.008;
         for &yt in &[1e-9, 1e-5, 0.003, 0.0119, 0.02] {
             for &guess in &[0.0, 0.5, 1.0, 7.0] {
-                let st = c.state(yt, Phase::Expansion { y0 }, guess).unwrap();
+                let st = c.state(yt, Phase::Expansion { y0 }, (guess, guess.powf(c.p))).unwrap();
                 let k2 = c.k1 * y0.powf(1.0 - c.p);
                 let yb = st.ball_compression;
                 assert!(yb >= 0.0);
@@ -198,7 +257,7 @@ mod tests {
                 let c = Contact::new(&Ball { mass: 0.057, k1: 3.0e4, p }, &Strings { ks });
                 let y0 = 0.01;
                 for &z in &[1e-300, 1e-12, 1e-3, 0.5, 1.0, 1.0 + c.alpha, 2.0 * (1.0 + c.alpha)] {
-                    let st = c.state(z * y0, Phase::Expansion { y0 }, 0.7).unwrap();
+                    let st = c.state(z * y0, Phase::Expansion { y0 }, (0.7, 0.7f64.powf(p))).unwrap();
                     let u = st.u;
                     assert!(u.is_finite() && u >= 0.0);
                     let lhs = u + c.alpha * u.powf(p);
@@ -209,10 +268,27 @@ mod tests {
     }
 
     #[test]
+    fn power_from_a_nearby_point_matches_powf() {
+        for &p in &[1.0 + 1e-9, 1.7, 2.55, 10.0] {
+            for i in 0..2000 {
+                let u0 = 1e-6 + (i as f64 * 0.61803).fract();
+                for &x in &[-0.0099, -1e-3, -1e-9, 0.0, 3e-7, 2e-3, 0.0099, 0.05] {
+                    let u = u0 * (1.0 + x);
+                    let exact = u.powf(p);
+                    let near = pow_near(u, u0, u0.powf(p), p);
+                    // the rounding of u / u0 is amplified p times, as it is in u^p itself
+                    let tol = (p + 3.0) * f64::EPSILON * exact;
+                    assert!((near - exact).abs() <= tol, "p {p} u0 {u0} x {x}: {near} vs {exact}");
+                }
+            }
+        }
+    }
+
+    #[test]
     fn ball_ledger_at_the_end_of_expansion_is_the_eq11_loss() {
         let c = contact(4.0e4);
         let y0 = 0.01;
-        let st = ContactState { force: 0.0, ball_compression: 0.0, u: 0.0 };
+        let st = ContactState::ZERO;
         assert_relative_eq!(
             c.ball_energy_with_loss(Phase::Expansion { y0 }, &st),
             c.ball_loss(y0),

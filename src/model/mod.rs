@@ -2,4 +2,5 @@
 
 pub mod beam;
 pub mod contact;
+pub mod free;
 pub mod reduced;
