@@ -21,6 +21,8 @@
 //!
 //! ## Layout
 //! - [`params`]: parameter structs (defaults = the paper), validation, `--config` overrides.
+//! - [`racket`]: a racket file or preset in spec-sheet units (mass, balance, swingweight, Hz),
+//!   fitted exactly to the discrete beam.
 //! - [`model`]: the contact law, the discrete beam and its modes, closed-form drop tests.
 //! - [`solver`]: one impact by velocity-Verlet time stepping, with the energy ledger.
 //! - [`modal`]: an independent modal-superposition solver with a contact-sized step.
@@ -55,6 +57,7 @@ pub mod model;
 pub mod output;
 pub mod params;
 pub mod plot;
+pub mod racket;
 pub mod report;
 pub mod solver;
 pub mod sweep;
