@@ -9,6 +9,7 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use racket_impact::model::beam::Beam;
 use racket_impact::params::{Overrides, Params};
+use racket_impact::racket::Fitted;
 use racket_impact::solver::{Model, SeriesOptions};
 use racket_impact::{Error, Result};
 
@@ -29,6 +30,15 @@ enum Command {
     Figures(FiguresArgs),
     /// The paper's numbers beside ours: writes REPORT.md and prints it
     Report(ReportArgs),
+    /// Fit a racket description (file or preset) to the model and show how well it matches
+    Racket(RacketArgs),
+    /// Outgoing ball speed for a swing and an incoming ball; compare tensions or rackets
+    ///
+    /// v_out = e_A v_in + (1 + e_A) v_racket (the paper's frame transformation), with e_A
+    /// computed at the relative speed v_in + v_racket and the racket's swing speed taken at the
+    /// impact point. Example: racket-impact speed --racket tweener --swing 100 --incoming 60
+    /// --compare-tension-lb 50,60
+    Speed(SpeedArgs),
     /// Run the cartesian product of ranges or lists of any parameters, in parallel, as CSV
     ///
     /// After the options, give any parameter as `--KEY SPEC`, where SPEC is a value (0.1), a
@@ -40,6 +50,9 @@ enum Command {
 
 #[derive(Args, Debug)]
 struct SweepArgs {
+    /// Racket description file (TOML, player units) or preset name; see `racket-impact racket --list`
+    #[arg(long)]
+    racket: Option<String>,
     /// TOML file with fixed values for any parameter (as for `simulate`)
     #[arg(long)]
     config: Option<PathBuf>,
@@ -56,9 +69,13 @@ struct FiguresArgs {
     /// Only this experiment (repeatable); see --list
     #[arg(long = "only", value_name = "ID")]
     only: Vec<String>,
-    /// Output directory (created if missing)
-    #[arg(long, default_value = "figures")]
-    out: PathBuf,
+    /// Output directory (created if missing); default figures/, or figures/racket-NAME with --racket
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Run the experiments on this racket (file or preset) instead of the paper's; the impacts
+    /// stay where the paper puts them, along the whole length
+    #[arg(long)]
+    racket: Option<String>,
     /// List the experiment ids with their titles and paper references, and exit
     #[arg(long)]
     list: bool,
@@ -82,7 +99,74 @@ enum Format {
 }
 
 #[derive(Args, Debug)]
+struct RacketArgs {
+    /// Racket description file (TOML, player units) or preset name
+    racket: Option<String>,
+    /// List the presets and exit
+    #[arg(long)]
+    list: bool,
+    /// Number of beam segments the fit is made for (4..=400)
+    #[arg(long, default_value_t = 39)]
+    segments: usize,
+    /// Output format
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    format: Format,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+enum SpeedUnit {
+    /// kilometres per hour
+    Kmh,
+    /// miles per hour
+    Mph,
+    /// metres per second
+    Ms,
+}
+
+impl SpeedUnit {
+    /// Metres per second per unit.
+    fn si(self) -> f64 {
+        match self {
+            SpeedUnit::Kmh => 1.0 / 3.6,
+            SpeedUnit::Mph => 0.44704,
+            SpeedUnit::Ms => 1.0,
+        }
+    }
+    fn label(self) -> &'static str {
+        match self {
+            SpeedUnit::Kmh => "km/h",
+            SpeedUnit::Mph => "mph",
+            SpeedUnit::Ms => "m/s",
+        }
+    }
+}
+
+#[derive(Args, Debug)]
+struct SpeedArgs {
+    #[command(flatten)]
+    common: Common,
+    /// Racket speed at the impact point, towards the ball (in --unit)
+    #[arg(long, allow_hyphen_values = true)]
+    swing: f64,
+    /// Incoming ball speed, towards the racket (in --unit); 0 for a serve
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    incoming: f64,
+    /// Unit of the speeds
+    #[arg(long, value_enum, default_value_t = SpeedUnit::Kmh)]
+    unit: SpeedUnit,
+    /// Compare these string tensions, lb (e.g. 50,60); the first is the reference
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    compare_tension_lb: Vec<f64>,
+    /// Compare these rackets (files or presets, e.g. light,players); the first is the reference
+    #[arg(long, value_delimiter = ',')]
+    compare_racket: Vec<String>,
+}
+
+#[derive(Args, Debug)]
 struct Common {
+    /// Racket description file (TOML, player units) or preset name; see `racket-impact racket --list`
+    #[arg(long)]
+    racket: Option<String>,
     /// TOML file with any of the flags below as keys (flags win)
     #[arg(long)]
     config: Option<PathBuf>,
@@ -143,6 +227,8 @@ fn main() -> ExitCode {
         Command::Modes(a) => modes(a),
         Command::Figures(a) => figures(a),
         Command::Report(a) => report(a),
+        Command::Racket(a) => racket_cmd(a),
+        Command::Speed(a) => speed(a),
         Command::Sweep(a) => sweep(a),
     };
     match outcome {
@@ -154,16 +240,20 @@ fn main() -> ExitCode {
     }
 }
 
-/// Paper defaults (with the user default `hat` load) < config file < flags, validated.
+/// Paper defaults (with the user default `hat` load) < racket file < config file < flags,
+/// validated.
 fn params_from(common: &Common) -> Result<Params> {
+    resolve(common.racket.as_deref(), common).map(|(p, _)| p)
+}
+
+/// As [`params_from`] with the racket given separately, also returning the fit.
+fn resolve(racket: Option<&str>, common: &Common) -> Result<(Params, Option<Fitted>)> {
     let config = match &common.config {
         Some(path) => Overrides::from_toml_file(path)?,
         None => Overrides::default(),
     };
-    let mut params = Params::default();
-    common.overrides.clone().or(config).apply(&mut params);
-    params.validate()?;
-    Ok(params)
+    let spec = racket.map(racket_impact::racket::load).transpose()?;
+    racket_impact::racket::resolve(spec.as_ref(), &common.overrides.clone().or(config))
 }
 
 /// Fail early, before any computation, when an output file's directory does not exist.
@@ -273,16 +363,28 @@ fn figures(a: FiguresArgs) -> Result<()> {
     } else {
         a.only.iter().map(|id| experiments::find(id)).collect::<Result<Vec<_>>>()?
     };
-    racket_impact::io::ensure_dir(&a.out)?;
+    let out = match &a.racket {
+        Some(arg) => {
+            let spec = racket_impact::racket::load(arg)?;
+            let fitted = spec.to_racket(Params::paper().numerics.segments)?;
+            experiments::use_racket(Some((fitted.racket, fitted.ball)));
+            let stem = std::path::Path::new(arg).file_stem().and_then(|s| s.to_str()).unwrap_or("custom");
+            let name: String =
+                stem.chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' { c } else { '_' }).collect();
+            a.out.clone().unwrap_or_else(|| PathBuf::from("figures").join(format!("racket-{name}")))
+        }
+        None => a.out.clone().unwrap_or_else(|| PathBuf::from("figures")),
+    };
+    racket_impact::io::ensure_dir(&out)?;
     for e in &selected {
         let start = std::time::Instant::now();
-        let table = experiments::run_and_write(e, &a.out)?;
+        let table = experiments::run_and_write(e, &out)?;
         eprintln!(
             "{:<24} {:>4} rows  {:>6.2} s  -> {}/{}.{{csv,png}}",
             e.id,
             table.rows.len(),
             start.elapsed().as_secs_f64(),
-            a.out.display(),
+            out.display(),
             e.id
         );
     }
@@ -326,7 +428,15 @@ fn sweep(a: SweepArgs) -> Result<()> {
         }
         axes.push(parse_spec(key, &pair[1])?);
     }
-    let sweep = Sweep { base, axes };
+    let defaults = match &a.racket {
+        Some(arg) => {
+            let spec = racket_impact::racket::load(arg)?;
+            let only_n = Overrides { segments: base.segments, ..Overrides::default() };
+            racket_impact::racket::resolve(Some(&spec), &only_n)?.0
+        }
+        None => Params::default(),
+    };
+    let sweep = Sweep { defaults, base, axes };
     sweep.validate_all()?; // a bad value anywhere fails before anything is written
     if let Some(path) = &a.out {
         check_output_path("out", path)?;
@@ -379,4 +489,184 @@ fn csv_line(fields: &[String]) -> String {
     let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(Vec::new());
     let _ = w.write_record(fields);
     String::from_utf8(w.into_inner().unwrap_or_default()).unwrap_or_default()
+}
+
+fn racket_cmd(a: RacketArgs) -> Result<()> {
+    use racket_impact::racket;
+    if a.list {
+        for name in racket::preset_names() {
+            let fitted = racket::load(name)?.to_racket(a.segments)?;
+            let (r, rep) = (&fitted.racket, &fitted.report);
+            println!(
+                "{name:<22} {:.1} cm, {:.0} g, balance {:.1} cm, swingweight {:.0} kg cm^2, twistweight {:.1} kg cm^2, f1 {:.0} Hz, ks {:.0} N/m{}",
+                100.0 * r.length,
+                1e3 * r.mass,
+                rep.balance_cm.model,
+                rep.swingweight_kg_cm2.model,
+                rep.twistweight_kg_cm2.model,
+                rep.frequency_hz.model,
+                fitted.strings.ks,
+                if r.profile.is_none() { ", uniform (the paper's beam)" } else { "" }
+            );
+        }
+        return Ok(());
+    }
+    let Some(arg) = a.racket.as_deref() else {
+        return Err(Error::invalid("racket", "(missing)", "give a racket file or preset name, or --list"));
+    };
+    let spec = racket::load(arg)?;
+    let fitted = spec.to_racket(a.segments)?;
+    let text = match a.format {
+        Format::Text => {
+            let r = &fitted.racket;
+            let mut s = format!("{}\n", fitted.report);
+            s.push_str(&format!(
+                "model: L = {} m, M = {} kg, EI = {:.6} N m^2{}, Ix = {} kg m^2, ks = {:.6} N/m, ball {} kg\n",
+                r.length,
+                r.mass,
+                r.ei,
+                if r.profile.is_some() { " (times the stiffness profile)" } else { "" },
+                r.ix,
+                fitted.strings.ks,
+                fitted.ball.mass
+            ));
+            if let Some(h) = r.head_length {
+                s.push_str(&format!(
+                    "string face: ellipse {:.1} cm x {:.1} cm from the tip\n",
+                    100.0 * h,
+                    200.0 * r.half_width
+                ));
+            }
+            s
+        }
+        Format::Csv => fitted.report.table().to_csv(),
+        Format::Json => {
+            let t = fitted.report.table();
+            let rows: Vec<serde_json::Value> = t
+                .rows
+                .iter()
+                .map(|row| {
+                    let obj: serde_json::Map<String, serde_json::Value> = t
+                        .columns
+                        .iter()
+                        .zip(row)
+                        .map(|(c, v)| (c.clone(), serde_json::Value::String(v.to_csv_field())))
+                        .collect();
+                    serde_json::Value::Object(obj)
+                })
+                .collect();
+            let v = serde_json::json!({ "fit": rows, "racket": fitted.racket, "strings": fitted.strings, "ball": fitted.ball });
+            format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?)
+        }
+    };
+    print!("{text}");
+    Ok(())
+}
+
+fn speed(a: SpeedArgs) -> Result<()> {
+    use racket_impact::table::{Table, Value};
+    let unit = a.unit.si();
+    for (field, v) in [("swing", a.swing), ("incoming", a.incoming)] {
+        if !(v.is_finite() && v >= 0.0) {
+            return Err(Error::invalid(field, v, format!("speed must be a finite number >= 0 {}", a.unit.label())));
+        }
+    }
+    let (v_racket, v_in) = (a.swing * unit, a.incoming * unit);
+    if !a.compare_tension_lb.is_empty() && !a.compare_racket.is_empty() {
+        return Err(Error::invalid(
+            "compare-tension-lb",
+            "(with --compare-racket)",
+            "compare either tensions or rackets, not both",
+        ));
+    }
+    // the variants: (label, racket argument, tension)
+    let mut variants: Vec<(String, Option<String>, Option<f64>)> = Vec::new();
+    for &t in &a.compare_tension_lb {
+        if !(t.is_finite() && t > 0.0 && t <= 200.0) {
+            return Err(Error::invalid("compare-tension-lb", t, "tension must satisfy 0 < T <= 200 lb"));
+        }
+        variants.push((format!("{t} lb"), a.common.racket.clone(), Some(t)));
+    }
+    for r in &a.compare_racket {
+        variants.push((r.clone(), Some(r.clone()), None));
+    }
+    if variants.is_empty() {
+        variants.push((a.common.racket.clone().unwrap_or_else(|| "paper".into()), a.common.racket.clone(), None));
+    }
+    let mut rows = Vec::new();
+    for (label, racket, tension) in &variants {
+        let (mut p, _) = resolve(racket.as_deref(), &a.common)?;
+        if let Some(t) = tension {
+            p.strings.ks = racket_impact::params::ks_from_tension_lb(*t);
+        }
+        // e_A is computed at the relative speed (it does not depend on it; theta scales with it)
+        p.impact.v1 = v_in + v_racket;
+        p.validate()?;
+        let r = racket_impact::simulate(&p)?;
+        let v_out = r.e_a * v_in + (1.0 + r.e_a) * v_racket;
+        rows.push((label.clone(), p, r, v_out));
+    }
+    let v_ref = rows[0].3;
+    let mut t = Table::new(
+        "speed",
+        &["variant", "x_m", "r_m", "ks_n_per_m", "e_a", "tau_ms", "theta_deg", "ball_speed_out", "change_pct", "unit"],
+    );
+    for (label, p, r, v_out) in &rows {
+        t.push(vec![
+            Value::Text(label.clone()),
+            p.impact.x.into(),
+            p.impact.r.into(),
+            p.strings.ks.into(),
+            r.e_a.into(),
+            (1e3 * r.tau_s).into(),
+            r.theta_end_deg.into(),
+            (v_out / unit).into(),
+            (100.0 * (v_out / v_ref - 1.0)).into(),
+            Value::Text(a.unit.label().into()),
+        ])?;
+    }
+    let text = match a.common.format {
+        Format::Csv => t.to_csv(),
+        Format::Json => {
+            let v: Vec<serde_json::Value> = rows
+                .iter()
+                .map(|(label, p, r, v_out)| {
+                    serde_json::json!({
+                        "variant": label, "params": p, "result": r,
+                        "ball_speed_out": v_out / unit, "change_pct": 100.0 * (v_out / v_ref - 1.0), "unit": a.unit.label(),
+                    })
+                })
+                .collect();
+            format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?)
+        }
+        Format::Text => {
+            let mut s = format!(
+                "swing {} {u} at the impact point, incoming ball {} {u}: v_out = e_A v_in + (1 + e_A) v_racket\n",
+                a.swing,
+                a.incoming,
+                u = a.unit.label()
+            );
+            s.push_str(&format!(
+                "{:<22} {:>7} {:>6} {:>9} {:>8} {:>8} {:>12} {:>9}\n",
+                "variant", "x cm", "r cm", "ks N/m", "e_A", "tau ms", "ball out", "change"
+            ));
+            for (label, p, r, v_out) in &rows {
+                s.push_str(&format!(
+                    "{:<22} {:>7.1} {:>6.1} {:>9.0} {:>8.4} {:>8.3} {:>7.1} {:<4} {:>+8.2} %\n",
+                    label,
+                    100.0 * p.impact.x,
+                    100.0 * p.impact.r,
+                    p.strings.ks,
+                    r.e_a,
+                    1e3 * r.tau_s,
+                    v_out / unit,
+                    a.unit.label(),
+                    100.0 * (v_out / v_ref - 1.0)
+                ));
+            }
+            s
+        }
+    };
+    print!("{text}");
+    Ok(())
 }

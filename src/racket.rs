@@ -881,6 +881,38 @@ pub fn load(arg: &str) -> Result<RacketSpec> {
     })
 }
 
+/// Impact parameters for a command: the defaults (the paper's racket, ball and strings with the
+/// `hat` load), replaced by the racket description when one is given (fitted at the segment
+/// count the overrides ask for, else the default 39; a racket with a head outline is hit at
+/// the centre of its face unless `x` and `r` say otherwise), then the config-file and flag overrides
+/// (`overrides` = flags already merged over the config). Validated. Returns the fit too.
+pub fn resolve(spec: Option<&RacketSpec>, overrides: &params::Overrides) -> Result<(params::Params, Option<Fitted>)> {
+    let mut p = params::Params::default();
+    let fitted = match spec {
+        Some(spec) => {
+            let segments = overrides.segments.unwrap_or(p.numerics.segments);
+            if !(MIN_SEGMENTS..=MAX_SEGMENTS).contains(&segments) {
+                p.numerics.segments = segments;
+                p.numerics.validate()?;
+            }
+            let f = spec.to_racket(segments)?;
+            p.racket = f.racket;
+            p.strings = f.strings;
+            p.ball = f.ball;
+            if let Some(h) = f.racket.head_length {
+                // a racket with a head outline is hit, by default, at the centre of its face
+                p.impact.x = 0.5 * h;
+                p.impact.r = 0.0;
+            }
+            Some(f)
+        }
+        None => None,
+    };
+    overrides.apply(&mut p);
+    p.validate()?;
+    Ok((p, fitted))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -72,6 +72,8 @@ pub fn parse_spec(key: &str, spec: &str) -> Result<Axis> {
 /// A sweep: a base (paper defaults < config) and the varied axes, first axis slowest.
 #[derive(Debug, Clone)]
 pub struct Sweep {
+    /// The parameters every point starts from (the defaults, or a racket file's).
+    pub defaults: Params,
     /// Fixed overrides.
     pub base: Overrides,
     /// Varied parameters.
@@ -163,7 +165,7 @@ impl Sweep {
             o.set(&axis.key, v)?;
             vals[k] = v;
         }
-        let mut p = Params::default();
+        let mut p = self.defaults;
         o.apply(&mut p);
         p.validate()?;
         Ok((p, vals))
@@ -224,6 +226,7 @@ mod tests {
     #[test]
     fn points_are_row_major_and_match_single_runs() {
         let sweep = Sweep {
+            defaults: Params::default(),
             base: Overrides { load: Some(crate::params::LoadRule::Node), ..Default::default() },
             axes: vec![parse_spec("ks", "2e4,4e4").unwrap(), parse_spec("x", "0.1:0.2:3").unwrap()],
         };

@@ -26,7 +26,7 @@ pub const EXPERIMENT: Experiment = Experiment {
 
 /// The Fig 4 impact.
 pub fn params() -> Params {
-    let mut p = Params::paper();
+    let mut p = super::base_params();
     p.impact.x = 0.10;
     p.impact.r = 0.05;
     p.strings.ks = 4.0e4;

@@ -22,7 +22,7 @@
 use std::path::Path;
 
 use crate::error::{Error, Result};
-use crate::params::{LoadRule, Params};
+use crate::params::{Ball, LoadRule, Params, Racket};
 use crate::plot::Chart;
 use crate::solver::{simulate, ImpactResult};
 
@@ -125,9 +125,36 @@ pub const CENTRE_X: f64 = 0.158;
 /// Incident speed of Figs 7-8, m/s.
 pub const V1_OFF_AXIS: f64 = 30.0;
 
+/// The racket and ball the experiments run on: the paper's, unless `figures --racket` chose
+/// another (see [`use_racket`]).
+static RACKET: std::sync::RwLock<Option<(Racket, Ball)>> = std::sync::RwLock::new(None);
+
+/// Run the experiments on another racket and ball (`None`: the paper's). The paper's figures
+/// place impacts along the whole length, as the paper does, so the racket's head outline is
+/// not applied (the face is the strip `|r| <= half-width`, at least the paper's 12.5 cm). The
+/// paper-number report always uses the paper's racket.
+pub fn use_racket(racket: Option<(Racket, Ball)>) {
+    let racket = racket.map(|(mut r, b)| {
+        r.head_length = None;
+        r.half_width = r.half_width.max(Racket::default().half_width);
+        (r, b)
+    });
+    *RACKET.write().unwrap_or_else(|e| e.into_inner()) = racket;
+}
+
+/// The paper's parameters (the Fig 4 impact, node load, N = 39) on the chosen racket.
+pub fn base_params() -> Params {
+    let mut p = Params::paper();
+    if let Some((racket, ball)) = *RACKET.read().unwrap_or_else(|e| e.into_inner()) {
+        p.racket = racket;
+        p.ball = ball;
+    }
+    p
+}
+
 /// The paper's racket, ball and numerics (node load, N = 39) with an impact on the long axis.
 pub fn paper_params(x: f64, ks: f64) -> Params {
-    let mut p = Params::paper();
+    let mut p = base_params();
     p.impact.x = x;
     p.impact.r = 0.0;
     p.strings.ks = ks;

@@ -29,7 +29,8 @@ pub const EI_VALUES: [f64; 2] = [150.0, 384.0];
 const MODES: usize = 4;
 
 fn run() -> Result<Table> {
-    let beams: Vec<Beam> = EI_VALUES.iter().map(|&ei| Beam::new(&Racket { ei, ..Racket::default() }, 39)).collect();
+    let base = super::base_params().racket;
+    let beams: Vec<Beam> = EI_VALUES.iter().map(|&ei| Beam::new(&Racket { ei, ..base }, 39)).collect();
     let modes: Vec<_> = beams.iter().map(Beam::modes).collect();
     let mut t = Table::new(EXPERIMENT.id, &["mode", "x_m", "shape", "frequency_ei150_hz", "frequency_ei384_hz"]);
     for k in 1..=MODES {
