@@ -38,6 +38,9 @@ pub struct ModalModel {
     g: Vec<f64>,
     cos: Vec<f64>,
     sin: Vec<f64>,
+    /// d q(h) / d F1 and d q'(h) / d F1 of each retained mode.
+    resp_q: Vec<f64>,
+    resp_v: Vec<f64>,
     /// Load-point amplitudes of the rigid coordinates: translation, rotation, twist.
     g_rigid: [f64; 3],
     /// Static flexibility of the truncated modes at the load point, m/N.
@@ -83,7 +86,23 @@ impl ModalModel {
         for k in 0..lam.len() {
             compliance += g[k] * g[k] / lam[k] * (1.0 - sin[k] / (omega[k] * h));
         }
-        Ok(ModalModel { base, lam, omega, g, cos, sin, g_rigid: [g_t, g_r, g_tw], residual, compliance, h })
+        // response of the end-of-step state to the end force F1 (the state is affine in F1)
+        let resp_q = (0..lam.len()).map(|k| g[k] / lam[k] * (1.0 - sin[k] / (omega[k] * h))).collect();
+        let resp_v = (0..lam.len()).map(|k| g[k] / (lam[k] * h) * (1.0 - cos[k])).collect();
+        Ok(ModalModel {
+            base,
+            lam,
+            omega,
+            g,
+            cos,
+            sin,
+            resp_q,
+            resp_v,
+            g_rigid: [g_t, g_r, g_tw],
+            residual,
+            compliance,
+            h,
+        })
     }
 
     /// Number of retained flexible modes.
@@ -126,7 +145,8 @@ impl ModalModel {
                 Phase::Compression => (k_series * a / (1.0 + k_series * self.compliance)).max(0.0),
                 Phase::Expansion { y0 } => self.expansion_force(c, alpha, y0, a, &mut u)?,
             };
-            let mut yt1 = self.advance(&s, f0, f1, &mut next);
+            self.add_end_force(&mut next, f1);
+            let mut yt1 = a - self.compliance * f1;
             let mut ytd1 = self.yt_rate(&next, (f1 - f0) / h);
             let mut f_end = f1;
             if phase == Phase::Compression && ytd1 <= 0.0 {
@@ -136,7 +156,8 @@ impl ModalModel {
                 phase = Phase::Expansion { y0 };
                 u = (1.0, 1.0);
                 f_end = self.expansion_force(c, alpha, y0, a, &mut u)?;
-                yt1 = self.advance(&s, f0, f_end, &mut next);
+                self.add_end_force(&mut next, f_end - f1);
+                yt1 = a - self.compliance * f_end;
                 ytd1 = self.yt_rate(&next, (f_end - f0) / h);
             }
             std::mem::swap(&mut s, &mut next);
@@ -194,6 +215,21 @@ impl ModalModel {
             y_imp += g * out.q[k];
         }
         out.yb - y_imp - self.residual * f1
+    }
+
+    /// Add `df` to the end force of a step already advanced (`Y_T` changes by `-B df`).
+    fn add_end_force(&self, out: &mut State, df: f64) {
+        let (h, mb) = (self.h, self.base.params.ball.mass);
+        out.yb -= h * h * df / (6.0 * mb);
+        out.vb -= h * df / (2.0 * mb);
+        for i in 0..3 {
+            out.rq[i] += self.g_rigid[i] * h * h * df / 6.0;
+            out.rv[i] += self.g_rigid[i] * h * df / 2.0;
+        }
+        for ((q, v), (rq, rv)) in out.q.iter_mut().zip(out.v.iter_mut()).zip(self.resp_q.iter().zip(&self.resp_v)) {
+            *q += rq * df;
+            *v += rv * df;
+        }
     }
 
     /// `dY_T/dt` of a state whose force changes at rate `fdot`.
