@@ -246,15 +246,19 @@ impl ModalModel {
 
     fn contact_state(&self, c: &Contact, phase: Phase, f: f64, y0: f64, u: (f64, f64)) -> ContactState {
         match phase {
-            Phase::Compression => ContactState { force: f, ball_compression: f / c.k1, u: 0.0, u_pow: 0.0 },
-            Phase::Expansion { .. } => ContactState { force: f, ball_compression: u.0 * y0, u: u.0, u_pow: u.1 },
+            Phase::Compression => {
+                ContactState { force: f, ball_compression: f / c.k1, u: 0.0, u_pow: 0.0, string_deflection: f / c.ks }
+            }
+            Phase::Expansion { .. } => {
+                ContactState { force: f, ball_compression: u.0 * y0, u: u.0, u_pow: u.1, string_deflection: f / c.ks }
+            }
         }
     }
 
     /// Total energy (J): ball, ball store and loss, strings, modes, static correction.
     fn energy(&self, s: &State, c: &Contact, phase: Phase, st: &ContactState) -> f64 {
         let mb = self.base.params.ball.mass;
-        let mut e = 0.5 * mb * s.vb * s.vb + c.ball_energy_with_loss(phase, st) + c.string_energy(st.force);
+        let mut e = 0.5 * mb * s.vb * s.vb + c.ball_energy_with_loss(phase, st) + c.string_energy(st);
         e += 0.5 * self.residual * st.force * st.force;
         for i in 0..3 {
             e += 0.5 * s.rv[i] * s.rv[i];
@@ -290,6 +294,7 @@ impl ModalModel {
             f_ball: self.base.contact.ball_loss(y0) / e0,
             f_vib: vib / e0,
             f_vib_peak_pe: peak_pe / e0,
+            f_hand: 0.0,
             f_spin: 0.5 * s.rv[2] * s.rv[2] / e0,
             f_rigid: 0.5 * (s.rv[0] * s.rv[0] + s.rv[1] * s.rv[1]) / e0,
             f_ke_ball: e_a * e_a,

@@ -46,10 +46,20 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
         ("momentum_error", r.momentum_error, "relative"),
         ("dt", r.dt_s, "s"),
     ];
+    if p.variants != crate::params::Variants::default() {
+        s.push_str(&format!("model: {}\n", p.variants.label()));
+    }
     for (name, v, unit) in lines {
         let line = format!("{name:<18} {:>12} {unit}", fmt_sig(v, 6));
         s.push_str(line.trim_end());
         s.push('\n');
+        if name == "f_spin" && p.variants.grip == crate::params::Grip::Hand {
+            s.push_str(&format!(
+                "{:<18} {:>12} taken by the hand (springs + damping)\n",
+                "f_hand",
+                fmt_sig(r.f_hand, 6)
+            ));
+        }
     }
     if r.recontact {
         s.push_str("recontact          yes: the frame meets the ball again after separation\n");
@@ -88,6 +98,7 @@ pub fn series_table(rows: &[SeriesRow]) -> Table {
             "ke_racket",
             "pe_racket",
             "ke_spin",
+            "hand",
             "total",
         ],
     );
@@ -104,6 +115,7 @@ pub fn series_table(rows: &[SeriesRow]) -> Table {
             r.ke_racket,
             r.pe_racket,
             r.ke_spin,
+            r.hand,
             r.total,
         ];
         t.rows.push(vals.iter().map(|&v| Value::Num(v)).collect());

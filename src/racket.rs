@@ -238,7 +238,14 @@ impl Fitted {
     /// Full impact parameters: this racket, strings and ball with the given impact and
     /// numerics (use the same `segments` as the fit for an exact match of the targets).
     pub fn params(&self, impact: params::Impact, numerics: params::Numerics) -> params::Params {
-        params::Params { ball: self.ball, strings: self.strings, racket: self.racket, impact, numerics }
+        params::Params {
+            ball: self.ball,
+            strings: self.strings,
+            racket: self.racket,
+            impact,
+            numerics,
+            variants: Default::default(),
+        }
     }
 }
 

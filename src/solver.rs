@@ -26,7 +26,7 @@ use crate::error::{Error, Result};
 use crate::model::beam::{Beam, LoadPoint};
 use crate::model::contact::{Contact, ContactState, Phase};
 use crate::model::free::FreeVibration;
-use crate::params::{Params, Racket};
+use crate::params::{Grip, Params, Racket, StringLaw, Variants};
 
 /// Fraction of the stability limit used by the default time step.
 pub const DEFAULT_DT_FRACTION: f64 = 0.9;
@@ -58,6 +58,9 @@ pub struct ImpactResult {
     pub f_vib_peak_pe: f64,
     /// Kinetic energy of twist about the long axis.
     pub f_spin: f64,
+    /// Energy taken by the hand (`--grip hand`: its springs' energy plus what its dampers
+    /// dissipated) at separation; 0 for the paper's free racket.
+    pub f_hand: f64,
     /// Rigid-body kinetic energy of the racket (translation + rotation about the centre of mass).
     pub f_rigid: f64,
     /// Rebound kinetic energy of the ball (= e_a^2).
@@ -105,6 +108,8 @@ pub struct SeriesRow {
     pub pe_racket: f64,
     /// Kinetic energy of twist about the long axis.
     pub ke_spin: f64,
+    /// Energy in the hand's springs plus what its dampers dissipated (`--grip hand`).
+    pub hand: f64,
     /// Sum of the above (1 up to the integration error).
     pub total: f64,
 }
@@ -145,6 +150,9 @@ pub struct Model {
     pub time_limit_s: f64,
     /// The racket's modes (shared by every impact on the same racket).
     pub basis: Arc<Basis>,
+    /// The hand (`--grip hand`): stiffness (N/m) and damping (N s/m) at each node; empty for
+    /// the free racket.
+    hand: Vec<(f64, f64)>,
 }
 
 /// The discrete beam of one racket with its flexible modes: computed once per racket and
@@ -200,7 +208,13 @@ impl Model {
         params.validate()?;
         let basis = Basis::of(&params.racket, params.numerics.segments);
         let beam = basis.beam.clone();
-        let contact = Contact::new(&params.ball, &params.strings);
+        let mut contact = Contact::new(&params.ball, &params.strings);
+        let v = &params.variants;
+        if v.strings == StringLaw::Stiffening && v.string_stiffening > 0.0 {
+            let energy = 0.5 * params.ball.mass * params.impact.v1 * params.impact.v1;
+            contact = contact.with_stiffening(v.string_stiffening, v.stiffening_deflection, energy);
+        }
+        let hand = if v.grip == Grip::Hand { hand_per_node(&beam, v) } else { Vec::new() };
         let load = beam.load_point(params.impact.x, params.numerics.load);
         let f1_hz = basis.omega[0] / (2.0 * std::f64::consts::PI);
         // Weyl: the contact spring adds at most k_c |g|^2 to the largest eigenvalue, where g is
@@ -211,7 +225,9 @@ impl Model {
             + lp.weights[1].powi(2) / beam.mass[lp.nodes[1]]
             + params.impact.r.powi(2) / params.racket.ix;
         let lam_max = basis.lam.last().copied().unwrap_or(0.0);
-        let omega_max = (lam_max + contact.max_stiffness() * g2).sqrt();
+        // the hand adds at most its largest stiffness per mass to the top eigenvalue
+        let hand_max = hand.iter().zip(&beam.mass).map(|((k, _), m)| k / m).fold(0.0, f64::max);
+        let omega_max = (lam_max + hand_max + contact.max_stiffness() * g2).sqrt();
         let dt_limit = 2.0 / omega_max;
         let t_limit = time_limit(params, &contact);
         let dt = match params.numerics.dt {
@@ -248,7 +264,7 @@ impl Model {
             }
             return Err(Error::TooManySteps { steps, dt_s: dt, nodes: beam.nodes(), limit: MAX_NODE_STEPS });
         }
-        Ok(Model { params: *params, beam, contact, load, f1_hz, dt_limit, dt, time_limit_s: t_limit, basis })
+        Ok(Model { params: *params, beam, contact, load, f1_hz, dt_limit, dt, time_limit_s: t_limit, basis, hand })
     }
 
     /// Run the impact.
@@ -292,10 +308,11 @@ impl Model {
             Ledger {
                 ke_ball: 0.5 * mb * st.vb * st.vb,
                 pe_ball: self.contact.ball_energy_with_loss(phase, cs),
-                pe_string: self.contact.string_energy(cs.force),
+                pe_string: self.contact.string_energy(cs),
                 ke_racket: ke,
                 pe_racket: pe,
                 ke_spin: 0.5 * ix * st.om * st.om,
+                hand: st.hand_energy(&self.hand),
             }
         };
         let record = |rows: &mut Option<Vec<SeriesRow>>, t: f64, st: &Stepper, cs: &ContactState, l: &Ledger| {
@@ -316,6 +333,7 @@ impl Model {
             let yt = st.yb - (w0 * st.y[j0] + w1 * st.y[j1] + r * st.th);
             cs = self.contact.state(yt, phase, cs.guess())?;
             let (mut ke, mut mom) = st.kick(dt, cs.force, self);
+            mom += st.hand_impulse;
             let mut ytd = st.vb - (w0 * st.v[j0] + w1 * st.v[j1] + r * st.om);
             if phase == Phase::Compression && ytd <= 0.0 {
                 // The maximum of Y_T lies in this step: switch to the expansion law there.
@@ -328,7 +346,7 @@ impl Model {
                 st.correct_force(dt, cs.force - f_old, self);
                 ytd = st.vb - (w0 * st.v[j0] + w1 * st.v[j1] + r * st.om);
                 ke = beam.kinetic_energy(&st.v);
-                mom = beam.momentum(&st.v);
+                mom = beam.momentum(&st.v) + st.hand_impulse;
             }
             t += dt;
             step += 1;
@@ -355,9 +373,28 @@ impl Model {
         let f_vib = e_racket / e0 - f_rigid;
         let f_spin = 0.5 * ix * st.om * st.om / e0;
         let f_ball = self.contact.ball_loss(y0) / e0;
+        let f_hand = st.hand_energy(&self.hand) / e0;
         // the paper's window: two fundamental periods from the separation time itself
-        let t_post = (tau + 2.0 / self.f1_hz).max(series.map(|o| o.t_end).unwrap_or(0.0));
-        let (peak_pe, recontact) = self.after_impact(&st, t - tau, t_post - t);
+        let t_window = tau + 2.0 / self.f1_hz;
+        let t_post = t_window.max(series.map(|o| o.t_end).unwrap_or(0.0));
+        let (peak_pe, recontact) = if self.hand.is_empty() {
+            self.after_impact(&st, t - tau, t_post - t)
+        } else {
+            // a held racket is damped: no modal closed form, step it on
+            let mut s2 = Stepper { ..st.clone() };
+            let (mut peak, mut meets) = (beam.bending_energy(&s2.y), false);
+            let mut t2 = t;
+            while t2 < t_post {
+                let pe = s2.drift(dt, &beam.kappa);
+                s2.kick(dt, 0.0, self);
+                t2 += dt;
+                if t2 <= t_window {
+                    peak = peak.max(pe);
+                }
+                meets |= s2.yb - (w0 * s2.y[j0] + w1 * s2.y[j1] + r * s2.th) > 0.0;
+            }
+            (peak, meets)
+        };
         if energy_err > ENERGY_ERROR_LIMIT {
             return Err(Error::EnergyDrift { error: energy_err, limit: ENERGY_ERROR_LIMIT });
         }
@@ -369,6 +406,7 @@ impl Model {
             f_vib,
             f_vib_peak_pe: peak_pe / e0,
             f_spin,
+            f_hand,
             f_rigid,
             f_ke_ball: e_a * e_a,
             peak_force_n: peak_force,
@@ -443,6 +481,7 @@ impl ImpactResult {
             ("f_vib", self.f_vib),
             ("f_vib_peak_pe", self.f_vib_peak_pe),
             ("f_spin", self.f_spin),
+            ("f_hand", self.f_hand),
             ("f_rigid", self.f_rigid),
             ("f_ke_ball", self.f_ke_ball),
             ("peak_force_n", self.peak_force_n),
@@ -456,8 +495,11 @@ impl ImpactResult {
     }
 }
 
-/// Validate, prepare and run one impact with the solver the parameters name.
+/// Validate, prepare and run one impact with the solver (and model variant) the parameters name.
 pub fn simulate(params: &Params) -> Result<ImpactResult> {
+    if params.variants.frame == crate::params::Frame::Rigid {
+        return crate::model::rigid::impact(params);
+    }
     match params.numerics.solver {
         crate::params::SolverKind::Fd => Model::new(params)?.run(),
         crate::params::SolverKind::Modal => crate::modal::ModalModel::new(params)?.run(),
@@ -470,6 +512,7 @@ fn time_limit(p: &Params, contact: &Contact) -> f64 {
 }
 
 /// The state of the ball, the beam and the twist, with the bending-moment buffer.
+#[derive(Clone)]
 struct Stepper {
     yb: f64,
     vb: f64,
@@ -482,6 +525,10 @@ struct Stepper {
     al: f64,
     /// `moment[i + 1] = kappa_i c_i` for node i; zero padding at both ends.
     moment: Vec<f64>,
+    /// Energy dissipated by the hand's dampers so far, J.
+    hand_loss: f64,
+    /// Momentum given to the hand so far, kg m/s.
+    hand_impulse: f64,
 }
 
 impl Stepper {
@@ -498,7 +545,58 @@ impl Stepper {
             om: 0.0,
             al: 0.0,
             moment: vec![0.0; nodes + 2],
+            hand_loss: 0.0,
+            hand_impulse: 0.0,
         }
+    }
+
+    /// The half-kicks of the ball and of the twist under the contact force `f`.
+    fn kick_ball_and_twist(&mut self, half: f64, f: f64, model: &Model) {
+        let ab = -f / model.params.ball.mass;
+        self.vb += (self.ab + ab) * half;
+        self.ab = ab;
+        let al = f * model.params.impact.r / model.params.racket.ix;
+        self.om += (self.al + al) * half;
+        self.al = al;
+    }
+
+    /// Energy stored in the hand's springs plus what its dampers dissipated, J.
+    fn hand_energy(&self, hand: &[(f64, f64)]) -> f64 {
+        self.hand_loss + 0.5 * hand.iter().zip(&self.y).map(|((k, _), y)| k * y * y).sum::<f64>()
+    }
+
+    /// The kick with a hand: springs `-k y` at the new positions and dampers `-c v` taken
+    /// implicitly (trapezoidal in `v`, so any damping is stable), the damper loss and the hand's
+    /// impulse integrated by the trapezoidal rule.
+    fn kick_held(&mut self, dt: f64, f: f64, model: &Model) -> (f64, f64) {
+        let half = 0.5 * dt;
+        self.kick_ball_and_twist(half, f, model);
+        let basis = &model.basis;
+        let [j0, j1] = model.load.nodes;
+        let [w0, w1] = model.load.weights;
+        let (mut twice_ke, mut mom) = (0.0, 0.0);
+        for i in 0..self.y.len() {
+            let (k, c) = model.hand[i];
+            let im = basis.inv_mass[i];
+            let mut force = 2.0 * self.moment[i + 1] - self.moment[i] - self.moment[i + 2] - k * self.y[i];
+            if i == j0 {
+                force += w0 * f;
+            }
+            if i == j1 {
+                force += w1 * f;
+            }
+            let v_old = self.v[i];
+            let hand_old = -k * (self.y[i] - self.v[i] * dt - self.a[i] * half * dt) - c * v_old;
+            let v_new = (v_old + self.a[i] * half + force * im * half) / (1.0 + c * im * half);
+            self.a[i] = (force - c * v_new) * im;
+            self.v[i] = v_new;
+            self.hand_loss += half * c * (v_old * v_old + v_new * v_new);
+            self.hand_impulse -= half * (hand_old + (-k * self.y[i] - c * v_new));
+            let m = basis.beam.mass[i];
+            twice_ke += m * v_new * v_new;
+            mom += m * v_new;
+        }
+        (0.5 * twice_ke, mom)
     }
 
     /// Positions to the end of the step, `y += v dt + a dt^2 / 2`, then the bending moments
@@ -525,13 +623,11 @@ impl Stepper {
     /// half-kicks `v += (a_old + a_new) dt / 2`; returns the beam's kinetic energy (J) and
     /// momentum (kg m/s).
     fn kick(&mut self, dt: f64, f: f64, model: &Model) -> (f64, f64) {
+        if !model.hand.is_empty() {
+            return self.kick_held(dt, f, model);
+        }
         let half = 0.5 * dt;
-        let ab = -f / model.params.ball.mass;
-        self.vb += (self.ab + ab) * half;
-        self.ab = ab;
-        let al = f * model.params.impact.r / model.params.racket.ix;
-        self.om += (self.al + al) * half;
-        self.al = al;
+        self.kick_ball_and_twist(half, f, model);
         let basis = &model.basis;
         for (((v, a), w), im) in
             self.v.iter_mut().zip(self.a.iter_mut()).zip(self.moment.windows(3)).zip(&basis.inv_mass)
@@ -575,6 +671,24 @@ impl Stepper {
     }
 }
 
+/// The hand's stiffness and damping at each node: the totals spread over the grip length from
+/// the butt in proportion to each node's share of it (a node's share is the part of its half
+/// segments on either side that lies in the grip).
+fn hand_per_node(beam: &Beam, v: &Variants) -> Vec<(f64, f64)> {
+    let l = beam.x[beam.segments];
+    let start = l - v.grip_length;
+    let share: Vec<f64> = beam
+        .x
+        .iter()
+        .map(|&x| {
+            let (lo, hi) = ((x - 0.5 * beam.s).max(0.0), (x + 0.5 * beam.s).min(l));
+            (hi - lo.max(start)).max(0.0)
+        })
+        .collect();
+    let total: f64 = share.iter().sum();
+    share.iter().map(|w| (v.hand_stiffness * w / total, v.hand_damping * w / total)).collect()
+}
+
 /// The energy ledger at one instant, J.
 struct Ledger {
     ke_ball: f64,
@@ -583,11 +697,13 @@ struct Ledger {
     ke_racket: f64,
     pe_racket: f64,
     ke_spin: f64,
+    /// Hand springs plus hand damper loss.
+    hand: f64,
 }
 
 impl Ledger {
     fn total(&self) -> f64 {
-        self.ke_ball + self.pe_ball + self.pe_string + self.ke_racket + self.pe_racket + self.ke_spin
+        self.ke_ball + self.pe_ball + self.pe_string + self.ke_racket + self.pe_racket + self.ke_spin + self.hand
     }
 
     fn row(&self, t: f64, e0: f64, force: f64, yb: f64, yt: f64, th: f64) -> SeriesRow {
@@ -603,6 +719,7 @@ impl Ledger {
             ke_racket: self.ke_racket / e0,
             pe_racket: self.pe_racket / e0,
             ke_spin: self.ke_spin / e0,
+            hand: self.hand / e0,
             total: self.total() / e0,
         }
     }

@@ -25,6 +25,18 @@ fn check(id: &str) {
 }
 
 #[test]
+fn variant_rigid() {
+    check("variant_rigid");
+}
+#[test]
+fn variant_grip() {
+    check("variant_grip");
+}
+#[test]
+fn variant_strings() {
+    check("variant_strings");
+}
+#[test]
 fn concrete_drop() {
     check("concrete_drop");
 }

@@ -26,6 +26,7 @@ fn params() -> impl Strategy<Value = Params> {
                 load: if hat { LoadRule::Hat } else { LoadRule::Node },
                 ..Numerics::default()
             },
+            variants: Default::default(),
         })
 }
 

@@ -15,6 +15,7 @@
 //! | `fig9_stiff_frame` | Fig 9 | [`fig9_stiff_frame`] |
 //! | `speeds` | p. 5-6 and Conclusions: serve / forehand gains | [`speeds`] |
 //! | `convergence` | (ours) the paper's N = 39 node scheme against converged numerics | [`convergence`] |
+//! | `variant_rigid`, `variant_grip`, `variant_strings` | (ours) rigid frame, hand grip, stiffening strings against the paper's model | [`variants`] |
 //!
 //! All paper experiments use the paper's numerics (`node` load, N = 39) as SPEC.md asks;
 //! `convergence` shows what that costs.
@@ -51,6 +52,7 @@ pub mod fig78_off_axis;
 pub mod fig9_stiff_frame;
 pub mod modes;
 pub mod speeds;
+pub mod variants;
 
 /// A registered experiment.
 #[derive(Clone, Copy)]
@@ -88,6 +90,9 @@ pub fn registry() -> Vec<Experiment> {
         fig9_stiff_frame::EXPERIMENT,
         speeds::EXPERIMENT,
         convergence::EXPERIMENT,
+        variants::RIGID,
+        variants::GRIP,
+        variants::STRINGS,
     ]
 }
 

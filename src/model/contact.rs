@@ -41,6 +41,10 @@ pub struct Contact {
     alpha: f64,
     /// Series stiffness in compression `k1 k_s / (k1 + k_s)`, N/m.
     k_series: f64,
+    /// String stiffening `s / d^2`, 1/m^2 (0: the paper's linear strings).
+    stiffening: f64,
+    /// Upper bound of the string deflection over the impact, m (for the stiffness bound).
+    deflection_bound: f64,
 }
 
 /// The force and compressions at one total compression `Y_T`.
@@ -54,11 +58,14 @@ pub struct ContactState {
     pub u: f64,
     /// `u^p`, kept with `u` so the next solve starts without a power function.
     pub u_pow: f64,
+    /// String-plane deflection `Y_s`, m.
+    pub string_deflection: f64,
 }
 
 impl ContactState {
     /// No contact.
-    pub const ZERO: ContactState = ContactState { force: 0.0, ball_compression: 0.0, u: 0.0, u_pow: 0.0 };
+    pub const ZERO: ContactState =
+        ContactState { force: 0.0, ball_compression: 0.0, u: 0.0, u_pow: 0.0, string_deflection: 0.0 };
 
     /// The warm start `(u, u^p)` this state offers the next expansion solve.
     pub fn guess(&self) -> (f64, f64) {
@@ -70,7 +77,33 @@ impl Contact {
     /// The contact of a ball on a string bed.
     pub fn new(ball: &Ball, strings: &Strings) -> Self {
         let (k1, ks) = (ball.k1, strings.ks);
-        Contact { k1, ks, p: ball.p, alpha: k1 / ks, k_series: k1 * ks / (k1 + ks) }
+        Contact {
+            k1,
+            ks,
+            p: ball.p,
+            alpha: k1 / ks,
+            k_series: k1 * ks / (k1 + ks),
+            stiffening: 0.0,
+            deflection_bound: 0.0,
+        }
+    }
+
+    /// Strings that stiffen with deflection: `F = k_s Y_s (1 + s (Y_s/d)^2)`. `energy` (J) is the
+    /// incident kinetic energy, which bounds the string deflection by `sqrt(2 energy / k_s)`.
+    pub fn with_stiffening(mut self, s: f64, d: f64, energy: f64) -> Self {
+        self.stiffening = s / (d * d);
+        self.deflection_bound = (2.0 * energy / self.ks).sqrt();
+        self
+    }
+
+    /// String force at deflection `ys`, N.
+    fn string_force(&self, ys: f64) -> f64 {
+        self.ks * ys * (1.0 + self.stiffening * ys * ys)
+    }
+
+    /// `dF/dY_s`, N/m.
+    fn string_stiffness(&self, ys: f64) -> f64 {
+        self.ks * (1.0 + 3.0 * self.stiffening * ys * ys)
     }
 
     /// Series stiffness in the compression phase, N/m.
@@ -82,12 +115,62 @@ impl Contact {
     /// compression in expansion (`p k1`), in series with `k_s`. Used for the stability limit.
     pub fn max_stiffness(&self) -> f64 {
         let kb = self.p * self.k1;
-        kb * self.ks / (kb + self.ks)
+        let ks = self.string_stiffness(self.deflection_bound);
+        kb * ks / (kb + ks)
     }
 
     /// Maximum ball compression for a maximum total compression `yt_max` (Eq 9), m.
     pub fn ball_compression_at_max(&self, yt_max: f64) -> f64 {
+        if self.stiffening > 0.0 {
+            return self.string_force(self.stiffening_compression(yt_max)) / self.k1;
+        }
         self.ks * yt_max / (self.k1 + self.ks)
+    }
+
+    /// Stiffening strings, compression: the string deflection with `Y_s + F(Y_s)/k1 = Y_T`
+    /// (increasing and convex in `Y_s`; Newton from the linear solution, an upper bound).
+    fn stiffening_compression(&self, yt: f64) -> f64 {
+        let mut ys = yt * self.k1 / (self.k1 + self.ks);
+        for _ in 0..100 {
+            let g = ys + self.string_force(ys) / self.k1 - yt;
+            let step = g / (1.0 + self.string_stiffness(ys) / self.k1);
+            ys = (ys - step).max(0.0);
+            if step.abs() <= 4.0 * f64::EPSILON * ys {
+                break;
+            }
+        }
+        ys
+    }
+
+    /// Stiffening strings, expansion: the string deflection with
+    /// `Y_s + Y0 (F(Y_s) / (k1 Y0))^(1/p) = Y_T`, by Newton safeguarded with bisection on
+    /// `[0, Y_T]` (the left side increases from 0).
+    fn stiffening_expansion(&self, yt: f64, y0: f64, guess: f64) -> f64 {
+        let g = |ys: f64| ys + y0 * (self.string_force(ys) / (self.k1 * y0)).powf(1.0 / self.p) - yt;
+        let (mut lo, mut hi) = (0.0, yt);
+        let mut ys = if guess > 0.0 && guess < yt { guess } else { 0.5 * yt };
+        for _ in 0..200 {
+            let gy = g(ys);
+            if gy > 0.0 {
+                hi = ys;
+            } else {
+                lo = ys;
+            }
+            let f = self.string_force(ys);
+            let slope = 1.0
+                + y0 / self.p * (f / (self.k1 * y0)).powf(1.0 / self.p - 1.0) * self.string_stiffness(ys)
+                    / (self.k1 * y0);
+            let mut next = ys - gy / slope;
+            if !(next > lo && next < hi && next.is_finite()) {
+                next = 0.5 * (lo + hi);
+            }
+            if (next - ys).abs() <= 4.0 * f64::EPSILON * ys.max(f64::MIN_POSITIVE) || hi - lo <= 4.0 * f64::EPSILON * hi
+            {
+                return next;
+            }
+            ys = next;
+        }
+        ys
     }
 
     /// Force and compressions at total compression `yt` in the given phase. `guess` is the
@@ -97,15 +180,50 @@ impl Contact {
         if yt <= 0.0 {
             return Ok(ContactState::ZERO);
         }
+        if self.stiffening > 0.0 {
+            return Ok(self.stiffening_state(yt, phase, guess));
+        }
         match phase {
             Phase::Compression => {
                 let force = self.k_series * yt;
-                Ok(ContactState { force, ball_compression: force / self.k1, u: 0.0, u_pow: 0.0 })
+                let ball_compression = force / self.k1;
+                Ok(ContactState {
+                    force,
+                    ball_compression,
+                    u: 0.0,
+                    u_pow: 0.0,
+                    string_deflection: yt - ball_compression,
+                })
             }
             Phase::Expansion { y0 } => {
                 let z = yt / y0;
                 let (u, up) = solve_u(self.alpha, self.p, z, guess)?;
-                Ok(ContactState { force: self.k1 * y0 * up, ball_compression: u * y0, u, u_pow: up })
+                let ball_compression = u * y0;
+                Ok(ContactState {
+                    force: self.k1 * y0 * up,
+                    ball_compression,
+                    u,
+                    u_pow: up,
+                    string_deflection: yt - ball_compression,
+                })
+            }
+        }
+    }
+
+    /// [`Contact::state`] for stiffening strings (`guess.0` is the previous `u`).
+    fn stiffening_state(&self, yt: f64, phase: Phase, guess: (f64, f64)) -> ContactState {
+        match phase {
+            Phase::Compression => {
+                let ys = self.stiffening_compression(yt);
+                let force = self.string_force(ys);
+                ContactState { force, ball_compression: force / self.k1, u: 0.0, u_pow: 0.0, string_deflection: ys }
+            }
+            Phase::Expansion { y0 } => {
+                let ys = self.stiffening_expansion(yt, y0, yt - guess.0 * y0);
+                let force = self.string_force(ys);
+                let u_pow = force / (self.k1 * y0);
+                let u = (yt - ys) / y0;
+                ContactState { force, ball_compression: u * y0, u, u_pow, string_deflection: ys }
             }
         }
     }
@@ -122,9 +240,14 @@ impl Contact {
         }
     }
 
-    /// Elastic energy of the strings `F^2 / (2 k_s)`, J.
-    pub fn string_energy(&self, force: f64) -> f64 {
-        force * force / (2.0 * self.ks)
+    /// Elastic energy of the strings, J: `F^2 / (2 k_s)` for linear strings,
+    /// `k_s (Y_s^2 / 2 + (s/d^2) Y_s^4 / 4)` for stiffening ones.
+    pub fn string_energy(&self, st: &ContactState) -> f64 {
+        if self.stiffening > 0.0 {
+            let y2 = st.string_deflection * st.string_deflection;
+            return self.ks * y2 * (0.5 + 0.25 * self.stiffening * y2);
+        }
+        st.force * st.force / (2.0 * self.ks)
     }
 
     /// Energy dissipated in the ball over a whole impact with maximum compression `y0` (Eq 11), J.

@@ -4,3 +4,4 @@ pub mod beam;
 pub mod contact;
 pub mod free;
 pub mod reduced;
+pub mod rigid;
