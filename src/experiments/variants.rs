@@ -82,8 +82,8 @@ fn chart_rigid(t: &Table) -> Chart {
         y2_label: Some("impact duration tau (ms)".into()),
         x_log: false,
         x_range: Some((0.0, 71.0)),
-        y_range: Some((-0.1, 0.8)),
-        y2_range: Some((0.0, 8.0)),
+        y_range: Some((-0.1, 0.9)),
+        y2_range: Some((0.0, 9.0)),
         curves: vec![
             line("e_A, flexible beam (the paper)", x.clone(), col(t, "e_a_beam"), 0),
             styled(line("e_A, rigid racket", x.clone(), col(t, "e_a_rigid"), 4), LineStyle::Dashed),
@@ -149,8 +149,8 @@ fn chart_grip(t: &Table) -> Chart {
         y_label: "e_A".into(),
         y2_label: Some("time (ms)".into()),
         x_log: false,
-        x_range: Some((0.0, 71.0)),
-        y_range: Some((-0.1, 0.6)),
+        x_range: Some((0.0, 56.0)),
+        y_range: Some((-0.1, 0.9)),
         y2_range: Some((0.0, 12.0)),
         curves: vec![
             line("e_A free (the paper)", x.clone(), col(t, "e_a_free"), 0),
@@ -225,7 +225,7 @@ fn chart_strings(t: &Table) -> Chart {
         y2_label: None,
         x_log: false,
         x_range: Some((0.0, 62.0)),
-        y_range: None,
+        y_range: Some((0.40, 0.48)),
         y2_range: None,
         curves: vec![
             line("linear, ks 2e4", v.clone(), col(t, "e_a_linear_2e4"), 0),
