@@ -647,18 +647,19 @@ fn speed(a: SpeedArgs) -> Result<()> {
                 u = a.unit.label()
             );
             s.push_str(&format!(
-                "{:<22} {:>7} {:>6} {:>9} {:>8} {:>8} {:>12} {:>9}\n",
-                "variant", "x cm", "r cm", "ks N/m", "e_A", "tau ms", "ball out", "change"
+                "{:<22} {:>7} {:>6} {:>9} {:>8} {:>8} {:>9} {:>12} {:>9}\n",
+                "variant", "x cm", "r cm", "ks N/m", "e_A", "tau ms", "theta deg", "ball out", "change"
             ));
             for (label, p, r, v_out) in &rows {
                 s.push_str(&format!(
-                    "{:<22} {:>7.1} {:>6.1} {:>9.0} {:>8.4} {:>8.3} {:>7.1} {:<4} {:>+8.2} %\n",
+                    "{:<22} {:>7.1} {:>6.1} {:>9.0} {:>8.4} {:>8.3} {:>9.2} {:>7.1} {:<4} {:>+8.2} %\n",
                     label,
                     100.0 * p.impact.x,
                     100.0 * p.impact.r,
                     p.strings.ks,
                     r.e_a,
                     1e3 * r.tau_s,
+                    r.theta_end_deg,
                     v_out / unit,
                     a.unit.label(),
                     100.0 * (v_out / v_ref - 1.0)
