@@ -2,13 +2,19 @@
 //!
 //! The free-free beam is written in its mass-normalised modes (rigid translation and rotation
 //! about the centre of mass exactly, flexible modes from the nalgebra eigen-decomposition of
-//! `M^-1/2 K M^-1/2`); the twist (Eq 7) and the ball (Eq 1) are rigid coordinates. Over one step
-//! the contact force is taken linear in time, and every coordinate is then advanced *exactly*:
+//! `M^-1/2 K M^-1/2`); the twist (Eq 7) and the ball (Eq 1) are rigid coordinates. Over the
+//! first step the contact force is taken linear in time, and every coordinate is then advanced
+//! *exactly*:
 //! ```text
 //! flexible   q'' + w^2 q = g F(t):  q(h) = c (q0 - g F0/w^2) + (s/w)(v0 - g F'/w^2) + g F1/w^2
 //! rigid      q'' = g F(t):          q(h) = q0 + v0 h + g h^2 (F0/3 + F1/6)
 //! ```
 //! (`c, s = cos, sin(w h)`, `F' = (F1 - F0)/h`, `g` the mode's amplitude at the load point).
+//! After the first step the force is taken as the parabola through the previous, current and end
+//! forces, `F(t) = F0 + b t + c t^2` with `b = (F1 - Fm)/(2h)`, `c = (F1 - 2 F0 + Fm)/(2h^2)`,
+//! and each mode is advanced exactly under it (particular solution `(g/w^2)(F - 2c/w^2)` plus free
+//! oscillation); this third-order force history lets the step be twice as long as with a
+//! linear one at the same accuracy.
 //! Only modes below a cut-off are kept; the flexibility of the others at the load point is added
 //! as a static correction `Y_T -= R F`. `Y_T(h)` is then affine in the unknown end force,
 //! `Y_T = A - B F1`, so the implicit step is one scalar solve with the contact law: linear in
@@ -26,7 +32,7 @@ use crate::solver::{hermite_eval, hermite_max, hermite_root, ImpactResult, Model
 /// Keep flexible modes up to this multiple of the stiffest contact frequency.
 pub const MODE_CUTOFF: f64 = 100.0;
 /// Radians of the stiffest contact oscillation per step.
-pub const PHASE_PER_STEP: f64 = 0.005;
+pub const PHASE_PER_STEP: f64 = 0.01;
 
 /// A prepared modal model of one impact.
 #[derive(Debug, Clone)]
@@ -38,17 +44,55 @@ pub struct ModalModel {
     g: Vec<f64>,
     cos: Vec<f64>,
     sin: Vec<f64>,
-    /// d q(h) / d F1 and d q'(h) / d F1 of each retained mode.
-    resp_q: Vec<f64>,
-    resp_v: Vec<f64>,
+    /// The first step's force history (a line from 0) and every later one's (a parabola
+    /// through the previous, the current and the end force).
+    first: Scheme,
+    later: Scheme,
     /// Load-point amplitudes of the rigid coordinates: translation, rotation, twist.
     g_rigid: [f64; 3],
     /// Static flexibility of the truncated modes at the load point, m/N.
     residual: f64,
-    /// Compliance `B` of `Y_T(h) = A - B F1`, m/N.
-    compliance: f64,
     /// Step, s.
     h: f64,
+}
+
+/// How the force varies over a step: `F(t) = F0 + b t + c t^2` on `[0, h]` with
+/// `b = b0 + b1 F1` and `c = c0 + c1 F1` (`b0, c0` from the known forces), so that the end state
+/// is affine in the unknown end force `F1`.
+#[derive(Debug, Clone)]
+struct Scheme {
+    /// `b1` (1/s) and `c1` (1/s^2).
+    b1: f64,
+    c1: f64,
+    /// End-state response to `F1`: flexible modes (position, velocity), and per unit amplitude
+    /// `g` for the rigid coordinates (and, with `g = -1/m_b`, the ball).
+    resp_q: Vec<f64>,
+    resp_v: Vec<f64>,
+    rigid_q: f64,
+    rigid_v: f64,
+    /// Compliance `B` of `Y_T(h) = A - B F1`, m/N.
+    compliance: f64,
+}
+
+impl Scheme {
+    /// The response of a step to `F1` through `b1, c1`, from the exact solution of
+    /// `q'' + w^2 q = g (F0 + b t + c t^2)`: the particular solution is
+    /// `(g/w^2) (F(t) - 2c/w^2)` and the rest is free oscillation.
+    fn new(b1: f64, c1: f64, h: f64, m: &ModalModel, mb: f64) -> Scheme {
+        let mut resp_q = Vec::with_capacity(m.lam.len());
+        let mut resp_v = Vec::with_capacity(m.lam.len());
+        for k in 0..m.lam.len() {
+            let (l, w, g, c, s) = (m.lam[k], m.omega[k], m.g[k], m.cos[k], m.sin[k]);
+            resp_q.push(g / l * (b1 * h + c1 * h * h - 2.0 * c1 / l * (1.0 - c) - s / w * b1));
+            resp_v.push(g / l * (b1 * (1.0 - c) + 2.0 * c1 * (h - s / w)));
+        }
+        let rigid_q = b1 * h.powi(3) / 6.0 + c1 * h.powi(4) / 12.0;
+        let rigid_v = b1 * h * h / 2.0 + c1 * h.powi(3) / 3.0;
+        let g2_rigid: f64 = m.g_rigid.iter().map(|g| g * g).sum();
+        let flexible: f64 = m.g.iter().zip(&resp_q).map(|(g, r)| g * r).sum();
+        let compliance = rigid_q / mb + g2_rigid * rigid_q + m.residual + flexible;
+        Scheme { b1, c1, resp_q, resp_v, rigid_q, rigid_v, compliance }
+    }
 }
 
 impl ModalModel {
@@ -82,27 +126,26 @@ impl ModalModel {
                 residual += gk * gk / l;
             }
         }
-        let mut compliance = h * h / (6.0 * params.ball.mass) + g2_rigid * h * h / 6.0 + residual;
-        for k in 0..lam.len() {
-            compliance += g[k] * g[k] / lam[k] * (1.0 - sin[k] / (omega[k] * h));
-        }
-        // response of the end-of-step state to the end force F1 (the state is affine in F1)
-        let resp_q = (0..lam.len()).map(|k| g[k] / lam[k] * (1.0 - sin[k] / (omega[k] * h))).collect();
-        let resp_v = (0..lam.len()).map(|k| g[k] / (lam[k] * h) * (1.0 - cos[k])).collect();
-        Ok(ModalModel {
+        let empty =
+            Scheme { b1: 0.0, c1: 0.0, resp_q: vec![], resp_v: vec![], rigid_q: 0.0, rigid_v: 0.0, compliance: 0.0 };
+        let mut m = ModalModel {
             base,
             lam,
             omega,
             g,
             cos,
             sin,
-            resp_q,
-            resp_v,
+            first: empty.clone(),
+            later: empty,
             g_rigid: [g_t, g_r, g_tw],
             residual,
-            compliance,
             h,
-        })
+        };
+        let mb = params.ball.mass;
+        // first step: F rises linearly from 0; later: b = (F1 - Fm)/(2h), c = (F1 - 2 F0 + Fm)/(2 h^2)
+        m.first = Scheme::new(1.0 / h, 0.0, h, &m, mb);
+        m.later = Scheme::new(0.5 / h, 0.5 / (h * h), h, &m, mb);
+        Ok(m)
     }
 
     /// Number of retained flexible modes.
@@ -128,7 +171,7 @@ impl ModalModel {
         let mut s = State { yb: 0.0, vb: v1, rq: [0.0; 3], rv: [0.0; 3], q: vec![0.0; kmodes], v: vec![0.0; kmodes] };
         let mut next = s.clone();
         let mut phase = Phase::Compression;
-        let (mut f0, mut t, mut yt0, mut ytd0) = (0.0, 0.0, 0.0, v1);
+        let (mut f0, mut fm, mut t, mut yt0, mut ytd0) = (0.0, 0.0, 0.0, 0.0, v1);
         let (mut u, mut y0, mut t_max) = ((0.0, 0.0), 0.0, 0.0);
         let (mut peak_force, mut energy_err, mut momentum_err): (f64, f64, f64) = (0.0, 0.0, 0.0);
         let alpha = c.k1 / c.ks;
@@ -139,15 +182,23 @@ impl ModalModel {
             if t > limit {
                 return Err(Error::ImpactDidNotEnd { limit_s: limit });
             }
-            // A = Y_T(h) with F1 = 0
-            let a = self.advance(&s, f0, 0.0, &mut next);
-            let f1 = match phase {
-                Phase::Compression => (k_series * a / (1.0 + k_series * self.compliance)).max(0.0),
-                Phase::Expansion { y0 } => self.expansion_force(c, alpha, y0, a, &mut u)?,
+            // the force history of this step, less its end-force part: F0 + b0 t + c0 t^2
+            let (scheme, b0, c0) = if t == 0.0 {
+                (&self.first, -f0 / h, 0.0)
+            } else {
+                (&self.later, -fm / (2.0 * h), (fm - 2.0 * f0) / (2.0 * h * h))
             };
-            self.add_end_force(&mut next, f1);
-            let mut yt1 = a - self.compliance * f1;
-            let mut ytd1 = self.yt_rate(&next, (f1 - f0) / h);
+            let rate_at_end = |f1: f64| b0 + scheme.b1 * f1 + 2.0 * h * (c0 + scheme.c1 * f1);
+            // A = Y_T(h) with F1 = 0
+            let a = self.advance(&s, f0, b0, c0, &mut next);
+            let bc = scheme.compliance;
+            let f1 = match phase {
+                Phase::Compression => (k_series * a / (1.0 + k_series * bc)).max(0.0),
+                Phase::Expansion { y0 } => self.expansion_force(c, alpha, y0, a, bc, &mut u)?,
+            };
+            self.add_end_force(scheme, &mut next, f1);
+            let mut yt1 = a - bc * f1;
+            let mut ytd1 = self.yt_rate(&next, rate_at_end(f1));
             let mut f_end = f1;
             if phase == Phase::Compression && ytd1 <= 0.0 {
                 let (sm, ytm) = hermite_max(yt0, ytd0, yt1, ytd1, h);
@@ -155,10 +206,10 @@ impl ModalModel {
                 y0 = c.ball_compression_at_max(ytm);
                 phase = Phase::Expansion { y0 };
                 u = (1.0, 1.0);
-                f_end = self.expansion_force(c, alpha, y0, a, &mut u)?;
-                self.add_end_force(&mut next, f_end - f1);
-                yt1 = a - self.compliance * f_end;
-                ytd1 = self.yt_rate(&next, (f_end - f0) / h);
+                f_end = self.expansion_force(c, alpha, y0, a, bc, &mut u)?;
+                self.add_end_force(scheme, &mut next, f_end - f1);
+                yt1 = a - bc * f_end;
+                ytd1 = self.yt_rate(&next, rate_at_end(f_end));
             }
             std::mem::swap(&mut s, &mut next);
             t += h;
@@ -175,6 +226,7 @@ impl ModalModel {
                 let theta = hermite_eval(next.rq[2], next.rv[2], s.rq[2], s.rv[2], h, sc) / p.racket.ix.sqrt();
                 return self.finish(&s, t - tau, y0, tau, theta, t_max, peak_force, energy_err, momentum_err);
             }
+            fm = f0;
             f0 = f_end;
             yt0 = yt1;
             ytd0 = ytd1;
@@ -182,51 +234,56 @@ impl ModalModel {
     }
 
     /// The end force of a step in expansion, from `Y_T(h) = A - B F1` and Eq 10.
-    fn expansion_force(&self, c: &Contact, alpha: f64, y0: f64, a: f64, u: &mut (f64, f64)) -> Result<f64> {
+    fn expansion_force(&self, c: &Contact, alpha: f64, y0: f64, a: f64, b: f64, u: &mut (f64, f64)) -> Result<f64> {
         if a <= 0.0 {
             *u = (0.0, 0.0);
             return Ok(0.0);
         }
-        *u = solve_u(alpha + self.compliance * c.k1, c.p, a / y0, *u)?;
+        *u = solve_u(alpha + b * c.k1, c.p, a / y0, *u)?;
         Ok(c.k1 * y0 * u.1)
     }
 
-    /// Advance `s` over one step with the force going linearly from `f0` to `f1` into `out`;
-    /// returns `Y_T` at the end of the step.
-    fn advance(&self, s: &State, f0: f64, f1: f64, out: &mut State) -> f64 {
+    /// Advance `s` over one step with the force `F0 + b t + c t^2` into `out` (exactly, mode by
+    /// mode); returns `Y_T` at the end of the step.
+    fn advance(&self, s: &State, f0: f64, b: f64, c: f64, out: &mut State) -> f64 {
         let h = self.h;
         let mb = self.base.params.ball.mass;
-        let fdot = (f1 - f0) / h;
-        out.yb = s.yb + s.vb * h - h * h * (f0 / 3.0 + f1 / 6.0) / mb;
-        out.vb = s.vb - h * (f0 + f1) / (2.0 * mb);
+        let (h2, h3, h4) = (h * h, h * h * h, h * h * h * h);
+        let dq = f0 * h2 / 2.0 + b * h3 / 6.0 + c * h4 / 12.0;
+        let dv = f0 * h + b * h2 / 2.0 + c * h3 / 3.0;
+        out.yb = s.yb + s.vb * h - dq / mb;
+        out.vb = s.vb - dv / mb;
         let mut y_imp = 0.0;
         for i in 0..3 {
             let g = self.g_rigid[i];
-            out.rq[i] = s.rq[i] + s.rv[i] * h + g * h * h * (f0 / 3.0 + f1 / 6.0);
-            out.rv[i] = s.rv[i] + g * h * (f0 + f1) / 2.0;
+            out.rq[i] = s.rq[i] + s.rv[i] * h + g * dq;
+            out.rv[i] = s.rv[i] + g * dv;
             y_imp += g * out.rq[i];
         }
+        let fh = f0 + b * h + c * h2;
         for k in 0..self.lam.len() {
-            let (l, w, g, c, sn) = (self.lam[k], self.omega[k], self.g[k], self.cos[k], self.sin[k]);
-            let qh = s.q[k] - g * f0 / l;
-            let vh = s.v[k] - g * fdot / l;
-            out.q[k] = c * qh + sn / w * vh + g * f1 / l;
-            out.v[k] = -w * sn * qh + c * vh + g * fdot / l;
+            let (l, w, g, cs, sn) = (self.lam[k], self.omega[k], self.g[k], self.cos[k], self.sin[k]);
+            let gl = g / l;
+            let (qp0, vp0) = (gl * (f0 - 2.0 * c / l), gl * b);
+            let (qph, vph) = (gl * (fh - 2.0 * c / l), gl * (b + 2.0 * c * h));
+            let (qh, vh) = (s.q[k] - qp0, s.v[k] - vp0);
+            out.q[k] = qph + cs * qh + sn / w * vh;
+            out.v[k] = vph - w * sn * qh + cs * vh;
             y_imp += g * out.q[k];
         }
-        out.yb - y_imp - self.residual * f1
+        out.yb - y_imp - self.residual * fh
     }
 
     /// Add `df` to the end force of a step already advanced (`Y_T` changes by `-B df`).
-    fn add_end_force(&self, out: &mut State, df: f64) {
-        let (h, mb) = (self.h, self.base.params.ball.mass);
-        out.yb -= h * h * df / (6.0 * mb);
-        out.vb -= h * df / (2.0 * mb);
+    fn add_end_force(&self, scheme: &Scheme, out: &mut State, df: f64) {
+        let mb = self.base.params.ball.mass;
+        out.yb -= scheme.rigid_q * df / mb;
+        out.vb -= scheme.rigid_v * df / mb;
         for i in 0..3 {
-            out.rq[i] += self.g_rigid[i] * h * h * df / 6.0;
-            out.rv[i] += self.g_rigid[i] * h * df / 2.0;
+            out.rq[i] += self.g_rigid[i] * scheme.rigid_q * df;
+            out.rv[i] += self.g_rigid[i] * scheme.rigid_v * df;
         }
-        for ((q, v), (rq, rv)) in out.q.iter_mut().zip(out.v.iter_mut()).zip(self.resp_q.iter().zip(&self.resp_v)) {
+        for ((q, v), (rq, rv)) in out.q.iter_mut().zip(out.v.iter_mut()).zip(scheme.resp_q.iter().zip(&scheme.resp_v)) {
             *q += rq * df;
             *v += rv * df;
         }
