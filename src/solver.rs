@@ -671,6 +671,21 @@ impl Stepper {
     }
 }
 
+/// The damping ratio the hand gives flexible mode `k` (1 = fundamental) of the racket, from
+/// the hand's dampers projected on the mode: `zeta_k = phi_k^T C phi_k / (2 omega_k)` with
+/// mass-normalised `phi_k` (the modal damping of a lightly damped mode). 0 without a hand.
+pub fn hand_damping_ratio(params: &Params, k: usize) -> f64 {
+    if params.variants.grip != Grip::Hand || k == 0 {
+        return 0.0;
+    }
+    let basis = Basis::of(&params.racket, params.numerics.segments);
+    let (Some(phi), Some(w)) = (basis.shapes.get(k - 1), basis.omega.get(k - 1)) else {
+        return 0.0;
+    };
+    let hand = hand_per_node(&basis.beam, &params.variants);
+    hand.iter().zip(phi).map(|((_, c), f)| c * f * f).sum::<f64>() / (2.0 * w)
+}
+
 /// The hand's stiffness and damping at each node: the totals spread over the grip length from
 /// the butt in proportion to each node's share of it (a node's share is the part of its half
 /// segments on either side that lies in the grip).

@@ -144,7 +144,14 @@ fn wave_return(p: &Params, distance: f64, tau: f64) -> f64 {
 fn chart_grip(t: &Table) -> Chart {
     let x = scaled(col(t, "x_m"), 100.0);
     Chart {
-        title: "Hand-held vs free racket, ks 4e4 N/m, r 0 (hand: 15 cm grip)".into(),
+        title: format!(
+            "Hand-held vs free racket, ks 4e4 N/m, r 0 (hand: 15 cm grip, mode-1 damping {:.1} %)",
+            100.0 * {
+                let mut p = paper_params(0.0, KS);
+                p.variants.grip = Grip::Hand;
+                crate::solver::hand_damping_ratio(&p, 1)
+            }
+        ),
         x_label: "impact distance from the tip x (cm)".into(),
         y_label: "e_A".into(),
         y2_label: Some("time (ms)".into()),
