@@ -15,8 +15,13 @@ test:
 	$(CARGO) test --locked --doc
 	$(CARGO) nextest run --locked --no-fail-fast
 
+# The string-face maps (CSV + PNG + JSON each; tests/map.rs checks the committed ones against
+# these lines).
 figures: build
 	$(BIN) figures --out figures
+	$(BIN) map --racket paper-125hz --load node --quantity power --out figures/map_paper_power.csv
+	$(BIN) map --racket tweener --quantity power --out figures/map_tweener_power.csv
+	$(BIN) map --racket tweener --quantity power --compare-tension-lb 50,60 --out figures/map_tweener_50_vs_60lb.csv
 	$(BIN) report
 
 report: build

@@ -51,7 +51,9 @@
 
 pub mod error;
 pub mod experiments;
+pub mod heatmap;
 pub mod io;
+pub mod map;
 pub mod modal;
 pub mod model;
 pub mod output;

@@ -7,6 +7,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+use racket_impact::map::Quantity;
 use racket_impact::model::beam::Beam;
 use racket_impact::params::{Overrides, Params};
 use racket_impact::racket::Fitted;
@@ -46,6 +47,44 @@ enum Command {
     /// Keys: x r ks ei mass length ix half-width mb k1 p v1 segments load dt.
     /// Example: racket-impact sweep --out s.csv --x 0.02:0.60:50 --ks 2e4,4e4 --load node
     Sweep(SweepArgs),
+    /// Map a quantity over the string face: one impact per grid point, as CSV, PNG and JSON
+    ///
+    /// Runs an impact at every point of an nx x nr grid over the string face (the racket's head
+    /// ellipse; for a racket without one, such as the paper's, a 32 cm ellipse from the tip,
+    /// 2 half-width wide, centred 16 cm from the tip at the paper's mode-1 node) and writes the table (--out, default
+    /// map_<quantity>.csv, or map_<quantity>_diff.csv for a comparison), the heat map (same
+    /// stem, .png) and metadata (same stem, .json: the full parameters, the mode-1 node, the
+    /// point of maximum e_A). Every parameter flag and --config apply to every point, except the
+    /// impact position: --x and --r are rejected (the grid chooses the points), and x and r in
+    /// a --config file are ignored. --format selects what is printed: a text summary, the JSON
+    /// metadata or the CSV table. Example: racket-impact map --racket tweener --quantity power
+    /// --compare-tension-lb 50,60
+    Map(MapArgs),
+}
+
+#[derive(Args, Debug)]
+struct MapArgs {
+    #[command(flatten)]
+    common: Common,
+    /// The quantity shown in the heat map (the CSV has every one)
+    #[arg(long, value_enum, default_value_t = Quantity::Power)]
+    quantity: Quantity,
+    /// Grid points along the racket, from the tip to the end of the face (2..=401)
+    #[arg(long, default_value_t = 41, allow_hyphen_values = true)]
+    nx: usize,
+    /// Grid points across the face, from -half-width to +half-width (2..=401)
+    #[arg(long, default_value_t = 21, allow_hyphen_values = true)]
+    nr: usize,
+    /// Output CSV; the PNG and JSON go next to it with the same stem
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Difference map against this racket (file or preset): B - A with A = --racket
+    #[arg(long, conflicts_with = "compare_tension_lb")]
+    compare_racket: Option<String>,
+    /// Difference map between string tensions, lb: T (A = the configuration as given, B = at T)
+    /// or T1,T2 (A at T1, B at T2); k_s = 4e4 N/m * T / 60 lb
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    compare_tension_lb: Vec<f64>,
 }
 
 #[derive(Args, Debug)]
@@ -230,6 +269,7 @@ fn main() -> ExitCode {
         Command::Racket(a) => racket_cmd(a),
         Command::Speed(a) => speed(a),
         Command::Sweep(a) => sweep(a),
+        Command::Map(a) => map(a),
     };
     match outcome {
         Ok(()) => ExitCode::SUCCESS,
@@ -670,4 +710,261 @@ fn speed(a: SpeedArgs) -> Result<()> {
     };
     print!("{text}");
     Ok(())
+}
+
+/// The configuration of a map: as [`resolve`], with the impact position taken out of the
+/// flags (rejected) and the config file (ignored); the grid sets it.
+fn map_params(racket: Option<&str>, common: &Common) -> Result<Params> {
+    if let Some(x) = common.overrides.x {
+        return Err(Error::invalid("x", x, "a map chooses the impact points itself: give --nx/--nr, not --x"));
+    }
+    if let Some(r) = common.overrides.r {
+        return Err(Error::invalid("r", r, "a map chooses the impact points itself: give --nx/--nr, not --r"));
+    }
+    let mut config = match &common.config {
+        Some(path) => Overrides::from_toml_file(path)?,
+        None => Overrides::default(),
+    };
+    // an on-axis point at the tip is valid on every face; the grid replaces it
+    config.x = Some(0.0);
+    config.r = Some(0.0);
+    let spec = racket.map(racket_impact::racket::load).transpose()?;
+    Ok(racket_impact::racket::resolve(spec.as_ref(), &common.overrides.clone().or(config))?.0)
+}
+
+/// A racket argument as a short name: a preset as is, a file by its stem.
+fn racket_label(arg: Option<&str>) -> String {
+    match arg {
+        None => "paper racket".to_string(),
+        Some(a) if racket_impact::racket::preset_names().contains(&a) => a.to_string(),
+        Some(a) => std::path::Path::new(a).file_stem().and_then(|s| s.to_str()).unwrap_or(a).to_string(),
+    }
+}
+
+/// What the metadata's parameters mean for the impact point.
+const IMPACT_NOTE: &str =
+    "params.impact.x and params.impact.r are the face centre; each grid point moves the impact there";
+
+fn map(a: MapArgs) -> Result<()> {
+    use racket_impact::map::{config_metadata, DiffMap, FaceMap, Outputs, MAX_GRID, MIN_GRID};
+    use racket_impact::params::ks_from_tension_lb;
+    use std::io::IsTerminal;
+    for (field, n) in [("nx", a.nx), ("nr", a.nr)] {
+        if !(MIN_GRID..=MAX_GRID).contains(&n) {
+            return Err(Error::invalid(
+                field,
+                n,
+                format!("grid points must satisfy {MIN_GRID} <= {field} <= {MAX_GRID}"),
+            ));
+        }
+    }
+    if a.compare_racket.is_some() && !a.compare_tension_lb.is_empty() {
+        return Err(Error::invalid(
+            "compare-tension-lb",
+            "(with --compare-racket)",
+            "compare either tensions or rackets, not both",
+        ));
+    }
+    if a.compare_tension_lb.len() > 2 {
+        return Err(Error::invalid(
+            "compare-tension-lb",
+            a.compare_tension_lb.iter().map(f64::to_string).collect::<Vec<_>>().join(","),
+            "give one tension T (the configuration against T) or two, T1,T2",
+        ));
+    }
+    for &t in &a.compare_tension_lb {
+        if !(t.is_finite() && t > 0.0 && t <= 200.0) {
+            return Err(Error::invalid("compare-tension-lb", t, "tension must satisfy 0 < T <= 200 lb"));
+        }
+    }
+    let diff = a.compare_racket.is_some() || !a.compare_tension_lb.is_empty();
+    let out = a
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from(format!("map_{}{}.csv", a.quantity.name(), if diff { "_diff" } else { "" })));
+    let outputs = Outputs::for_csv(&out)?;
+
+    // the configurations: (label, params)
+    let name_a = racket_label(a.common.racket.as_deref());
+    let base = map_params(a.common.racket.as_deref(), &a.common)?;
+    let mut configs: Vec<(String, Params)> = Vec::new();
+    if let Some(b) = &a.compare_racket {
+        configs.push((name_a.clone(), base));
+        configs.push((racket_label(Some(b)), map_params(Some(b), &a.common)?));
+    } else if !a.compare_tension_lb.is_empty() {
+        let at = |t: f64| {
+            let mut p = base;
+            p.strings.ks = ks_from_tension_lb(t);
+            (format!("{name_a} at {t} lb"), p)
+        };
+        match a.compare_tension_lb[..] {
+            [t] => {
+                configs.push((format!("{name_a} as given"), base));
+                configs.push(at(t));
+            }
+            [t1, t2] => {
+                configs.push(at(t1));
+                configs.push(at(t2));
+            }
+            _ => {}
+        }
+    } else {
+        configs.push((name_a.clone(), base));
+    }
+    for (_, p) in &configs {
+        p.validate()?;
+    }
+    let total = match &configs[..] {
+        [(_, p)] => FaceMap::count(p, a.nx, a.nr)?,
+        [(_, pa), (_, pb)] => DiffMap::count(pa, pb, a.nx, a.nr)?,
+        _ => 0,
+    };
+    if total == 0 {
+        return Err(Error::invalid(
+            "nx",
+            format!("{} (with nr = {})", a.nx, a.nr),
+            "no grid point lies inside the string face; use more points (e.g. --nx 5 --nr 5)",
+        ));
+    }
+
+    let bar = indicatif::ProgressBar::hidden();
+    bar.set_length(total as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} impacts, {per_sec}, eta {eta}")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    let started = std::time::Instant::now();
+    let show = std::io::stderr().is_terminal();
+    let mut progress = |done: u64| {
+        if show && bar.is_hidden() && started.elapsed().as_secs_f64() > 1.0 {
+            bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+        }
+        bar.set_position(done);
+    };
+    let q = a.quantity;
+    let grid_json =
+        |g: &racket_impact::map::Grid| serde_json::json!({ "nx": a.nx, "nr": a.nr, "x_m": g.xs, "r_m": g.rs });
+    let computed = (|| -> Result<_> {
+        Ok(match &configs[..] {
+            [(la, pa), (lb, pb)] => {
+                let d = DiffMap::compute(pa, pb, a.nx, a.nr, &mut progress)?;
+                let table = d.table(q);
+                let heat = d.heatmap(q, la, lb);
+                let vals: Vec<f64> = d.values(q).into_iter().filter(|v| v.is_finite()).collect();
+                let meta = serde_json::json!({
+                    "quantity": q.name(), "column": q.column(), "unit": q.unit(),
+                    "note": IMPACT_NOTE,
+                    "difference": "b - a",
+                    "grid": grid_json(&d.a.grid),
+                    "points": d.len(),
+                    "a": config_metadata(la, &d.a, q)?,
+                    "b": config_metadata(lb, &d.b, q)?,
+                    "b_minus_a": {
+                        "min": vals.iter().copied().reduce(f64::min),
+                        "max": vals.iter().copied().reduce(f64::max),
+                        "mean": if vals.is_empty() { None } else { Some(vals.iter().sum::<f64>() / vals.len() as f64) },
+                    },
+                });
+                let summary = diff_summary(&d, q, la, lb, &vals);
+                (table, heat, meta, summary)
+            }
+            [(la, pa)] => {
+                let m = FaceMap::compute(pa, a.nx, a.nr, &mut progress)?;
+                let meta = serde_json::json!({
+                    "quantity": q.name(), "column": q.column(), "unit": q.unit(),
+                    "note": IMPACT_NOTE,
+                    "grid": grid_json(&m.grid),
+                    "points": m.len(),
+                    "a": config_metadata(la, &m, q)?,
+                });
+                let summary = map_summary(&m, q, la)?;
+                (m.table(), m.heatmap(q, la), meta, summary)
+            }
+            _ => return Err(Error::invalid("map", configs.len(), "one or two configurations")),
+        })
+    })();
+    bar.finish_and_clear();
+    let (table, heat, meta, summary) = computed?;
+    let json = format!("{}\n", serde_json::to_string_pretty(&meta).map_err(|e| Error::io("<json>", e))?);
+    let csv = table.to_csv();
+    outputs.write(&csv, &heat, &json)?;
+    match a.common.format {
+        Format::Text => {
+            print!("{summary}");
+            println!(
+                "wrote {}, {}, {} ({:.2} s)",
+                outputs.csv.display(),
+                outputs.png.display(),
+                outputs.json.display(),
+                started.elapsed().as_secs_f64()
+            );
+        }
+        Format::Json => print!("{json}"),
+        Format::Csv => print!("{csv}"),
+    }
+    let recontacts = table.column("recontact").or_else(|| table.column("recontact_b")).unwrap_or_default();
+    let n_re = recontacts.iter().filter(|&&v| v != 0.0).count();
+    if n_re > 0 {
+        eprintln!("warning: {n_re} map points have a re-contact after separation (flagged in the recontact column)");
+    }
+    Ok(())
+}
+
+fn map_summary(m: &racket_impact::map::FaceMap, q: Quantity, label: &str) -> Result<String> {
+    let mut s = format!(
+        "map of {} on {}: {} x {} grid, {} impacts inside the face ({:.1} x {:.1} cm{})\n",
+        q.name(),
+        label,
+        m.grid.xs.len(),
+        m.grid.rs.len(),
+        m.len(),
+        100.0 * m.face.length,
+        200.0 * m.face.half_width,
+        if m.face.from_racket { "" } else { ", default face" }
+    );
+    let unit = if q.unit().is_empty() { String::new() } else { format!(" {}", q.unit()) };
+    if let Some((x, r)) = m.at_node()? {
+        s.push_str(&format!(
+            "mode-1 node {:.2} cm from the tip: e_A {:.4}, {} {:.4}{unit} (on the axis)\n",
+            100.0 * x,
+            r.e_a,
+            q.name(),
+            q.of(&r)
+        ));
+    }
+    if let Some(p) = m.max_point(racket_impact::map::Quantity::EA) {
+        s.push_str(&format!(
+            "max e_A {:.4} at x = {:.2} cm, r = {:.2} cm\n",
+            p.value,
+            100.0 * p.x_m,
+            100.0 * p.r_m + 0.0
+        ));
+    }
+    if let Some(p) = m.max_point(q) {
+        s.push_str(&format!(
+            "max {} {:.4}{unit} at x = {:.2} cm, r = {:.2} cm\n",
+            q.name(),
+            p.value,
+            100.0 * p.x_m,
+            100.0 * p.r_m + 0.0
+        ));
+    }
+    Ok(s)
+}
+
+fn diff_summary(d: &racket_impact::map::DiffMap, q: Quantity, la: &str, lb: &str, vals: &[f64]) -> String {
+    let unit = if q.unit().is_empty() { String::new() } else { format!(" {}", q.unit()) };
+    let mut s = format!(
+        "difference map of {}: B - A, A = {la} (ks {:.0} N/m), B = {lb} (ks {:.0} N/m); {} x {} grid, {} points inside both faces\n",
+        q.name(),
+        d.a.params.strings.ks,
+        d.b.params.strings.ks,
+        d.a.grid.xs.len(),
+        d.a.grid.rs.len(),
+        d.len()
+    );
+    if let (Some(lo), Some(hi)) = (vals.iter().copied().reduce(f64::min), vals.iter().copied().reduce(f64::max)) {
+        s.push_str(&format!("B - A from {lo:.4} to {hi:.4}{unit}\n"));
+    }
+    s
 }

@@ -47,9 +47,9 @@ pub const PALETTE: [(u8, u8, u8); 8] = [
 /// Title font size, pixels.
 const TITLE_SIZE: f64 = 30.0;
 /// Axis description font size, pixels.
-const AXIS_DESC_SIZE: f64 = 22.0;
+pub(crate) const AXIS_DESC_SIZE: f64 = 22.0;
 /// Tick label and legend font size, pixels.
-const TICK_SIZE: f64 = 18.0;
+pub(crate) const TICK_SIZE: f64 = 18.0;
 /// Relative padding added to data-derived ranges.
 const PAD: f64 = 0.05;
 /// Colour of vertical marker lines.
@@ -222,7 +222,7 @@ pub fn render_png(id: &str, chart: &Chart, path: &Path) -> Result<()> {
 }
 
 /// Register the bundled DejaVu Sans as "sans-serif" (once per process); `false` on failure.
-fn fonts_registered() -> bool {
+pub(crate) fn fonts_registered() -> bool {
     static REGISTERED: OnceLock<bool> = OnceLock::new();
     *REGISTERED.get_or_init(|| {
         let normal = register_font("sans-serif", FontStyle::Normal, dejavu::sans::regular());
@@ -232,12 +232,12 @@ fn fonts_registered() -> bool {
 }
 
 /// Display any error as a `String` (for `map_err`).
-fn msg<E: std::fmt::Display>(e: E) -> String {
+pub(crate) fn msg<E: std::fmt::Display>(e: E) -> String {
     e.to_string()
 }
 
 /// The message of a caught panic.
-fn panic_text(panic: &(dyn std::any::Any + Send)) -> String {
+pub(crate) fn panic_text(panic: &(dyn std::any::Any + Send)) -> String {
     if let Some(s) = panic.downcast_ref::<&str>() {
         (*s).to_string()
     } else if let Some(s) = panic.downcast_ref::<String>() {
@@ -251,7 +251,7 @@ fn panic_text(panic: &(dyn std::any::Any + Send)) -> String {
 ///
 /// Enough significant digits (at least 6) to tell ticks apart, trailing zeros trimmed, and
 /// floating-point noise around zero (e.g. `1e-17` for a tick meant to be 0) shown as `0`.
-fn tick_label(v: f64, (lo, hi): (f64, f64)) -> String {
+pub(crate) fn tick_label(v: f64, (lo, hi): (f64, f64)) -> String {
     let span = (hi - lo).abs();
     if v.abs() <= span * 1e-9 {
         return "0".to_string();
@@ -262,13 +262,13 @@ fn tick_label(v: f64, (lo, hi): (f64, f64)) -> String {
 }
 
 /// Text style in the bundled sans-serif font.
-fn font(size: f64, style: FontStyle) -> TextStyle<'static> {
+pub(crate) fn font(size: f64, style: FontStyle) -> TextStyle<'static> {
     TextStyle::from(FontDesc::new(FontFamily::SansSerif, size, style))
 }
 
 /// The title font: [`TITLE_SIZE`] bold, shrunk (down to [`TICK_SIZE`]) until `title` fits the
 /// image width with a margin.
-fn title_font(
+pub(crate) fn title_font(
     root: &DrawingArea<BitMapBackend<'_>, Shift>,
     title: &str,
 ) -> std::result::Result<TextStyle<'static>, String> {
