@@ -295,7 +295,9 @@ pub enum StringLaw {
 /// which a hand-held frame's vibration dies away in a few tens of milliseconds; the stiffness makes the whole
 /// racket bounce on the hand at a few hertz, far below any frame mode. H. Hatze (Med. Sci.
 /// Sports 8, 1976) modelled the racket-hand system the same way; D. Chadefaux et al. (2017)
-/// fitted such distributed springs and dampers to measured hand-held rackets.
+/// fitted such distributed springs and dampers to measured hand-held rackets. The hand resists
+/// bending and translation only, not the twist about the long axis (Eq 7 stays free), so for
+/// off-axis impacts near the handle it overstates the twist.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Variants {
@@ -341,7 +343,12 @@ impl Variants {
         within("stiffening-deflection", self.stiffening_deflection, "stiffening deflection", "m", (1e-4, 1.0))?;
         within("hand-stiffness", self.hand_stiffness, "hand stiffness", "N/m", (0.0, 1e7))?;
         within("hand-damping", self.hand_damping, "hand damping", "N s/m", (0.0, 1e4))?;
-        within("grip-length", self.grip_length, "grip length", "m", (1e-3, 0.5 * racket.length))?;
+        if self.grip == Grip::Hand {
+            // only a hand needs a grip that fits on the racket
+            within("grip-length", self.grip_length, "grip length", "m", (1e-3, 0.5 * racket.length))?;
+        } else {
+            within("grip-length", self.grip_length, "grip length", "m", (1e-3, ranges::LENGTH.1))?;
+        }
         let nonlinear = self.strings == StringLaw::Stiffening || self.grip == Grip::Hand;
         if nonlinear && self.frame == Frame::Rigid {
             return Err(Error::invalid(

@@ -767,7 +767,8 @@ fn fit_density(r: &Resolved, shape: &Shape, segments: usize) -> Result<[f64; 3]>
     // centroids, so it must lie between them.
     let centroids = moments.map(|m| m[1] / m[0]);
     let (lo, hi) = centroids.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &c| (l.min(c), h.max(c)));
-    let to_butt = |x: f64| fmt_sig((r.length - x) * 100.0, 4);
+    // the stated ranges are rounded inwards, so every value they admit is accepted
+    let to_butt = |x: f64, up: bool| fmt_sig(round_sig(up, (r.length - x) * 100.0, 4), 4);
     if !(shape.x_cm > lo && shape.x_cm < hi) {
         return Err(Error::invalid(
             shape.balance_key,
@@ -775,8 +776,8 @@ fn fit_density(r: &Resolved, shape: &Shape, segments: usize) -> Result<[f64; 3]>
             format!(
                 "no positive density (linear over head and throat, constant handle) balances there; \
                  this racket's profile reaches {} < balance < {} cm from the butt",
-                to_butt(hi),
-                to_butt(lo)
+                to_butt(hi, true),
+                to_butt(lo, false)
             ),
         ));
     }
@@ -804,8 +805,8 @@ fn fit_density(r: &Resolved, shape: &Shape, segments: usize) -> Result<[f64; 3]>
         };
         format!(
             "; at {at} this profile realises {} < swingweight_kg_cm2 < {} kg cm^2",
-            fmt_sig(sw_lo * 1.0e4, 4),
-            fmt_sig(sw_hi * 1.0e4, 4)
+            fmt_sig(round_sig(true, sw_lo * 1.0e4, 4), 4),
+            fmt_sig(round_sig(false, sw_hi * 1.0e4, 4), 4)
         )
     } else {
         String::new()
@@ -918,6 +919,18 @@ pub fn resolve(spec: Option<&RacketSpec>, overrides: &params::Overrides) -> Resu
     overrides.apply(&mut p);
     p.validate()?;
     Ok((p, fitted))
+}
+
+/// `x` rounded up (or down) to `digits` significant digits.
+fn round_sig(up: bool, x: f64, digits: usize) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let e = 10f64.powi(x.abs().log10().floor() as i32 - digits as i32 + 1);
+    let r = if up { (x / e).ceil() * e } else { (x / e).floor() * e };
+    // undo representation error of the product (e.g. 273.90000000000003)
+    let snapped: f64 = fmt_sig(r, digits).parse().unwrap_or(r);
+    snapped
 }
 
 #[cfg(test)]

@@ -172,10 +172,14 @@ pub struct Basis {
     pub shapes: Vec<Vec<f64>>,
 }
 
-/// Cached bases, keyed by the beam-defining numbers of the racket and the segment count.
-static BASES: OnceLock<Mutex<HashMap<Vec<u64>, Arc<Basis>>>> = OnceLock::new();
-/// The cache is emptied when it grows beyond this many rackets.
-const BASIS_CACHE_LIMIT: usize = 256;
+/// Cached bases, keyed by the beam-defining numbers of the racket and the segment count, with
+/// the bytes they hold.
+static BASES: OnceLock<Mutex<BasisCache>> = OnceLock::new();
+/// The cached bases and the bytes they hold.
+type BasisCache = (HashMap<Vec<u64>, Arc<Basis>>, usize);
+/// The cache is emptied before it would hold more than this many bytes of modes (a sweep over
+/// many rackets on fine beams would otherwise keep N^2 numbers per racket).
+const BASIS_CACHE_BYTES: usize = 32 << 20;
 
 impl Basis {
     /// The basis of a racket on `segments` segments, from the cache or computed.
@@ -184,8 +188,8 @@ impl Basis {
         if let Some(p) = &racket.profile {
             key.extend(p.knots.iter().chain(&p.density).chain(&p.stiffness).map(|v| v.to_bits()));
         }
-        let cache = BASES.get_or_init(|| Mutex::new(HashMap::new()));
-        if let Some(b) = cache.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
+        let cache = BASES.get_or_init(|| Mutex::new((HashMap::new(), 0)));
+        if let Some(b) = cache.lock().unwrap_or_else(|e| e.into_inner()).0.get(&key) {
             return Arc::clone(b);
         }
         let beam = Beam::new(racket, segments);
@@ -193,11 +197,16 @@ impl Basis {
         let omega = lam.iter().map(|l| l.max(0.0).sqrt()).collect();
         let inv_mass = beam.mass.iter().map(|m| 1.0 / m).collect();
         let basis = Arc::new(Basis { beam, inv_mass, lam, omega, shapes });
-        let mut map = cache.lock().unwrap_or_else(|e| e.into_inner());
-        if map.len() >= BASIS_CACHE_LIMIT {
+        let bytes = 8 * (basis.shapes.len() + 6) * basis.beam.nodes();
+        let mut guard = cache.lock().unwrap_or_else(|e| e.into_inner());
+        let (map, held) = &mut *guard;
+        if *held + bytes > BASIS_CACHE_BYTES {
             map.clear();
+            *held = 0;
         }
-        map.insert(key, Arc::clone(&basis));
+        if map.insert(key, Arc::clone(&basis)).is_none() {
+            *held += bytes;
+        }
         basis
     }
 }
@@ -664,9 +673,15 @@ impl Stepper {
         let [j0, j1] = model.load.nodes;
         let [w0, w1] = model.load.weights;
         for (j, w) in [(j0, w0), (j1, w1)] {
-            let da = w * df / model.beam.mass[j];
-            self.a[j] += da;
-            self.v[j] += da * half;
+            let im = model.basis.inv_mass[j];
+            // a hand's damper at the node takes part implicitly, as in the kick
+            let c = model.hand.get(j).map_or(0.0, |h| h.1);
+            let dv = w * df * im * half / (1.0 + c * im * half);
+            let v_old = self.v[j];
+            self.v[j] += dv;
+            self.a[j] += (w * df - c * dv) * im;
+            self.hand_loss += half * c * (self.v[j] * self.v[j] - v_old * v_old);
+            self.hand_impulse += half * c * dv;
         }
     }
 }

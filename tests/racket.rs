@@ -256,6 +256,8 @@ fn an_unrealisable_balance_and_swingweight_is_refused_with_the_realisable_range(
     let with_sw = |sw: f64| RacketSpec { swingweight_kg_cm2: Some(sw), ..spec.clone() }.to_racket(39);
     assert!(with_sw(range[1] * 0.999).is_ok() && with_sw(range[1] * 1.001).is_err(), "{range:?}");
     assert!(with_sw(range[0] * 1.001).is_ok() && with_sw(range[0] * 0.999).is_err(), "{range:?}");
+    // the printed bounds are rounded inwards: the values as printed are accepted
+    assert!(with_sw(range[0]).is_ok() && with_sw(range[1]).is_ok(), "{range:?}");
     let msg = spec.to_racket(3).unwrap_err().to_string();
     assert!(msg.starts_with("invalid segments = 3"), "{msg}");
 }

@@ -135,8 +135,14 @@ fn unsupported_combinations_are_refused_with_the_reason() {
     p.numerics.solver = SolverKind::Modal;
     assert!(simulate(&p).unwrap_err().to_string().starts_with("invalid solver = modal"));
     let mut p = Params::paper();
+    p.variants.grip = Grip::Hand;
     p.variants.grip_length = 0.5;
     assert!(simulate(&p).unwrap_err().to_string().starts_with("invalid grip-length = 0.5"));
+    // a free racket has no grip: short rackets keep working with the default grip length
+    let mut p = Params::paper();
+    p.racket.length = 0.25;
+    p.impact.x = 0.1;
+    simulate(&p).unwrap();
 }
 
 #[test]

@@ -173,9 +173,9 @@ impl Contact {
         ys
     }
 
-    /// Force and compressions at total compression `yt` in the given phase. `guess` is the
-    /// previous step's `(u, u^p)` (any pair is safe: it is only used when it lies right of the
-    /// root, and `u^p` only when it is consistent with `u`).
+    /// Force and compressions at total compression `yt` in the given phase. `guess` is a warm
+    /// start `(u, u^p)`, as [`ContactState::guess`] returns it: any `u` is safe (it is only used
+    /// when it lies right of the root), but `u^p` must be `u`'s power (checked in debug builds).
     pub fn state(&self, yt: f64, phase: Phase, guess: (f64, f64)) -> Result<ContactState> {
         if yt <= 0.0 {
             return Ok(ContactState::ZERO);
@@ -260,12 +260,16 @@ impl Contact {
 /// (`a = k1/k_s`), and, with `a` enlarged by a compliance term, the implicit contact step of the
 /// modal solver. Newton from an upper bound of the root converges monotonically (the left side
 /// is increasing and convex), so the result is never negative and the loop always ends.
-/// Returns `(u, u^p)`. `guess` is `(u, u^p)` of the previous solve; `u^p` of each iterate is
-/// carried from the previous one by [`pow_near`], so a warm-started solve usually needs no
-/// power function at all.
-pub fn solve_u(a: f64, p: f64, z: f64, guess: (f64, f64)) -> Result<(f64, f64)> {
+/// Returns `(u, u^p)`. `guess` is `(u, u^p)` of the previous solve (any `u`; `u^p` must be its
+/// power: checked in debug builds); `u^p` of each iterate is carried from the previous one by
+/// [`pow_near`], so a warm-started solve usually needs no power function at all.
+pub(crate) fn solve_u(a: f64, p: f64, z: f64, guess: (f64, f64)) -> Result<(f64, f64)> {
     let pow = |u: f64| if u > 0.0 { u.powf(p) } else { 0.0 };
     let (u_guess, guess_pow) = guess;
+    debug_assert!(
+        !(u_guess > 0.0 && guess_pow > 0.0) || (guess_pow / u_guess.powf(p) - 1.0).abs() < 1e-9,
+        "solve_u: guess {guess:?} is not (u, u^p) for p = {p}"
+    );
     // The previous step's u is an upper bound whenever z has not grown (the usual case in
     // expansion): Newton starts there, one or two iterations from the root. A start far above
     // the root would lose digits to cancellation in `u - step`, so the guess must also lie
