@@ -44,6 +44,8 @@ fn check(p: &Params) -> Vec<(&'static str, f64)> {
     for &(name, rel) in &d {
         assert!(rel <= TOL, "{name}: relative difference {rel:e} at {p:?}");
     }
+    // both solvers ask the same closed form (model::free) about re-contact, so this checks the
+    // state each hands it; tests/physics.rs checks the closed form against stepping on
     assert_eq!(a.recontact, b.recontact, "{p:?}");
     assert!(b.momentum_error < 1e-9);
     d

@@ -17,7 +17,7 @@ pub const EXPERIMENT: Experiment = Experiment {
     id: "fig6_string_stiffness",
     title: "e_A, f(ball), f(vib) and tau against ks at x 6 cm, r 0 (EI 150)",
     paper_ref: "Fig 6 and p. 5-6: vibration ~0 once tau exceeds ~10 ms",
-    run: || stiffness_sweep(EXPERIMENT.id, &[150.0]),
+    run: || stiffness_sweep(EXPERIMENT.id, &[super::frame_ei(150.0)]),
     chart: |t| stiffness_chart(t, "Fig 6: string stiffness, x 6 cm, r 0, EI 150 N m^2 (125 Hz)", None),
 };
 

@@ -14,6 +14,12 @@ pub const EXPERIMENT: Experiment = Experiment {
     id: "fig9_stiff_frame",
     title: "Fig 6 for a wide-body frame, EI 384 N m^2 (200 Hz), with EI 150 for comparison",
     paper_ref: "Fig 9 and p. 6: at ks 4e4, e_A 0.10 -> 0.18, serve speed +7 %",
-    run: || stiffness_sweep(EXPERIMENT.id, &[384.0, 150.0]),
-    chart: |t| stiffness_chart(t, "Fig 9: stiff frame EI 384 N m^2 (200 Hz), x 6 cm, r 0; faint: EI 150", Some(150.0)),
+    run: || stiffness_sweep(EXPERIMENT.id, &[super::frame_ei(384.0), super::frame_ei(150.0)]),
+    chart: |t| {
+        stiffness_chart(
+            t,
+            "Fig 9: stiff frame EI 384 N m^2 (200 Hz), x 6 cm, r 0; faint: EI 150",
+            Some(super::frame_ei(150.0)),
+        )
+    },
 };

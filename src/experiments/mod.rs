@@ -157,6 +157,14 @@ pub fn base_params() -> Params {
     p
 }
 
+/// The bending stiffness standing for the paper's `paper_ei` (N m^2) on the chosen racket: the
+/// same ratio to the racket's own EI as `paper_ei` has to the paper's 150 N m^2 (exactly
+/// `paper_ei` for the paper's racket), so the frame comparisons of Figs 6 and 9 become "your
+/// frame, and your frame 2.56 times stiffer".
+pub fn frame_ei(paper_ei: f64) -> f64 {
+    base_params().racket.ei * paper_ei / Racket::default().ei
+}
+
 /// The paper's racket, ball and numerics (node load, N = 39) with an impact on the long axis.
 pub fn paper_params(x: f64, ks: f64) -> Params {
     let mut p = base_params();

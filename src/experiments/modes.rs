@@ -30,7 +30,8 @@ const MODES: usize = 4;
 
 fn run() -> Result<Table> {
     let base = super::base_params().racket;
-    let beams: Vec<Beam> = EI_VALUES.iter().map(|&ei| Beam::new(&Racket { ei, ..base }, 39)).collect();
+    let beams: Vec<Beam> =
+        EI_VALUES.iter().map(|&ei| Beam::new(&Racket { ei: super::frame_ei(ei), ..base }, 39)).collect();
     let modes: Vec<_> = beams.iter().map(Beam::modes).collect();
     let mut t = Table::new(EXPERIMENT.id, &["mode", "x_m", "shape", "frequency_ei150_hz", "frequency_ei384_hz"]);
     for k in 1..=MODES {

@@ -100,10 +100,10 @@ fn run() -> Result<Table> {
     for lb in TENSIONS_LB {
         let ks = ks_from_tension_lb(lb);
         let s = centre_setup(ks)?;
-        push(&mut t, "tension", lb, ks, 150.0, CENTRE_X, &reference, &s)?;
+        push(&mut t, "tension", lb, ks, super::frame_ei(150.0), CENTRE_X, &reference, &s)?;
     }
-    let flexible = tip_setup(150.0)?;
-    for ei in [150.0, 384.0] {
+    let flexible = tip_setup(super::frame_ei(150.0))?;
+    for ei in [150.0, 384.0].map(super::frame_ei) {
         let s = tip_setup(ei)?;
         push(&mut t, "frame", REF_TENSION_LB, 4.0e4, ei, X_TIP, &flexible, &s)?;
     }
