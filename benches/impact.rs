@@ -58,7 +58,7 @@ fn png(c: &mut Criterion) {
     let charts: Vec<_> = experiments::registry().iter().map(|e| (e.id, (e.chart)(&(e.run)().unwrap()))).collect();
     let mut group = c.benchmark_group("png");
     group.sample_size(10);
-    group.bench_function("render_all_12_figures", |b| {
+    group.bench_function("render_all_figures", |b| {
         b.iter(|| {
             for (id, chart) in &charts {
                 racket_impact::plot::render_png(id, chart, &dir.join(format!("{id}.png"))).unwrap();
