@@ -354,14 +354,14 @@ impl Variants {
             return Err(Error::invalid(
                 "frame",
                 "rigid",
-                "the rigid frame is the closed-form limit for linear strings and a free racket (use --strings linear --grip free)",
+                "must be beam with stiffening strings or a hand grip (the rigid frame is the closed-form limit for linear strings and a free racket)",
             ));
         }
         if nonlinear && solver == SolverKind::Modal {
             return Err(Error::invalid(
                 "solver",
                 "modal",
-                "stiffening strings and a hand grip need the explicit solver (use --solver fd)",
+                "must be fd with stiffening strings or a hand grip (the modal solver needs a linear, undamped system)",
             ));
         }
         Ok(())

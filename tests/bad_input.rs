@@ -84,6 +84,11 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
     let under_file = format!("{a_file}/out");
     let no_dir_series = s.path("no/such/dir/series.csv");
     let no_dir_report = s.path("no/such/dir/REPORT.md");
+    let bad_racket =
+        s.file("bad_racket.toml", b"length_in = 27\nmass_g = -300\ntwistweight_kg_cm2 = 14\nei_n_m2 = 150\n");
+    let typo_racket = s.file("typo.toml", b"length_in = 27\nmass_g = 300\nbalanse_cm = 33\n");
+    let half_racket =
+        s.file("half.toml", b"length_in = 27\nmass_g = 300\nbalance_cm = 33\ntwistweight_kg_cm2 = 14\nei_n_m2 = 150\n");
 
     let sim = |extra: &[&str]| -> Vec<String> {
         let mut v = vec!["simulate".to_string(), "--series".to_string(), series.clone()];
@@ -165,6 +170,23 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
         case(&["modes", "--count", "-1"], "--count", false),
         case(&["modes", "--length", "1e-300"], "length", true),
         case(&["no-such-command"], "no-such-command", false),
+        // model variants
+        case(&["simulate", "--frame", "bendy"], "--frame", false),
+        case(&["simulate", "--grip", "hand", "--solver", "modal"], "solver", true),
+        case(&["simulate", "--frame", "rigid", "--strings", "stiffening"], "frame", true),
+        case(&["simulate", "--strings", "stiffening", "--string-stiffening", "-0.1"], "string-stiffening", true),
+        case(&["simulate", "--grip", "hand", "--hand-damping", "nan"], "hand-damping", true),
+        case(&["simulate", "--grip", "hand", "--grip-length", "0.5"], "grip-length", true),
+        // own racket and speed
+        case(&["simulate", "--racket", &bad_racket], "mass_g", true),
+        case(&["simulate", "--racket", &typo_racket], "balanse_cm", false),
+        case(&["racket"], "racket", false),
+        case(&["racket", &half_racket], "swingweight_kg_cm2", false),
+        case(&["speed", "--swing", "30", "--incoming", "-5"], "incoming", true),
+        case(&["speed", "--swing", "30", "--compare-tension-lb", "0"], "compare-tension-lb", true),
+        case(&["speed", "--swing", "30", "--compare-tension-lb", "50", "--compare-racket", "light"], "compare", false),
+        case(&["speed", "--incoming", "20"], "--swing", false),
+        case(&["sweep", "--out", &s.path("sw.csv"), "--grip", "hand,free", "--solver", "modal"], "solver", true),
     ]);
     assert!(cases.len() >= 30);
 
