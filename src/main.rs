@@ -46,7 +46,9 @@ enum Command {
     /// list (2e4,4e4 or node,hat), a range start:stop:count or a log range start:stop:count:log.
     /// Keys: x r ks ei mass length ix half-width mb k1 p v1 segments load dt solver frame grip strings
     /// string-stiffening stiffening-deflection hand-stiffness hand-damping grip-length. Options
-    /// (--out, --config, --racket) go before the pairs; --solver modal is ~9x faster.
+    /// (--out, --config, --racket) go before the pairs. Sweeps use the modal solver (~9x faster,
+    /// within 5e-5 of fd) unless --solver is given or a hand grip or stiffening strings need fd;
+    /// the last CSV column names the solver.
     /// Example: racket-impact sweep --out s.csv --x 0.02:0.60:50 --ks 2e4,4e4 --load node
     Sweep(SweepArgs),
     /// Map a quantity over the string face: one impact per grid point, as CSV, PNG and JSON
@@ -478,6 +480,8 @@ fn sweep(a: SweepArgs) -> Result<()> {
         }
         None => Params::default(),
     };
+    let mut base = base;
+    base.solver = racket_impact::sweep::default_solver(&base, &axes);
     let sweep = Sweep { defaults, base, axes };
     sweep.validate_all()?; // a bad value anywhere fails before anything is written
     if let Some(path) = &a.out {

@@ -186,7 +186,7 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
         case(&["speed", "--swing", "30", "--compare-tension-lb", "0"], "compare-tension-lb", true),
         case(&["speed", "--swing", "30", "--compare-tension-lb", "50", "--compare-racket", "light"], "compare", false),
         case(&["speed", "--incoming", "20"], "--swing", false),
-        case(&["sweep", "--out", &s.path("sw.csv"), "--grip", "hand,free", "--solver", "modal"], "solver", true),
+        case(&["sweep", "--out", &s.path("sw.csv"), "--solver", "modal", "--grip", "hand,free"], "solver", true),
     ]);
     assert!(cases.len() >= 30);
 

@@ -168,11 +168,26 @@ fn sweep_streams_the_cartesian_product_in_order_and_matches_simulate() {
     assert!(lines[0].starts_with("ks_n_per_m,x_m,load,e_a,tau_s"));
     let row: Vec<&str> = lines[7].split(',').collect(); // ks 4e4, x = 0.1
     assert_eq!((row[0], row[1]), ("4e4", "0.1"));
+    // sweeps default to the modal solver and say so in the last column
+    assert_eq!(row.last(), Some(&"modal"));
     let mut p = Params::default();
     p.numerics.load = LoadRule::Node;
     p.impact.x = 0.1;
     p.strings.ks = 4e4;
+    p.numerics.solver = racket_impact::params::SolverKind::Modal;
     assert_relative_eq!(row[3].parse::<f64>().unwrap(), simulate(&p).unwrap().e_a, max_relative = 1e-15);
+    // the explicit reference on request, and wherever a variant needs it
+    let out = run(&["sweep", "--solver", "fd", "--x", "0.1"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    p.numerics.solver = racket_impact::params::SolverKind::Fd;
+    p.numerics.load = LoadRule::Hat;
+    let fd: Vec<&str> = text.lines().nth(1).unwrap().split(',').collect();
+    assert_eq!(fd.last(), Some(&"fd"));
+    // (a swept key: `--solver fd` is the first column)
+    assert_relative_eq!(fd[2].parse::<f64>().unwrap(), simulate(&p).unwrap().e_a, max_relative = 1e-15);
+    let out = run(&["sweep", "--grip", "free,hand", "--x", "0.1"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8(out.stdout).unwrap().lines().skip(1).all(|l| l.ends_with(",fd")));
 }
 
 #[test]
