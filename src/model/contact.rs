@@ -302,7 +302,7 @@ pub(crate) fn solve_u(a: f64, p: f64, z: f64, guess: (f64, f64)) -> Result<(f64,
             step = hu / (d1 - 0.5 * hu * d2 / d1);
         }
         let next = (u - step).max(0.0);
-        let next_pow = pow_near(next, u, up, p);
+        let next_pow = pow_near(next, (u, up), p);
         // after a Halley step of 1e-6 the error is of order 1e-18: done
         if (halley && step <= 1e-6 * u) || step <= 4.0 * f64::EPSILON * u || next == u {
             return Ok((next, next_pow));
@@ -313,10 +313,11 @@ pub(crate) fn solve_u(a: f64, p: f64, z: f64, guess: (f64, f64)) -> Result<(f64,
     Err(Error::ContactSolve { z })
 }
 
-/// `u^p` from a nearby `u0` with known `p0 = u0^p`: `p0 exp(p ln(u/u0))` by short series when
+/// `u^p` from a nearby reference `(u0, u0^p)`: `u0^p exp(p ln(u/u0))` by short series when
 /// `u/u0` is within 1 % of 1 (rounding-level accurate: the neglected terms are below 1e-17
 /// relative), `powf` otherwise.
-pub fn pow_near(u: f64, u0: f64, p0: f64, p: f64) -> f64 {
+pub fn pow_near(u: f64, reference: (f64, f64), p: f64) -> f64 {
+    let (u0, p0) = reference;
     if u <= 0.0 {
         return 0.0;
     }
@@ -402,7 +403,7 @@ mod tests {
                 for &x in &[-0.0099, -1e-3, -1e-9, 0.0, 3e-7, 2e-3, 0.0099, 0.05] {
                     let u = u0 * (1.0 + x);
                     let exact = u.powf(p);
-                    let near = pow_near(u, u0, u0.powf(p), p);
+                    let near = pow_near(u, (u0, u0.powf(p)), p);
                     // the rounding of u / u0 is amplified p times, as it is in u^p itself
                     let tol = (p + 3.0) * f64::EPSILON * exact;
                     assert!((near - exact).abs() <= tol, "p {p} u0 {u0} x {x}: {near} vs {exact}");
