@@ -23,13 +23,16 @@
 //! - [`params`]: parameter structs (defaults = the paper), validation, `--config` overrides.
 //! - [`racket`]: a racket file or preset in spec-sheet units (mass, balance, swingweight, Hz),
 //!   fitted exactly to the discrete beam.
-//! - [`model`]: the contact law, the discrete beam and its modes, closed-form drop tests.
-//! - [`solver`]: one impact by velocity-Verlet time stepping, with the energy ledger.
+//! - [`model`]: the contact law (linear or stiffening strings), the discrete beam and its modes,
+//!   closed-form drop tests and rigid racket, the closed-form free vibration after separation.
+//! - [`solver`]: one impact by velocity-Verlet time stepping, with the energy ledger (and the
+//!   hand grip variant); modes cached per racket.
 //! - [`modal`]: an independent modal-superposition solver with a contact-sized step.
 //! - [`experiments`]: one module per result of the paper (figure -> module table there).
 //! - [`table`], [`plot`], [`io`]: result tables, the one look of every figure, atomic writes.
 //! - [`report`]: the paper's numbers beside ours.
 //! - [`sweep`]: parallel, streamed parameter sweeps.
+//! - [`map`], [`heatmap`]: string-face maps and their heat-map figures.
 //!
 //! ## Example
 //! The Fig 4 impact with the paper's numerics:
