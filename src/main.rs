@@ -292,12 +292,64 @@ fn params_from(common: &Common) -> Result<Params> {
 
 /// As [`params_from`] with the racket given separately, also returning the fit.
 fn resolve(racket: Option<&str>, common: &Common) -> Result<(Params, Option<Fitted>)> {
-    let config = match &common.config {
-        Some(path) => Overrides::from_toml_file(path)?,
-        None => Overrides::default(),
-    };
+    let config = config_file(common.config.as_deref())?;
     let spec = racket.map(racket_impact::racket::load).transpose()?;
     racket_impact::racket::resolve(spec.as_ref(), &common.overrides.clone().or(config))
+}
+
+/// The overrides of a `--config` file, or none.
+fn config_file(path: Option<&std::path::Path>) -> Result<Overrides> {
+    path.map_or_else(|| Ok(Overrides::default()), Overrides::from_toml_file)
+}
+
+/// A progress bar on stderr for long runs: hidden, and shown only on a terminal once the run
+/// has taken more than a second.
+struct Progress {
+    bar: indicatif::ProgressBar,
+    started: std::time::Instant,
+    terminal: bool,
+}
+
+impl Progress {
+    fn new(total: u64) -> Self {
+        use std::io::IsTerminal;
+        let bar = indicatif::ProgressBar::hidden();
+        bar.set_length(total);
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} impacts, {per_sec}, eta {eta}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        Progress { bar, started: std::time::Instant::now(), terminal: std::io::stderr().is_terminal() }
+    }
+
+    fn update(&self, done: u64) {
+        if self.terminal && self.bar.is_hidden() && self.started.elapsed().as_secs_f64() > 1.0 {
+            self.bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+        }
+        self.bar.set_position(done);
+    }
+}
+
+impl Drop for Progress {
+    fn drop(&mut self) {
+        self.bar.finish_and_clear();
+    }
+}
+
+/// The comparison options of `speed` and `map`: tensions or rackets, not both; each tension in
+/// range.
+fn check_comparison(tensions_lb: &[f64], rackets_given: bool) -> Result<()> {
+    if !tensions_lb.is_empty() && rackets_given {
+        return Err(Error::invalid(
+            "compare-tension-lb",
+            "(with --compare-racket)",
+            "compare either tensions or rackets, not both",
+        ));
+    }
+    match tensions_lb.iter().find(|t| !(t.is_finite() && **t > 0.0 && **t <= 200.0)) {
+        Some(t) => Err(Error::invalid("compare-tension-lb", t, "tension must satisfy 0 < T <= 200 lb")),
+        None => Ok(()),
+    }
 }
 
 /// Fail early, before any computation, when an output file's directory does not exist.
@@ -450,11 +502,8 @@ fn report(a: ReportArgs) -> Result<()> {
 
 fn sweep(a: SweepArgs) -> Result<()> {
     use racket_impact::sweep::{parse_spec, Sweep};
-    use std::io::{IsTerminal, Write};
-    let base = match &a.config {
-        Some(path) => Overrides::from_toml_file(path)?,
-        None => Overrides::default(),
-    };
+    use std::io::Write;
+    let base = config_file(a.config.as_deref())?;
     if a.specs.len() % 2 != 0 || a.specs.is_empty() {
         return Err(Error::invalid(
             "sweep",
@@ -487,15 +536,7 @@ fn sweep(a: SweepArgs) -> Result<()> {
     if let Some(path) = &a.out {
         check_output_path("out", path)?;
     }
-    let total = sweep.len();
-    let bar = indicatif::ProgressBar::hidden();
-    bar.set_length(total);
-    bar.set_style(
-        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} impacts, {per_sec}, eta {eta}")
-            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-    );
-    let started = std::time::Instant::now();
-    let show = std::io::stderr().is_terminal();
+    let progress = Progress::new(sweep.len());
     let mut file = match &a.out {
         Some(path) => Some(racket_impact::io::AtomicFile::create(path)?),
         None => None,
@@ -515,14 +556,9 @@ fn sweep(a: SweepArgs) -> Result<()> {
             rows.iter().for_each(|r| buf.push_str(&csv_line(r)));
             emit(buf.as_bytes())
         },
-        |done| {
-            if show && bar.is_hidden() && started.elapsed().as_secs_f64() > 1.0 {
-                bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
-            }
-            bar.set_position(done);
-        },
+        |done| progress.update(done),
     );
-    bar.finish_and_clear();
+    drop(progress);
     outcome?; // on error the temporary file is dropped, the target untouched
     match file {
         Some(f) => f.commit(),
@@ -618,19 +654,10 @@ fn speed(a: SpeedArgs) -> Result<()> {
         }
     }
     let (v_racket, v_in) = (a.swing * unit, a.incoming * unit);
-    if !a.compare_tension_lb.is_empty() && !a.compare_racket.is_empty() {
-        return Err(Error::invalid(
-            "compare-tension-lb",
-            "(with --compare-racket)",
-            "compare either tensions or rackets, not both",
-        ));
-    }
+    check_comparison(&a.compare_tension_lb, !a.compare_racket.is_empty())?;
     // the variants: (label, racket argument, tension)
     let mut variants: Vec<(String, Option<String>, Option<f64>)> = Vec::new();
     for &t in &a.compare_tension_lb {
-        if !(t.is_finite() && t > 0.0 && t <= 200.0) {
-            return Err(Error::invalid("compare-tension-lb", t, "tension must satisfy 0 < T <= 200 lb"));
-        }
         variants.push((format!("{t} lb"), a.common.racket.clone(), Some(t)));
     }
     for r in &a.compare_racket {
@@ -649,7 +676,7 @@ fn speed(a: SpeedArgs) -> Result<()> {
         p.impact.v1 = v_in + v_racket;
         p.validate()?;
         let r = racket_impact::simulate(&p)?;
-        let v_out = r.e_a * v_in + (1.0 + r.e_a) * v_racket;
+        let v_out = racket_impact::experiments::speeds::outgoing_speed(r.e_a, v_in, v_racket);
         rows.push((label.clone(), p, r, v_out));
     }
     let v_ref = rows[0].3;
@@ -727,10 +754,7 @@ fn map_params(racket: Option<&str>, common: &Common) -> Result<Params> {
     if let Some(r) = common.overrides.r {
         return Err(Error::invalid("r", r, "a map chooses the impact points itself: give --nx/--nr, not --r"));
     }
-    let mut config = match &common.config {
-        Some(path) => Overrides::from_toml_file(path)?,
-        None => Overrides::default(),
-    };
+    let mut config = config_file(common.config.as_deref())?;
     // an on-axis point at the tip is valid on every face; the grid replaces it
     config.x = Some(0.0);
     config.r = Some(0.0);
@@ -754,7 +778,6 @@ const IMPACT_NOTE: &str =
 fn map(a: MapArgs) -> Result<()> {
     use racket_impact::map::{config_metadata, DiffMap, FaceMap, Outputs, MAX_GRID, MIN_GRID};
     use racket_impact::params::ks_from_tension_lb;
-    use std::io::IsTerminal;
     for (field, n) in [("nx", a.nx), ("nr", a.nr)] {
         if !(MIN_GRID..=MAX_GRID).contains(&n) {
             return Err(Error::invalid(
@@ -764,24 +787,13 @@ fn map(a: MapArgs) -> Result<()> {
             ));
         }
     }
-    if a.compare_racket.is_some() && !a.compare_tension_lb.is_empty() {
-        return Err(Error::invalid(
-            "compare-tension-lb",
-            "(with --compare-racket)",
-            "compare either tensions or rackets, not both",
-        ));
-    }
+    check_comparison(&a.compare_tension_lb, a.compare_racket.is_some())?;
     if a.compare_tension_lb.len() > 2 {
         return Err(Error::invalid(
             "compare-tension-lb",
             a.compare_tension_lb.iter().map(f64::to_string).collect::<Vec<_>>().join(","),
             "give one tension T (the configuration against T) or two, T1,T2",
         ));
-    }
-    for &t in &a.compare_tension_lb {
-        if !(t.is_finite() && t > 0.0 && t <= 200.0) {
-            return Err(Error::invalid("compare-tension-lb", t, "tension must satisfy 0 < T <= 200 lb"));
-        }
     }
     let diff = a.compare_racket.is_some() || !a.compare_tension_lb.is_empty();
     let out = a
@@ -833,20 +845,9 @@ fn map(a: MapArgs) -> Result<()> {
         ));
     }
 
-    let bar = indicatif::ProgressBar::hidden();
-    bar.set_length(total as u64);
-    bar.set_style(
-        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} impacts, {per_sec}, eta {eta}")
-            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-    );
-    let started = std::time::Instant::now();
-    let show = std::io::stderr().is_terminal();
-    let mut progress = |done: u64| {
-        if show && bar.is_hidden() && started.elapsed().as_secs_f64() > 1.0 {
-            bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
-        }
-        bar.set_position(done);
-    };
+    let bar = Progress::new(total as u64);
+    let started = bar.started;
+    let mut progress = |done: u64| bar.update(done);
     let q = a.quantity;
     let grid_json =
         |g: &racket_impact::map::Grid| serde_json::json!({ "nx": a.nx, "nr": a.nr, "x_m": g.xs, "r_m": g.rs });
@@ -889,7 +890,7 @@ fn map(a: MapArgs) -> Result<()> {
             _ => return Err(Error::invalid("map", configs.len(), "one or two configurations")),
         })
     })();
-    bar.finish_and_clear();
+    drop(bar);
     let (table, heat, meta, summary) = computed?;
     let json = format!("{}\n", serde_json::to_string_pretty(&meta).map_err(|e| Error::io("<json>", e))?);
     let csv = table.to_csv();

@@ -683,20 +683,14 @@ pub struct Overrides {
 impl Overrides {
     /// Read a TOML config file with the flag names as keys.
     pub fn from_toml_file(path: &std::path::Path) -> Result<Self> {
-        let bytes = std::fs::read(path).map_err(|e| Error::Config { path: path.into(), message: e.to_string() })?;
-        Self::from_toml_bytes(path, &bytes)
+        Self::from_toml_bytes(path, &read_file(path)?)
     }
 
     /// Parse the contents of a config file (`path` only names it in errors). An empty file, a
     /// file that is not UTF-8 text, a TOML syntax error, a wrong type and an unknown key are all
     /// errors with one line naming the file and, where TOML knows it, the key and line.
     pub fn from_toml_bytes(path: &std::path::Path, bytes: &[u8]) -> Result<Self> {
-        let err = |message: String| Error::Config { path: path.into(), message };
-        let text = std::str::from_utf8(bytes).map_err(|_| err("not a UTF-8 text file".into()))?;
-        if text.trim().is_empty() {
-            return Err(err("is empty (give at least one key, e.g. ks = 4e4)".into()));
-        }
-        toml::from_str(text).map_err(|e| err(one_line(&e.to_string())))
+        parse_toml(path, bytes, "give at least one key, e.g. ks = 4e4")
     }
 
     /// The keys, spelled as the flags and config keys.
@@ -860,6 +854,28 @@ fn choice<T: clap::ValueEnum>(field: &'static str, value: &str) -> Result<T> {
             .collect();
         Error::invalid(field, value, format!("must be one of: {}", names.join(", ")))
     })
+}
+
+/// The bytes of a TOML file; a file that cannot be read is an [`Error::Config`] naming it.
+pub(crate) fn read_file(path: &std::path::Path) -> Result<Vec<u8>> {
+    std::fs::read(path).map_err(|e| Error::Config { path: path.into(), message: e.to_string() })
+}
+
+/// Parse a TOML file's contents (`path` only names it in errors): an empty file (told what to
+/// give: `empty_hint`), bytes that are not UTF-8, a syntax error, a wrong type and an unknown
+/// key are all [`Error::Config`] with one line naming the file and, where TOML knows it, the
+/// key and line.
+pub(crate) fn parse_toml<T: serde::de::DeserializeOwned>(
+    path: &std::path::Path,
+    bytes: &[u8],
+    empty_hint: &str,
+) -> Result<T> {
+    let err = |message: String| Error::Config { path: path.into(), message };
+    let text = std::str::from_utf8(bytes).map_err(|_| err("not a UTF-8 text file".into()))?;
+    if text.trim().is_empty() {
+        return Err(err(format!("is empty ({empty_hint})")));
+    }
+    toml::from_str(text).map_err(|e| err(one_line(&e.to_string())))
 }
 
 /// Fold a multi-line message (e.g. a TOML parse error with a source excerpt) into one line.

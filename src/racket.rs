@@ -423,20 +423,10 @@ fn required<T: Copy>(label: &'static str, keys: &[(&'static str, Option<T>)]) ->
     })
 }
 
-/// Fold a multi-line message (a TOML error with its source excerpt) into one line.
-fn one_line(msg: &str) -> String {
-    msg.lines()
-        .map(str::trim)
-        .filter(|l| !l.is_empty() && !l.chars().all(|c| "|^ ".contains(c)))
-        .collect::<Vec<_>>()
-        .join("; ")
-}
-
 impl RacketSpec {
     /// Read and check a racket file.
     pub fn from_toml_file(path: &Path) -> Result<Self> {
-        let bytes = std::fs::read(path).map_err(|e| Error::Config { path: path.into(), message: e.to_string() })?;
-        Self::from_toml_bytes(path, &bytes)
+        Self::from_toml_bytes(path, &params::read_file(path)?)
     }
 
     /// Parse and check the contents of a racket file (`path` only names it in errors). An empty
@@ -445,12 +435,8 @@ impl RacketSpec {
     /// out-of-range value is [`Error::InvalidParameter`] naming the key ([`Self::validate`]).
     /// Whether a balance and swingweight can be realised is checked by [`Self::to_racket`].
     pub fn from_toml_bytes(path: &Path, bytes: &[u8]) -> Result<Self> {
-        let err = |message: String| Error::Config { path: path.into(), message };
-        let text = std::str::from_utf8(bytes).map_err(|_| err("not a UTF-8 text file".into()))?;
-        if text.trim().is_empty() {
-            return Err(err("is empty (give at least length_cm, mass_g, twistweight_kg_cm2, frequency_hz)".into()));
-        }
-        let spec: RacketSpec = toml::from_str(text).map_err(|e| err(one_line(&e.to_string())))?;
+        let spec: RacketSpec =
+            params::parse_toml(path, bytes, "give at least length_cm, mass_g, twistweight_kg_cm2, frequency_hz")?;
         spec.validate()?;
         Ok(spec)
     }

@@ -72,6 +72,14 @@ pub fn tip_setup(ei: f64) -> Result<Setup> {
     Ok(Setup { e_a: r.e_a, tau_s: r.tau_s, theta_deg: impact(&p)?.theta_end_deg })
 }
 
+/// The paper's frame transformation (p. 5): a ball arriving at `v_in` on a racket swung at
+/// `v_racket` (at the impact point, towards the ball) leaves at `e_A v_in + (1 + e_A) v_racket`,
+/// with `e_A` the apparent coefficient of restitution at the relative speed `v_in + v_racket`.
+/// Serve (`v_in = 0`): `(1 + e_A) v`; forehand (`v_in = v_racket = v`): `(1 + 2 e_A) v`.
+pub fn outgoing_speed(e_a: f64, v_in: f64, v_racket: f64) -> f64 {
+    e_a * v_in + (1.0 + e_a) * v_racket
+}
+
 /// Percentage change of `b` over `a`.
 pub fn gain_pct(a: f64, b: f64) -> f64 {
     100.0 * (b / a - 1.0)
