@@ -390,7 +390,7 @@ impl Model {
             self.after_impact(&st, t - tau, t_post - t)
         } else {
             // a held racket is damped: no modal closed form, step it on
-            let mut s2 = Stepper { ..st.clone() };
+            let mut s2 = st.clone();
             let (mut peak, mut meets) = (beam.bending_energy(&s2.y), false);
             let mut t2 = t;
             while t2 < t_post {
