@@ -14,6 +14,32 @@ use racket_impact::racket::Fitted;
 use racket_impact::solver::{Model, SeriesOptions};
 use racket_impact::{Error, Result};
 
+/// `print!` for the commands: a closed pipe (`racket-impact ... | head`) ends the program quietly,
+/// as a shell tool should, instead of panicking; other write errors are errors.
+macro_rules! out {
+    ($($arg:tt)*) => {
+        write_stdout(format!($($arg)*).as_bytes())?
+    };
+}
+
+/// `println!` for the commands, as [`out!`].
+macro_rules! outln {
+    ($($arg:tt)*) => {
+        write_stdout(format!("{}\n", format_args!($($arg)*)).as_bytes())?
+    };
+}
+
+/// Write to standard output; a reader that has gone away (broken pipe) ends the program with
+/// success, all files having been written before anything is printed.
+fn write_stdout(bytes: &[u8]) -> Result<()> {
+    use std::io::Write;
+    let mut lock = std::io::stdout().lock();
+    match lock.write_all(bytes).and_then(|()| lock.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => std::process::exit(0),
+        other => other.map_err(|e| Error::io("<stdout>", e)),
+    }
+}
+
 #[derive(Parser, Debug)]
 #[command(name = "racket-impact", version, about = "Ball on a flexible tennis racket: R. Cross (2000) replicated")]
 struct Cli {
@@ -395,7 +421,7 @@ fn simulate(a: SimulateArgs) -> Result<()> {
     if let (Some(path), Some(rows)) = (&a.series, &series) {
         racket_impact::output::write_series(path, rows)?;
     }
-    print!("{text}");
+    out!("{text}");
     if result.recontact {
         eprintln!("warning: the vibrating frame met the ball again after separation (re-contact not modelled)");
     }
@@ -442,7 +468,7 @@ fn modes(a: ModesArgs) -> Result<()> {
             s
         }
     };
-    print!("{text}");
+    out!("{text}");
     Ok(())
 }
 
@@ -450,7 +476,7 @@ fn figures(a: FiguresArgs) -> Result<()> {
     use racket_impact::experiments;
     if a.list {
         for e in experiments::registry() {
-            println!("{:<24} {}\n{:<24} ({})", e.id, e.title, "", e.paper_ref);
+            outln!("{:<24} {}\n{:<24} ({})", e.id, e.title, "", e.paper_ref);
         }
         return Ok(());
     }
@@ -496,13 +522,12 @@ fn report(a: ReportArgs) -> Result<()> {
     if !a.no_write {
         racket_impact::io::write_atomic(&a.out, md.as_bytes())?;
     }
-    print!("{md}");
+    out!("{md}");
     Ok(())
 }
 
 fn sweep(a: SweepArgs) -> Result<()> {
     use racket_impact::sweep::{parse_spec, Sweep};
-    use std::io::Write;
     let base = config_file(a.config.as_deref())?;
     if a.specs.len() % 2 != 0 || a.specs.is_empty() {
         return Err(Error::invalid(
@@ -541,11 +566,10 @@ fn sweep(a: SweepArgs) -> Result<()> {
         Some(path) => Some(racket_impact::io::AtomicFile::create(path)?),
         None => None,
     };
-    let stdout = std::io::stdout();
     let mut emit = |bytes: &[u8]| -> Result<()> {
         match file.as_mut() {
             Some(f) => f.write(bytes),
-            None => stdout.lock().write_all(bytes).map_err(|e| Error::io("<stdout>", e)),
+            None => write_stdout(bytes),
         }
     };
     emit(csv_line(&sweep.header()).as_bytes())?;
@@ -579,7 +603,7 @@ fn racket_cmd(a: RacketArgs) -> Result<()> {
         for name in racket::preset_names() {
             let fitted = racket::load(name)?.to_racket(a.segments)?;
             let (r, rep) = (&fitted.racket, &fitted.report);
-            println!(
+            outln!(
                 "{name:<22} {:.1} cm, {:.0} g, balance {:.1} cm, swingweight {:.0} kg cm^2, twistweight {:.1} kg cm^2, f1 {:.0} Hz, ks {:.0} N/m{}",
                 100.0 * r.length,
                 1e3 * r.mass,
@@ -641,7 +665,7 @@ fn racket_cmd(a: RacketArgs) -> Result<()> {
             format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?)
         }
     };
-    print!("{text}");
+    out!("{text}");
     Ok(())
 }
 
@@ -741,7 +765,7 @@ fn speed(a: SpeedArgs) -> Result<()> {
             s
         }
     };
-    print!("{text}");
+    out!("{text}");
     Ok(())
 }
 
@@ -897,8 +921,8 @@ fn map(a: MapArgs) -> Result<()> {
     outputs.write(&csv, &heat, &json)?;
     match a.common.format {
         Format::Text => {
-            print!("{summary}");
-            println!(
+            out!("{summary}");
+            outln!(
                 "wrote {}, {}, {} ({:.2} s)",
                 outputs.csv.display(),
                 outputs.png.display(),
@@ -906,8 +930,8 @@ fn map(a: MapArgs) -> Result<()> {
                 started.elapsed().as_secs_f64()
             );
         }
-        Format::Json => print!("{json}"),
-        Format::Csv => print!("{csv}"),
+        Format::Json => out!("{json}"),
+        Format::Csv => out!("{csv}"),
     }
     let recontacts = table.column("recontact").or_else(|| table.column("recontact_b")).unwrap_or_default();
     let n_re = recontacts.iter().filter(|&&v| v != 0.0).count();

@@ -115,7 +115,17 @@ pub fn column_name(key: &str) -> &'static str {
         "segments" => "segments",
         "load" => "load",
         "solver" => "solver",
-        _ => "dt_s",
+        "dt" => "dt_s",
+        "frame" => "frame",
+        "grip" => "grip",
+        "strings" => "strings",
+        "string-stiffening" => "string_stiffening",
+        "stiffening-deflection" => "stiffening_deflection_m",
+        "hand-stiffness" => "hand_stiffness_n_per_m",
+        "hand-damping" => "hand_damping_n_s_per_m",
+        "grip-length" => "grip_length_m",
+        // parse_spec accepts only Overrides::KEYS, all named above
+        _ => "unknown",
     }
 }
 
@@ -229,6 +239,16 @@ impl Sweep {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_key_has_its_own_column_name() {
+        let names: Vec<&str> = Overrides::KEYS.iter().map(|k| column_name(k)).collect();
+        assert!(!names.contains(&"unknown"), "{names:?}");
+        let mut unique = names.clone();
+        unique.sort_unstable();
+        unique.dedup();
+        assert_eq!(unique.len(), names.len(), "{names:?}");
+    }
 
     #[test]
     fn specs_expand_to_lists_and_ranges() {

@@ -201,3 +201,20 @@ fn a_sweep_with_a_bad_value_anywhere_writes_nothing() {
     let stdout = run(&["sweep", "--x", "0.1:0.9:5"]);
     assert!(stdout.stdout.is_empty());
 }
+
+#[test]
+fn a_reader_that_stops_early_ends_the_program_quietly() {
+    // `racket-impact sweep ... | head -1`: the pipe closes while 2000 rows (far more than a pipe
+    // buffer) are still to be written
+    let mut child = bin()
+        .args(["sweep", "--x", "0.01:0.7:2000"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "exit {:?}: {err}", out.status.code());
+    assert!(!err.contains("panicked"), "{err}");
+}
