@@ -2,328 +2,419 @@
 //!
 //! The free-free beam is written in its mass-normalised modes (rigid translation and rotation
 //! about the centre of mass exactly, flexible modes from the nalgebra eigen-decomposition of
-//! `M^-1/2 K M^-1/2`); the twist (Eq 7) and the ball (Eq 1) are rigid coordinates. Over the
-//! first step the contact force is taken linear in time, and every coordinate is then advanced
-//! *exactly*:
+//! `M^-1/2 K M^-1/2`); the twist (Eq 7) and the ball (Eq 1, as `sqrt(m_b) y_b`) are rigid
+//! coordinates. Every coordinate obeys `q'' + w^2 q = g F(t)` (`w = 0` for the ball and the rigid
+//! ones; `g` its amplitude at the load point, `-1/sqrt(m_b)` for the ball), and the total
+//! compression is `Y_T = -sum g q - R F`.
+//!
+//! Over each step of length `h` the contact force is the cubic Hermite polynomial through its
+//! values and rates at both ends, `F0, D0` (known) and `F1, D1` (unknown), and every coordinate
+//! is advanced *exactly* under it:
 //! ```text
-//! flexible   q'' + w^2 q = g F(t):  q(h) = c (q0 - g F0/w^2) + (s/w)(v0 - g F'/w^2) + g F1/w^2
-//! rigid      q'' = g F(t):          q(h) = q0 + v0 h + g h^2 (F0/3 + F1/6)
+//! q(h) = cos(w h) q0 + sin(w h)/w v0 + g (a_F0 F0 + a_D0 D0 + a_F1 F1 + a_D1 D1)
 //! ```
-//! (`c, s = cos, sin(w h)`, `F' = (F1 - F0)/h`, `g` the mode's amplitude at the load point).
-//! After the first step the force is taken as the parabola through the previous, current and end
-//! forces, `F(t) = F0 + b t + c t^2` with `b = (F1 - Fm)/(2h)`, `c = (F1 - 2 F0 + Fm)/(2h^2)`,
-//! and each mode is advanced exactly under it (particular solution `(g/w^2)(F - 2c/w^2)` plus free
-//! oscillation); this third-order force history lets the step be twice as long as with a
-//! linear one at the same accuracy.
+//! (and the same for `v(h)`), with the eight response coefficients of each mode computed once per
+//! model ([`responses`]: a power series for `w h <= 1`, the polynomial particular solution
+//! otherwise). `Y_T(h)` and `Y_T'(h)` are then affine in `(F1, D1)`, so the implicit step is the
+//! contact law at the end of the step, `F1 = F(Y_T)` and `D1 = F'(Y_T) Y_T'`: a constant 2 x 2
+//! linear solve in compression (Eq 9) and, in expansion (Eq 10), the scalar expansion law with
+//! the rate found by a fixed point (its coupling is of order `(w h)^4`).
+//! The force is continuous with a continuous rate through maximum compression (both sides have
+//! `F' = 0` there), so one polynomial per step keeps the scheme fourth order; the step is set by
+//! the stiffest contact oscillation, not by the stiffest beam mode.
+//!
 //! Only modes below a cut-off are kept; the flexibility of the others at the load point is added
-//! as a static correction `Y_T -= R F`. `Y_T(h)` is then affine in the unknown end force,
-//! `Y_T = A - B F1`, so the implicit step is one scalar solve with the contact law: linear in
-//! compression (Eq 9), and of the Eq 10 form `u + (k1/k_s + B k1) u^p = A / Y0` in expansion.
-//! The step is set by the contact, not by the stiffest beam mode. Phase switch and separation
-//! are interpolated as in [`crate::solver`]; after separation the free vibration is evaluated in
-//! closed form for the paper's peak bending PE and for re-contact.
+//! as a static correction `Y_T -= R F`. Phase switch and separation are interpolated as in
+//! [`crate::solver`]; after separation the free vibration is evaluated in closed form for the
+//! paper's peak bending PE and for re-contact.
 
 use crate::error::{Error, Result};
-use crate::model::contact::{solve_u, Contact, ContactState, Phase};
+use crate::model::contact::{pow_near, ContactState, Phase};
 use crate::model::free::FreeVibration;
 use crate::params::Params;
 use crate::solver::{hermite_eval, hermite_max, hermite_root, ImpactResult, Model};
 
-/// Keep flexible modes up to this multiple of the stiffest contact frequency.
-pub const MODE_CUTOFF: f64 = 100.0;
-/// Radians of the stiffest contact oscillation per step.
-pub const PHASE_PER_STEP: f64 = 0.01;
+/// How finely the modal solver resolves an impact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Resolution {
+    /// Keep flexible modes up to this multiple of the stiffest contact frequency.
+    pub mode_cutoff: f64,
+    /// Radians of the stiffest contact oscillation per step.
+    pub phase_per_step: f64,
+    /// Largest error of a step's contact impulse, in units of the incident momentum: a step
+    /// whose force history misses the contact law at its midpoint by more is split.
+    pub impulse_tolerance: f64,
+}
+
+/// The default resolution: modal and explicit solvers agree to 1e-4 (tests/modal.rs).
+pub const DEFAULT_RESOLUTION: Resolution =
+    Resolution { mode_cutoff: 100.0, phase_per_step: 0.15, impulse_tolerance: 1e-7 };
+
+/// Levels of step refinement below the base step, and the ratio between levels.
+const LEVELS: usize = 4;
+const REFINE: usize = 4;
+
+/// Number of rigid coordinates ahead of the flexible modes: ball, translation, rotation, twist.
+const RIGID: usize = 4;
+
+/// One coordinate's exact step under the cubic force history: free propagation and the response
+/// to each of `F0, D0, F1, D1` (already multiplied by the coordinate's `g`).
+#[derive(Debug, Clone, Copy, Default)]
+struct Step {
+    /// `cos(w h)`, `sin(w h)/w`, `-w sin(w h)`.
+    c: f64,
+    sq: f64,
+    vq: f64,
+    /// Position responses to `F0, D0, F1, D1`.
+    q: [f64; 4],
+    /// Velocity responses to `F0, D0, F1, D1`.
+    v: [f64; 4],
+}
+
+/// The step tables of one step length.
+#[derive(Debug, Clone)]
+struct Grid {
+    /// Step, s.
+    h: f64,
+    /// Per coordinate.
+    steps: Vec<Step>,
+    /// `Y_T(h) = Y_hat - bf F1 - bd D1` and `Y_T'(h) = Yd_hat - cf F1 - cd D1` (static correction
+    /// included): m/N, m s/N, 1/(N s), m/N.
+    bf: f64,
+    bd: f64,
+    cf: f64,
+    cd: f64,
+    /// Compression: `(F1, D1) = M (Y_hat, Yd_hat)`.
+    compression: [[f64; 2]; 2],
+}
+
+impl Grid {
+    fn new(m: &ModalModel, h: f64) -> Grid {
+        let steps: Vec<Step> = m
+            .lam
+            .iter()
+            .zip(&m.omega)
+            .zip(&m.g)
+            .map(|((&l, &w), &gj)| {
+                let (rq, rv) = responses(l, h);
+                let (hq, hv) = (hermite(rq, h), hermite(rv, h));
+                let (s, c) = (w * h).sin_cos();
+                let sq = if w > 0.0 { s / w } else { h };
+                Step { c, sq, vq: -w * s, q: hq.map(|a| gj * a), v: hv.map(|a| gj * a) }
+            })
+            .collect();
+        let sum = |f: &dyn Fn(&Step) -> f64| m.g.iter().zip(&steps).map(|(gj, st)| gj * f(st)).sum::<f64>();
+        let bf = sum(&|st| st.q[2]) + m.residual;
+        let bd = sum(&|st| st.q[3]);
+        let cf = sum(&|st| st.v[2]);
+        let cd = sum(&|st| st.v[3]) + m.residual;
+        // F1 = ks (Y_hat - bf F1 - bd D1), D1 = ks (Yd_hat - cf F1 - cd D1)
+        let ks = m.base.contact.compression_stiffness();
+        let (a11, a12, a21, a22) = (1.0 + ks * bf, ks * bd, ks * cf, 1.0 + ks * cd);
+        let det = a11 * a22 - a12 * a21;
+        let compression = [[ks * a22 / det, -ks * a12 / det], [-ks * a21 / det, ks * a11 / det]];
+        Grid { h, steps, bf, bd, cf, cd, compression }
+    }
+}
 
 /// A prepared modal model of one impact.
 #[derive(Debug, Clone)]
 pub struct ModalModel {
     base: Model,
-    /// Retained flexible modes: w^2, w, load-point amplitude, cos(w h), sin(w h).
+    /// Per coordinate (rigid first, then the retained flexible modes): `w^2`, `w`, `g`.
     lam: Vec<f64>,
     omega: Vec<f64>,
     g: Vec<f64>,
-    cos: Vec<f64>,
-    sin: Vec<f64>,
-    /// The first step's force history (a line from 0) and every later one's (a parabola
-    /// through the previous, the current and the end force).
-    first: Scheme,
-    later: Scheme,
-    /// Load-point amplitudes of the rigid coordinates: translation, rotation, twist.
-    g_rigid: [f64; 3],
     /// Static flexibility of the truncated modes at the load point, m/N.
     residual: f64,
-    /// Step, s.
-    h: f64,
+    /// Largest impulse error allowed per step, N s.
+    impulse_tolerance: f64,
+    /// Step tables: the base step, then each level `REFINE` times shorter (built when needed).
+    grids: [std::sync::OnceLock<Grid>; LEVELS],
 }
 
-/// How the force varies over a step: `F(t) = F0 + b t + c t^2` on `[0, h]` with
-/// `b = b0 + b1 F1` and `c = c0 + c1 F1` (`b0, c0` from the known forces), so that the end state
-/// is affine in the unknown end force `F1`.
-#[derive(Debug, Clone)]
-struct Scheme {
-    /// `b1` (1/s) and `c1` (1/s^2).
-    b1: f64,
-    c1: f64,
-    /// End-state response to `F1`: flexible modes (position, velocity), and per unit amplitude
-    /// `g` for the rigid coordinates (and, with `g = -1/m_b`, the ball).
-    resp_q: Vec<f64>,
-    resp_v: Vec<f64>,
-    rigid_q: f64,
-    rigid_v: f64,
-    /// Compliance `B` of `Y_T(h) = A - B F1`, m/N.
-    compliance: f64,
-}
-
-impl Scheme {
-    /// The response of a step to `F1` through `b1, c1`, from the exact solution of
-    /// `q'' + w^2 q = g (F0 + b t + c t^2)`: the particular solution is
-    /// `(g/w^2) (F(t) - 2c/w^2)` and the rest is free oscillation.
-    fn new(b1: f64, c1: f64, h: f64, m: &ModalModel, mb: f64) -> Scheme {
-        let mut resp_q = Vec::with_capacity(m.lam.len());
-        let mut resp_v = Vec::with_capacity(m.lam.len());
-        for k in 0..m.lam.len() {
-            let (l, w, g, c, s) = (m.lam[k], m.omega[k], m.g[k], m.cos[k], m.sin[k]);
-            resp_q.push(g / l * (b1 * h + c1 * h * h - 2.0 * c1 / l * (1.0 - c) - s / w * b1));
-            resp_v.push(g / l * (b1 * (1.0 - c) + 2.0 * c1 * (h - s / w)));
+/// `q(h)` and `q'(h)` of `q'' + lam q = t^m`, `q(0) = q'(0) = 0`, for `m = 0..=3`.
+fn responses(lam: f64, h: f64) -> ([f64; 4], [f64; 4]) {
+    let mut q = [0.0; 4];
+    let mut v = [0.0; 4];
+    let x = lam * h * h;
+    if x <= 1.0 {
+        // q = m! sum_n (-lam)^n h^(2n+m+2) / (2n+m+2)!, v = m! sum_n (-lam)^n h^(2n+m+1) / (2n+m+1)!
+        let mut fact = 1.0; // m!
+        for m in 0..4 {
+            if m > 0 {
+                fact *= m as f64;
+            }
+            let mf = m as f64;
+            let mut tv = fact * h.powi(m as i32 + 1) / (1..=m + 1).map(|i| i as f64).product::<f64>();
+            let mut tq = tv * h / (mf + 2.0);
+            let (mut sq, mut sv) = (0.0, 0.0);
+            for n in 0..40 {
+                sq += tq;
+                sv += tv;
+                if tq.abs() <= 1e-18 * sq.abs() && tv.abs() <= 1e-18 * sv.abs() {
+                    break;
+                }
+                let k = 2.0 * n as f64 + mf;
+                tq *= -x / ((k + 3.0) * (k + 4.0));
+                tv *= -x / ((k + 2.0) * (k + 3.0));
+            }
+            q[m] = sq;
+            v[m] = sv;
         }
-        let rigid_q = b1 * h.powi(3) / 6.0 + c1 * h.powi(4) / 12.0;
-        let rigid_v = b1 * h * h / 2.0 + c1 * h.powi(3) / 3.0;
-        let g2_rigid: f64 = m.g_rigid.iter().map(|g| g * g).sum();
-        let flexible: f64 = m.g.iter().zip(&resp_q).map(|(g, r)| g * r).sum();
-        let compliance = rigid_q / mb + g2_rigid * rigid_q + m.residual + flexible;
-        Scheme { b1, c1, resp_q, resp_v, rigid_q, rigid_v, compliance }
+    } else {
+        // particular solutions qp = t^m/lam - m(m-1) t^(m-2)/lam^2, plus free oscillation
+        let w = lam.sqrt();
+        let (s, c) = (w * h).sin_cos();
+        let qp = |m: usize, t: f64| match m {
+            0 => 1.0 / lam,
+            1 => t / lam,
+            2 => t * t / lam - 2.0 / (lam * lam),
+            _ => t * t * t / lam - 6.0 * t / (lam * lam),
+        };
+        let vp = |m: usize, t: f64| match m {
+            0 => 0.0,
+            1 => 1.0 / lam,
+            2 => 2.0 * t / lam,
+            _ => 3.0 * t * t / lam - 6.0 / (lam * lam),
+        };
+        for m in 0..4 {
+            let (q0, v0) = (qp(m, 0.0), vp(m, 0.0));
+            q[m] = qp(m, h) - c * q0 - s / w * v0;
+            v[m] = vp(m, h) + w * s * q0 - c * v0;
+        }
     }
+    (q, v)
+}
+
+/// Responses to the four cubic Hermite basis functions on `[0, h]` (`F0, D0, F1, D1`).
+fn hermite(r: [f64; 4], h: f64) -> [f64; 4] {
+    let (h2, h3) = (h * h, h * h * h);
+    [
+        r[0] - 3.0 * r[2] / h2 + 2.0 * r[3] / h3,
+        r[1] - 2.0 * r[2] / h + r[3] / h2,
+        3.0 * r[2] / h2 - 2.0 * r[3] / h3,
+        -r[2] / h + r[3] / h2,
+    ]
 }
 
 impl ModalModel {
     /// Validate, decompose the beam and choose the retained modes and the step.
     pub fn new(params: &Params) -> Result<Self> {
+        Self::with_resolution(params, DEFAULT_RESOLUTION)
+    }
+
+    /// As [`ModalModel::new`] with a chosen resolution (for convergence studies).
+    pub fn with_resolution(params: &Params, res: Resolution) -> Result<Self> {
         let base = Model::new(params)?;
         let beam = &base.beam;
         let basis = std::sync::Arc::clone(&base.basis);
         let lp = base.load;
         let at_load = |phi: &[f64]| lp.weights[0] * phi[lp.nodes[0]] + lp.weights[1] * phi[lp.nodes[1]];
+        let mb = params.ball.mass;
         let g_t = 1.0 / beam.total_mass.sqrt();
         let g_r = (lp.x_load - beam.x_cm) / beam.i_cm.sqrt();
         let g_tw = params.impact.r / params.racket.ix.sqrt();
-        let g2_rigid = g_t * g_t + g_r * g_r + g_tw * g_tw;
         let k_c = base.contact.max_stiffness();
-        let omega_contact = (k_c * (1.0 / params.ball.mass + g2_rigid)).sqrt();
-        let h = PHASE_PER_STEP / omega_contact;
-        let cutoff = MODE_CUTOFF * omega_contact;
-        let (mut lam, mut omega, mut g, mut cos, mut sin) = (vec![], vec![], vec![], vec![], vec![]);
+        let omega_contact = (k_c * (1.0 / mb + g_t * g_t + g_r * g_r + g_tw * g_tw)).sqrt();
+        let h = res.phase_per_step / omega_contact;
+        let cutoff = res.mode_cutoff * omega_contact;
+        let mut lam = vec![0.0; RIGID];
+        let mut g = vec![-1.0 / mb.sqrt(), g_t, g_r, g_tw];
         let mut residual = 0.0;
         for (l, phi) in basis.lam.iter().zip(&basis.shapes) {
             let gk = at_load(phi);
-            let w = l.sqrt();
-            if w <= cutoff {
+            if l.sqrt() <= cutoff {
                 lam.push(*l);
-                omega.push(w);
                 g.push(gk);
-                cos.push((w * h).cos());
-                sin.push((w * h).sin());
             } else {
                 residual += gk * gk / l;
             }
         }
-        let empty =
-            Scheme { b1: 0.0, c1: 0.0, resp_q: vec![], resp_v: vec![], rigid_q: 0.0, rigid_v: 0.0, compliance: 0.0 };
-        let mut m = ModalModel {
-            base,
-            lam,
-            omega,
-            g,
-            cos,
-            sin,
-            first: empty.clone(),
-            later: empty,
-            g_rigid: [g_t, g_r, g_tw],
-            residual,
-            h,
-        };
-        let mb = params.ball.mass;
-        // first step: F rises linearly from 0; later: b = (F1 - Fm)/(2h), c = (F1 - 2 F0 + Fm)/(2 h^2)
-        m.first = Scheme::new(1.0 / h, 0.0, h, &m, mb);
-        m.later = Scheme::new(0.5 / h, 0.5 / (h * h), h, &m, mb);
+        let omega: Vec<f64> = lam.iter().map(|l| l.sqrt()).collect();
+        let impulse_tolerance = res.impulse_tolerance * mb * params.impact.v1;
+        let m = ModalModel { base, lam, omega, g, residual, impulse_tolerance, grids: Default::default() };
+        let grid = Grid::new(&m, h);
+        let _ = m.grids[0].set(grid);
         Ok(m)
+    }
+
+    /// The step tables of a refinement level.
+    fn grid(&self, level: usize) -> &Grid {
+        self.grids[level].get_or_init(|| {
+            let h = self.grids[0].get().expect("base grid").h / (REFINE as f64).powi(level as i32);
+            Grid::new(self, h)
+        })
     }
 
     /// Number of retained flexible modes.
     pub fn retained_modes(&self) -> usize {
-        self.lam.len()
+        self.lam.len() - RIGID
     }
 
-    /// The step, s.
+    /// The base step, s.
     pub fn step(&self) -> f64 {
-        self.h
+        self.grid(0).h
     }
 
     /// Run the impact.
     pub fn run(&self) -> Result<ImpactResult> {
         let p = &self.base.params;
-        let c = &self.base.contact;
         let (mb, v1) = (p.ball.mass, p.impact.v1);
-        let h = self.h;
-        let e0 = 0.5 * mb * v1 * v1;
-        let kmodes = self.lam.len();
-        let g_t = self.g_rigid[0];
-        // state: ball, rigid (translation, rotation, twist), flexible modes
-        let mut s = State { yb: 0.0, vb: v1, rq: [0.0; 3], rv: [0.0; 3], q: vec![0.0; kmodes], v: vec![0.0; kmodes] };
-        let mut next = s.clone();
-        let mut phase = Phase::Compression;
-        let (mut f0, mut fm, mut t, mut yt0, mut ytd0) = (0.0, 0.0, 0.0, 0.0, v1);
-        let (mut u, mut y0, mut t_max) = ((0.0, 0.0), 0.0, 0.0);
-        let (mut peak_force, mut energy_err, mut momentum_err): (f64, f64, f64) = (0.0, 0.0, 0.0);
-        let alpha = c.k1 / c.ks;
-        let k_series = c.compression_stiffness();
-        let p0 = mb * v1;
+        let n = self.lam.len();
+        let ks = self.base.contact.compression_stiffness();
+        let mut s = State { q: vec![0.0; n], v: vec![0.0; n] };
+        s.v[0] = mb.sqrt() * v1;
+        // F = ks Y_T with Y_T' = v1 - R F' at first touch
+        let d0 = ks * v1 / (1.0 + ks * self.residual);
+        let mut run = Run {
+            m: self,
+            next: s.clone(),
+            s,
+            at: End { f: 0.0, d: d0, yt: 0.0, ytd: d0 / ks, phase: Phase::Compression, u: (0.0, 0.0), t_max: 0.0 },
+            t: 0.0,
+            peak_force: 0.0,
+            energy_err: 0.0,
+            momentum_err: 0.0,
+            separated: None,
+        };
         let limit = self.base.time_limit_s;
-        loop {
-            if t > limit {
+        while run.separated.is_none() {
+            if run.t > limit {
                 return Err(Error::ImpactDidNotEnd { limit_s: limit });
             }
-            // the force history of this step, less its end-force part: F0 + b0 t + c0 t^2
-            let (scheme, b0, c0) = if t == 0.0 {
-                (&self.first, -f0 / h, 0.0)
+            run.advance(0)?;
+        }
+        let (tau, theta) = run.separated.unwrap_or_default();
+        let y0 = match run.at.phase {
+            Phase::Expansion { y0 } => y0,
+            Phase::Compression => 0.0,
+        };
+        self.finish(&run.s, run.t - tau, y0, tau, theta, run.at.t_max, run.peak_force, run.energy_err, run.momentum_err)
+    }
+
+    /// Advance `s` over one step with the end force and rate zero into `out`; returns
+    /// `(Y_T, Y_T')` of that prediction.
+    fn predict(&self, grid: &Grid, s: &State, f0: f64, d0: f64, out: &mut State) -> (f64, f64) {
+        let (mut y, mut yd) = (0.0, 0.0);
+        let n = self.lam.len();
+        let (q0, v0, q1, v1, steps, g) =
+            (&s.q[..n], &s.v[..n], &mut out.q[..n], &mut out.v[..n], &grid.steps[..n], &self.g[..n]);
+        for j in 0..n {
+            let st = &steps[j];
+            let qh = st.c * q0[j] + st.sq * v0[j] + st.q[0] * f0 + st.q[1] * d0;
+            let vh = st.vq * q0[j] + st.c * v0[j] + st.v[0] * f0 + st.v[1] * d0;
+            q1[j] = qh;
+            v1[j] = vh;
+            y -= g[j] * qh;
+            yd -= g[j] * vh;
+        }
+        (y, yd)
+    }
+
+    /// Add the end force and rate to a predicted step; returns the coordinates' energy, J.
+    fn correct(&self, grid: &Grid, out: &mut State, f1: f64, d1: f64) -> f64 {
+        let mut e = 0.0;
+        let n = self.lam.len();
+        let (q, v, steps, lam) = (&mut out.q[..n], &mut out.v[..n], &grid.steps[..n], &self.lam[..n]);
+        for j in 0..n {
+            let st = &steps[j];
+            q[j] += st.q[2] * f1 + st.q[3] * d1;
+            v[j] += st.v[2] * f1 + st.v[3] * d1;
+            e += v[j] * v[j] + lam[j] * q[j] * q[j];
+        }
+        0.5 * e
+    }
+
+    /// The end force and rate of a step in expansion from the prediction `(Y_hat, Yd_hat)`:
+    /// Eq 10, `u + (k1/k_s + bf k1) u^p = z` with `z = (Y_hat - bd D1) / Y0`, by Halley's method
+    /// (Newton far from the root) from `start = (u, u^p)`, and `D1 = F'(Y_T) Y_T'` updated from
+    /// each iterate from its first guess `d_guess` (its coupling `bd` is of order `h^3`). The
+    /// power of each iterate is carried from the previous one ([`pow_near`]), so a good start
+    /// needs no power function. `Ok(None)` when the ball has left.
+    fn expansion_end(
+        &self,
+        grid: &Grid,
+        y0: f64,
+        pred: (f64, f64),
+        start: (f64, f64),
+        d_guess: f64,
+    ) -> Result<Option<Contact1>> {
+        let c = &self.base.contact;
+        let (yh, ydh) = pred;
+        if yh <= 0.0 {
+            return Ok(None);
+        }
+        let (alpha, p) = (c.k1 / c.ks, c.p);
+        let beta = alpha + grid.bf * c.k1;
+        let inv_y0 = 1.0 / y0;
+        let (mut u, mut up) = start;
+        let mut d1 = d_guess;
+        if !(u > 0.0 && up > 0.0 && u <= 1.0) {
+            // no usable start: the upper bound min(z, 1) of the root
+            u = (yh * inv_y0).min(1.0);
+            up = u.powf(p);
+        }
+        for _ in 0..100 {
+            let z = (yh - grid.bd * d1) * inv_y0;
+            if z <= 0.0 {
+                return Ok(None);
+            }
+            let inv_u = 1.0 / u;
+            let r = p * up * inv_u;
+            let hu = u + beta * up - z;
+            let slope = 1.0 + beta * r;
+            let newton = hu / slope;
+            // Halley's correction near the root (the function is increasing and convex, so far
+            // from it plain Newton is safe: from the left it lands right of the root, from the
+            // right it stays there)
+            let step = if newton.abs() < 1e-2 * u {
+                hu / (slope - 0.5 * newton * beta * (p - 1.0) * r * inv_u)
             } else {
-                (&self.later, -fm / (2.0 * h), (fm - 2.0 * f0) / (2.0 * h * h))
+                newton
             };
-            let rate_at_end = |f1: f64| b0 + scheme.b1 * f1 + 2.0 * h * (c0 + scheme.c1 * f1);
-            // A = Y_T(h) with F1 = 0
-            let a = self.advance(&s, f0, b0, c0, &mut next);
-            let bc = scheme.compliance;
-            let f1 = match phase {
-                Phase::Compression => (k_series * a / (1.0 + k_series * bc)).max(0.0),
-                Phase::Expansion { y0 } => self.expansion_force(c, alpha, y0, a, bc, &mut u)?,
-            };
-            self.add_end_force(scheme, &mut next, f1);
-            let mut yt1 = a - bc * f1;
-            let mut ytd1 = self.yt_rate(&next, rate_at_end(f1));
-            let mut f_end = f1;
-            if phase == Phase::Compression && ytd1 <= 0.0 {
-                let (sm, ytm) = hermite_max(yt0, ytd0, yt1, ytd1, h);
-                t_max = t + sm * h;
-                y0 = c.ball_compression_at_max(ytm);
-                phase = Phase::Expansion { y0 };
-                u = (1.0, 1.0);
-                f_end = self.expansion_force(c, alpha, y0, a, bc, &mut u)?;
-                self.add_end_force(scheme, &mut next, f_end - f1);
-                yt1 = a - bc * f_end;
-                ytd1 = self.yt_rate(&next, rate_at_end(f_end));
+            let next = if u - step > 0.0 { u - step } else { 0.5 * u };
+            up = pow_near(next, (u, up), p);
+            u = next;
+            // dF/dY_T along Eq 10 with the strings in series, and the rate from it
+            let r = p * up / u;
+            let f1 = c.k1 * y0 * up;
+            let d_new = c.k1 * r * (ydh - grid.cf * f1) / (1.0 + r * (alpha + c.k1 * grid.cd));
+            let moved = (grid.bd * (d_new - d1)).abs();
+            d1 = d_new;
+            if step.abs() <= 1e-10 * u && moved <= 1e-12 * y0 {
+                return Ok(Some(Contact1 { f: f1, d: d1, u: (u, up) }));
             }
-            std::mem::swap(&mut s, &mut next);
-            t += h;
-            peak_force = peak_force.max(f_end);
-            let st = self.contact_state(c, phase, f_end, y0, u);
-            let e = self.energy(&s, c, phase, &st);
-            energy_err = energy_err.max((e - e0).abs() / e0);
-            let pm = mb * s.vb + s.rv[0] / g_t;
-            momentum_err = momentum_err.max((pm - p0).abs() / p0);
-            if matches!(phase, Phase::Expansion { .. }) && f_end <= 0.0 {
-                let sc = hermite_root(yt0, ytd0, yt1, ytd1, h);
-                let tau = t - h + sc * h;
-                // twist angle at the crossing (`next` now holds the state before the step)
-                let theta = hermite_eval(next.rq[2], next.rv[2], s.rq[2], s.rv[2], h, sc) / p.racket.ix.sqrt();
-                return self.finish(&s, t - tau, y0, tau, theta, t_max, peak_force, energy_err, momentum_err);
-            }
-            fm = f0;
-            f0 = f_end;
-            yt0 = yt1;
-            ytd0 = ytd1;
         }
+        Err(Error::ContactSolve { z: yh * inv_y0 })
     }
 
-    /// The end force of a step in expansion, from `Y_T(h) = A - B F1` and Eq 10.
-    fn expansion_force(&self, c: &Contact, alpha: f64, y0: f64, a: f64, b: f64, u: &mut (f64, f64)) -> Result<f64> {
-        if a <= 0.0 {
-            *u = (0.0, 0.0);
-            return Ok(0.0);
+    /// The force error of a cubic history whose midpoint force is `f` against the expansion law
+    /// at the midpoint compression `ym`: `F'(Y) (Y_law(f) - ym)`, with Eq 10 inverted explicitly
+    /// (`Y_law(F) = Y0 u + F/k_s`, `u = (F/(k1 Y0))^(1/p)`), N.
+    fn expansion_miss(&self, y0: f64, ym: f64, f: f64) -> f64 {
+        let c = &self.base.contact;
+        if f <= 0.0 {
+            // the law is zero wherever Y_T <= 0, and no negative force is physical
+            return if ym > 0.0 { -c.compression_stiffness() * ym } else { f };
         }
-        *u = solve_u(alpha + b * c.k1, c.p, a / y0, *u)?;
-        Ok(c.k1 * y0 * u.1)
+        let up = f / (c.k1 * y0);
+        let u = up.powf(1.0 / c.p);
+        let r = c.p * up / u;
+        let kappa = c.k1 * r / (1.0 + r * c.k1 / c.ks);
+        kappa * (y0 * u + f / c.ks - ym)
     }
 
-    /// Advance `s` over one step with the force `F0 + b t + c t^2` into `out` (exactly, mode by
-    /// mode); returns `Y_T` at the end of the step.
-    fn advance(&self, s: &State, f0: f64, b: f64, c: f64, out: &mut State) -> f64 {
-        let h = self.h;
-        let mb = self.base.params.ball.mass;
-        let (h2, h3, h4) = (h * h, h * h * h, h * h * h * h);
-        let dq = f0 * h2 / 2.0 + b * h3 / 6.0 + c * h4 / 12.0;
-        let dv = f0 * h + b * h2 / 2.0 + c * h3 / 3.0;
-        out.yb = s.yb + s.vb * h - dq / mb;
-        out.vb = s.vb - dv / mb;
-        let mut y_imp = 0.0;
-        for i in 0..3 {
-            let g = self.g_rigid[i];
-            out.rq[i] = s.rq[i] + s.rv[i] * h + g * dq;
-            out.rv[i] = s.rv[i] + g * dv;
-            y_imp += g * out.rq[i];
-        }
-        let fh = f0 + b * h + c * h2;
-        for k in 0..self.lam.len() {
-            let (l, w, g, cs, sn) = (self.lam[k], self.omega[k], self.g[k], self.cos[k], self.sin[k]);
-            let gl = g / l;
-            let (qp0, vp0) = (gl * (f0 - 2.0 * c / l), gl * b);
-            let (qph, vph) = (gl * (fh - 2.0 * c / l), gl * (b + 2.0 * c * h));
-            let (qh, vh) = (s.q[k] - qp0, s.v[k] - vp0);
-            out.q[k] = qph + cs * qh + sn / w * vh;
-            out.v[k] = vph - w * sn * qh + cs * vh;
-            y_imp += g * out.q[k];
-        }
-        out.yb - y_imp - self.residual * fh
-    }
-
-    /// Add `df` to the end force of a step already advanced (`Y_T` changes by `-B df`).
-    fn add_end_force(&self, scheme: &Scheme, out: &mut State, df: f64) {
-        let mb = self.base.params.ball.mass;
-        out.yb -= scheme.rigid_q * df / mb;
-        out.vb -= scheme.rigid_v * df / mb;
-        for i in 0..3 {
-            out.rq[i] += self.g_rigid[i] * scheme.rigid_q * df;
-            out.rv[i] += self.g_rigid[i] * scheme.rigid_v * df;
-        }
-        for ((q, v), (rq, rv)) in out.q.iter_mut().zip(out.v.iter_mut()).zip(scheme.resp_q.iter().zip(&scheme.resp_v)) {
-            *q += rq * df;
-            *v += rv * df;
-        }
-    }
-
-    /// `dY_T/dt` of a state whose force changes at rate `fdot`.
-    fn yt_rate(&self, s: &State, fdot: f64) -> f64 {
-        let mut v = s.vb;
-        for i in 0..3 {
-            v -= self.g_rigid[i] * s.rv[i];
-        }
-        for k in 0..self.lam.len() {
-            v -= self.g[k] * s.v[k];
-        }
-        v - self.residual * fdot
-    }
-
-    fn contact_state(&self, c: &Contact, phase: Phase, f: f64, y0: f64, u: (f64, f64)) -> ContactState {
+    fn contact_state(&self, phase: Phase, f: f64, u: (f64, f64)) -> ContactState {
+        let c = &self.base.contact;
         match phase {
             Phase::Compression => {
                 ContactState { force: f, ball_compression: f / c.k1, u: 0.0, u_pow: 0.0, string_deflection: f / c.ks }
             }
-            Phase::Expansion { .. } => {
+            Phase::Expansion { y0 } => {
                 ContactState { force: f, ball_compression: u.0 * y0, u: u.0, u_pow: u.1, string_deflection: f / c.ks }
             }
         }
-    }
-
-    /// Total energy (J): ball, ball store and loss, strings, modes, static correction.
-    fn energy(&self, s: &State, c: &Contact, phase: Phase, st: &ContactState) -> f64 {
-        let mb = self.base.params.ball.mass;
-        let mut e = 0.5 * mb * s.vb * s.vb + c.ball_energy_with_loss(phase, st) + c.string_energy(st);
-        e += 0.5 * self.residual * st.force * st.force;
-        for i in 0..3 {
-            e += 0.5 * s.rv[i] * s.rv[i];
-        }
-        for k in 0..self.lam.len() {
-            e += 0.5 * (s.v[k] * s.v[k] + self.lam[k] * s.q[k] * s.q[k]);
-        }
-        e
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -341,8 +432,8 @@ impl ModalModel {
     ) -> Result<ImpactResult> {
         let p = &self.base.params;
         let e0 = 0.5 * p.ball.mass * p.impact.v1 * p.impact.v1;
-        let e_a = -s.vb / p.impact.v1;
-        let vib: f64 = (0..self.lam.len()).map(|k| 0.5 * (s.v[k] * s.v[k] + self.lam[k] * s.q[k] * s.q[k])).sum();
+        let e_a = -s.v[0] / (p.ball.mass.sqrt() * p.impact.v1);
+        let vib: f64 = (RIGID..self.lam.len()).map(|k| 0.5 * (s.v[k] * s.v[k] + self.lam[k] * s.q[k] * s.q[k])).sum();
         let (peak_pe, recontact) = self.after_impact(s, since_separation);
         let result = ImpactResult {
             e_a,
@@ -352,8 +443,8 @@ impl ModalModel {
             f_vib: vib / e0,
             f_vib_peak_pe: peak_pe / e0,
             f_hand: 0.0,
-            f_spin: 0.5 * s.rv[2] * s.rv[2] / e0,
-            f_rigid: 0.5 * (s.rv[0] * s.rv[0] + s.rv[1] * s.rv[1]) / e0,
+            f_spin: 0.5 * s.v[3] * s.v[3] / e0,
+            f_rigid: 0.5 * (s.v[1] * s.v[1] + s.v[2] * s.v[2]) / e0,
             f_ke_ball: e_a * e_a,
             peak_force_n: peak_force,
             energy_error: energy_err,
@@ -362,7 +453,7 @@ impl ModalModel {
             t_max_compression_s: t_max,
             y0_m: y0,
             recontact,
-            dt_s: self.h,
+            dt_s: self.step(),
         };
         result.check_finite()?;
         Ok(result)
@@ -372,21 +463,196 @@ impl ModalModel {
     /// whether the frame meets the ball again within that window, in closed form
     /// ([`FreeVibration`]). `s` is the state `lag` seconds after separation.
     fn after_impact(&self, s: &State, lag: f64) -> (f64, bool) {
-        let free = FreeVibration::new(&self.omega, &s.q, &s.v, &self.g);
+        let flex = RIGID..self.lam.len();
+        let free = FreeVibration::new(&self.omega[flex.clone()], &s.q[flex.clone()], &s.v[flex.clone()], &self.g[flex]);
         let window = 2.0 / self.base.f1_hz;
         let peak = free.peak_pe(-lag, window - lag);
-        let gap0 = s.yb - (0..3).map(|i| self.g_rigid[i] * s.rq[i]).sum::<f64>();
-        let rate = s.vb - (0..3).map(|i| self.g_rigid[i] * s.rv[i]).sum::<f64>();
+        // the gap Y_T without the flexible modes: the ball and the rigid racket
+        let gap0 = -(0..RIGID).map(|i| self.g[i] * s.q[i]).sum::<f64>();
+        let rate = -(0..RIGID).map(|i| self.g[i] * s.v[i]).sum::<f64>();
         (peak, free.meets_ball(gap0, rate, window - lag))
     }
 }
 
 #[derive(Debug, Clone)]
 struct State {
-    yb: f64,
-    vb: f64,
-    rq: [f64; 3],
-    rv: [f64; 3],
     q: Vec<f64>,
     v: Vec<f64>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `q(h), q'(h)` of `q'' + lam q = t^m` by RK4 steps of 2e-3 radian.
+    fn rk4(lam: f64, h: f64, m: i32) -> (f64, f64) {
+        let n = ((lam.sqrt() * h / 2e-3).ceil() as usize).max(2000);
+        let dt = h / n as f64;
+        let f = |t: f64, q: f64| t.powi(m) - lam * q;
+        let (mut q, mut v) = (0.0, 0.0);
+        for i in 0..n {
+            let t = i as f64 * dt;
+            let (k1q, k1v) = (v, f(t, q));
+            let (k2q, k2v) = (v + 0.5 * dt * k1v, f(t + 0.5 * dt, q + 0.5 * dt * k1q));
+            let (k3q, k3v) = (v + 0.5 * dt * k2v, f(t + 0.5 * dt, q + 0.5 * dt * k2q));
+            let (k4q, k4v) = (v + dt * k3v, f(t + dt, q + dt * k3q));
+            q += dt / 6.0 * (k1q + 2.0 * k2q + 2.0 * k3q + k4q);
+            v += dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+        }
+        (q, v)
+    }
+
+    #[test]
+    fn step_responses_match_direct_integration_on_both_branches() {
+        let h = 1e-4;
+        // lam h^2: rigid, the series branch, both sides of the switch, the closed form
+        for x in [0.0, 1e-6, 0.3, 0.999, 1.001, 4.0, 100.0, 1e4] {
+            let lam = x / (h * h);
+            let (q, v) = responses(lam, h);
+            for m in 0..4 {
+                let (qr, vr) = rk4(lam, h, m as i32);
+                // each compared with the natural size of the response, without and with the spring
+                let scale_q = h.powi(m as i32 + 2) / (1.0 + x);
+                let scale_v = h.powi(m as i32 + 1) / (1.0 + x.sqrt());
+                assert!((q[m] - qr).abs() <= 1e-9 * scale_q, "q, lam h^2 = {x}, m = {m}: {} vs {qr}", q[m]);
+                assert!((v[m] - vr).abs() <= 1e-9 * scale_v, "v, lam h^2 = {x}, m = {m}: {} vs {vr}", v[m]);
+            }
+        }
+    }
+
+    #[test]
+    fn the_two_branches_meet() {
+        let h = 2e-4;
+        let below = responses((1.0 - 1e-12) / (h * h), h);
+        let above = responses((1.0 + 1e-12) / (h * h), h);
+        for m in 0..4 {
+            assert!((below.0[m] / above.0[m] - 1.0).abs() < 1e-11, "q m {m}");
+            assert!((below.1[m] / above.1[m] - 1.0).abs() < 1e-11, "v m {m}");
+        }
+    }
+}
+
+/// The expansion law's end force (N), rate (N/s) and `(u, u^p)` of a step.
+#[derive(Debug, Clone, Copy, Default)]
+struct Contact1 {
+    f: f64,
+    d: f64,
+    u: (f64, f64),
+}
+
+/// The contact at the end of a step.
+#[derive(Debug, Clone, Copy)]
+struct End {
+    /// Force, N, and its rate, N/s.
+    f: f64,
+    d: f64,
+    /// Total compression `Y_T`, m, and its rate, m/s.
+    yt: f64,
+    ytd: f64,
+    phase: Phase,
+    /// `(u, u^p)` of the expansion law.
+    u: (f64, f64),
+    /// Time of maximum compression, s (once passed).
+    t_max: f64,
+}
+
+/// An impact in progress.
+struct Run<'a> {
+    m: &'a ModalModel,
+    s: State,
+    next: State,
+    at: End,
+    t: f64,
+    peak_force: f64,
+    energy_err: f64,
+    momentum_err: f64,
+    /// Contact time and twist angle at separation, once it has happened.
+    separated: Option<(f64, f64)>,
+}
+
+impl Run<'_> {
+    /// Take one step of the given level, or, if its force history misses the contact law by
+    /// more than the tolerance, `REFINE` steps of the next level.
+    fn advance(&mut self, level: usize) -> Result<()> {
+        let m = self.m;
+        let grid = m.grid(level);
+        let h = grid.h;
+        let c = &m.base.contact;
+        let ks = c.compression_stiffness();
+        let a = self.at;
+        let (yh, ydh) = m.predict(grid, &self.s, a.f, a.d, &mut self.next);
+        let mut end = a;
+        let (mut f1, mut d1) = match a.phase {
+            Phase::Compression => {
+                let [m0, m1] = grid.compression;
+                (m0[0] * yh + m0[1] * ydh, m1[0] * yh + m1[1] * ydh)
+            }
+            Phase::Expansion { y0 } => {
+                // start from the previous u moved along its rate: dY_T = Y0 (1 + alpha p u^(p-1)) du
+                let (u0, up0) = a.u;
+                let r0 = if u0 > 0.0 { c.p * up0 / u0 } else { 0.0 };
+                let u1 = u0 + h * a.ytd / (y0 * (1.0 + r0 * c.k1 / c.ks));
+                let start = if u1 > 0.0 { (u1, pow_near(u1, a.u, c.p)) } else { (0.0, 0.0) };
+                let e = m.expansion_end(grid, y0, (yh, ydh), start, a.d)?.unwrap_or_default();
+                end.u = e.u;
+                (e.f, e.d)
+            }
+        };
+        let mut switch = None;
+        if a.phase == Phase::Compression && d1 <= 0.0 {
+            // maximum compression within this step: Y_T = F/ks on its compression side
+            let (sm, ytm) = hermite_max(a.yt, a.ytd, f1 / ks, d1 / ks, h);
+            end.t_max = self.t + sm * h;
+            let y0 = c.ball_compression_at_max(ytm);
+            end.phase = Phase::Expansion { y0 };
+            let e = m.expansion_end(grid, y0, (yh, ydh), (1.0, 1.0), 0.0)?.unwrap_or_default();
+            end.u = e.u;
+            (f1, d1) = (e.f, e.d);
+            switch = Some(sm);
+        }
+        end.f = f1;
+        end.d = d1;
+        end.yt = yh - grid.bf * f1 - grid.bd * d1;
+        end.ytd = ydh - grid.cf * f1 - grid.cd * d1;
+        if let (Phase::Expansion { y0 }, true) = (end.phase, level + 1 < LEVELS) {
+            // the cubic force history against the contact law at the midpoint
+            let ym = hermite_eval(a.yt, a.ytd, end.yt, end.ytd, h, 0.5);
+            let cubic = 0.5 * (a.f + f1) + h * (a.d - d1) / 8.0;
+            let miss = match switch {
+                Some(sm) if sm > 0.5 => cubic - ks * ym,
+                _ => m.expansion_miss(y0, ym, cubic),
+            };
+            if miss.abs() * h > m.impulse_tolerance {
+                for _ in 0..REFINE {
+                    self.advance(level + 1)?;
+                    if self.separated.is_some() {
+                        break;
+                    }
+                }
+                return Ok(());
+            }
+        }
+        let modal_energy = m.correct(grid, &mut self.next, f1, d1);
+        std::mem::swap(&mut self.s, &mut self.next);
+        self.t += h;
+        self.peak_force = self.peak_force.max(f1);
+        let p = &m.base.params;
+        let (mb, v1) = (p.ball.mass, p.impact.v1);
+        let e0 = 0.5 * mb * v1 * v1;
+        let st = m.contact_state(end.phase, f1, end.u);
+        let e =
+            modal_energy + c.ball_energy_with_loss(end.phase, &st) + c.string_energy(&st) + 0.5 * m.residual * f1 * f1;
+        self.energy_err = self.energy_err.max((e - e0).abs() / e0);
+        let pm = mb.sqrt() * self.s.v[0] + self.s.v[1] / m.g[1];
+        self.momentum_err = self.momentum_err.max((pm - mb * v1).abs() / (mb * v1));
+        if matches!(end.phase, Phase::Expansion { .. }) && f1 <= 0.0 {
+            let sc = hermite_root(a.yt, a.ytd, end.yt, end.ytd, h);
+            // twist angle at the crossing (`next` now holds the state before the step)
+            let theta =
+                hermite_eval(self.next.q[3], self.next.v[3], self.s.q[3], self.s.v[3], h, sc) / p.racket.ix.sqrt();
+            self.separated = Some((self.t - h + sc * h, theta));
+        }
+        self.at = end;
+        Ok(())
+    }
 }

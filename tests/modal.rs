@@ -102,3 +102,27 @@ fn modal_solver_agrees_on_fine_beams() {
         check(&p);
     }
 }
+
+/// The modal solver's own discretisation: with every mode kept it converges to a finely stepped
+/// explicit solution as its step shrinks, for the paper's impact and for very soft strings
+/// (where the step refinement near separation matters most).
+#[test]
+fn modal_solver_converges_to_the_explicit_one_as_its_step_shrinks() {
+    use racket_impact::modal::{ModalModel, Resolution};
+    for (x, ks) in [(0.16, 4.0e4), (0.03, 1.5e3)] {
+        let mut p = Params::paper();
+        p.impact.x = x;
+        p.strings.ks = ks;
+        p.numerics.load = LoadRule::Node;
+        let mut fd = p;
+        fd.numerics.dt = Some(2.5e-7);
+        let reference = simulate(&fd).unwrap().e_a;
+        let error = |phase_per_step: f64, impulse_tolerance: f64| {
+            let res = Resolution { mode_cutoff: 1e9, phase_per_step, impulse_tolerance };
+            (ModalModel::with_resolution(&p, res).unwrap().run().unwrap().e_a - reference).abs()
+        };
+        let (coarse, fine) = (error(0.4, 1e-6), error(0.025, 1e-9));
+        assert!(fine < 1e-7, "x {x}, ks {ks}: {fine:e}");
+        assert!(coarse > 10.0 * fine, "x {x}, ks {ks}: {coarse:e} vs {fine:e}");
+    }
+}
