@@ -27,6 +27,78 @@ pub const AMPLITUDE_TAIL: f64 = 1.0e-6;
 /// Sample spacing, radians of the fastest sampled mode.
 pub const PHASE_PER_SAMPLE: f64 = 0.25;
 
+/// Each mode's phasor at one time: `q_k` and `q_k'/w_k`.
+#[derive(Debug, Clone)]
+struct Phasors {
+    q: Vec<f64>,
+    p: Vec<f64>,
+}
+
+impl Phasors {
+    /// Advance by the rotations `(sin, cos)(w_k dt)`.
+    fn rotate(&mut self, rot: &[(f64, f64)]) {
+        for ((q, p), &(s, c)) in self.q.iter_mut().zip(self.p.iter_mut()).zip(rot) {
+            (*q, *p) = (*q * c + *p * s, *p * c - *q * s);
+        }
+    }
+
+    /// Advance by a short time `dt` (`|w_k dt| <= 1` by series, longer directly; `omega`
+    /// ascending).
+    fn rotate_small(&mut self, omega: &[f64], dt: f64) {
+        let terms = series_terms(omega.last().map_or(0.0, |w| (w * dt).abs()));
+        for ((q, p), w) in self.q.iter_mut().zip(self.p.iter_mut()).zip(omega) {
+            let (s, c) = small_sin_cos(w * dt, terms);
+            (*q, *p) = (*q * c + *p * s, *p * c - *q * s);
+        }
+    }
+}
+
+/// `1/((2n)(2n+1))` and `1/((2n-1)(2n))` for `n = 1..=11`: the ratios of successive Taylor
+/// terms of `sin` and `cos`.
+const SIN_RATIO: [f64; 11] = ratios(0.0);
+const COS_RATIO: [f64; 11] = ratios(-1.0);
+
+const fn ratios(offset: f64) -> [f64; 11] {
+    let mut r = [0.0; 11];
+    let mut n = 1;
+    while n <= 11 {
+        let k = 2.0 * n as f64;
+        r[n - 1] = 1.0 / ((k + offset) * (k + 1.0 + offset));
+        n += 1;
+    }
+    r
+}
+
+/// Taylor terms of `sin` and `cos` for rounding-level accuracy up to `|x| = x_max` (the first
+/// neglected term is below 1e-24), or 0 beyond 1.
+fn series_terms(x_max: f64) -> usize {
+    match x_max {
+        x if x <= 1e-4 => 2,
+        x if x <= 1e-3 => 3,
+        x if x <= 1e-2 => 4,
+        x if x <= 0.1 => 6,
+        x if x <= 0.5 => 9,
+        x if x <= 1.0 => 11,
+        _ => 0,
+    }
+}
+
+/// `(sin x, cos x)` by `terms` terms of their Taylor series ([`series_terms`]), or by
+/// `sin_cos` when `terms` is 0.
+fn small_sin_cos(x: f64, terms: usize) -> (f64, f64) {
+    if terms == 0 {
+        return x.sin_cos();
+    }
+    let x2 = x * x;
+    let (mut s, mut c) = (1.0, 1.0);
+    // sin x = x (1 - x^2/(2 3) (1 - x^2/(4 5) (1 - ...))), cos x = 1 - x^2/(1 2) (1 - x^2/(3 4) (...))
+    for n in (0..terms).rev() {
+        s = 1.0 - x2 * SIN_RATIO[n] * s;
+        c = 1.0 - x2 * COS_RATIO[n] * c;
+    }
+    (x * s, c)
+}
+
 /// The free vibration of the flexible modes from a reference time `t = 0`.
 #[derive(Debug, Clone)]
 pub struct FreeVibration {
@@ -120,6 +192,27 @@ impl FreeVibration {
         out
     }
 
+    /// Phasors `(q_k, q_k'/w_k)` of the first `k` modes at time `t`.
+    fn phasors(&self, k: usize, t: f64) -> Phasors {
+        let mut ph = Phasors { q: Vec::with_capacity(k), p: Vec::with_capacity(k) };
+        for i in 0..k {
+            let (s, c) = (self.omega[i] * t).sin_cos();
+            ph.q.push(self.a[i] * c + self.b[i] * s);
+            ph.p.push(self.b[i] * c - self.a[i] * s);
+        }
+        ph
+    }
+
+    /// `(sin, cos)(w_k dt)` of the first `k` modes.
+    fn rotation(&self, k: usize, dt: f64) -> Vec<(f64, f64)> {
+        self.omega[..k].iter().map(|w| (w * dt).sin_cos()).collect()
+    }
+
+    /// Bending energy of phasors, J.
+    fn pe_of(&self, ph: &Phasors) -> f64 {
+        ph.q.iter().zip(&self.omega).map(|(q, w)| 0.5 * w * w * q * q).sum()
+    }
+
     /// The largest bending energy over `[t0, t1]`, J.
     pub fn peak_pe(&self, t0: f64, t1: f64) -> f64 {
         let n = self.omega.len();
@@ -132,29 +225,65 @@ impl FreeVibration {
         let rest: f64 = (0..k).filter(|&i| i != d).map(|i| self.energy(i)).sum();
         let w_d = self.omega[d];
         let phi = self.b[d].atan2(self.a[d]);
-        // maxima of the dominant mode: w_d t - phi = j pi
+        // maxima of the dominant mode, w_d t - phi = j pi, and every mode's phasor there (the
+        // first directly, the others by rotating it through half a period of the dominant mode)
+        let half_period = std::f64::consts::PI / w_d;
         let j_lo = ((w_d * t0 - phi) / std::f64::consts::PI).floor() as i64;
         let j_hi = ((w_d * t1 - phi) / std::f64::consts::PI).ceil() as i64;
         let peaks: Vec<f64> = (j_lo..=j_hi).map(|j| (phi + j as f64 * std::f64::consts::PI) / w_d).collect();
-        let mut best = self.pe_first(k, t0).max(self.pe_first(k, t1));
-        for &t in peaks.iter().filter(|t| (t0..=t1).contains(*t)) {
-            best = best.max(self.pe_first(k, t));
+        let turn = self.rotation(k, half_period);
+        let mut at_peaks: Vec<Phasors> = Vec::with_capacity(peaks.len());
+        let mut ph = self.phasors(k, peaks[0]);
+        for _ in &peaks {
+            at_peaks.push(ph.clone());
+            ph.rotate(&turn);
         }
-        // where the peak can be
+        let mut best = self.pe_first(k, t0).max(self.pe_first(k, t1));
+        for (t, ph) in peaks.iter().zip(&at_peaks) {
+            if (t0..=t1).contains(t) {
+                best = best.max(self.pe_of(ph));
+            }
+        }
+        // where the peak can be: windows of half-width `half` around the dominant maxima
         let floor = (best - rest) / e_d;
-        let windows: Vec<(f64, f64)> = if floor <= 0.0 || e_d <= 0.0 {
-            vec![(t0, t1)]
-        } else {
-            let half = floor.min(1.0).sqrt().acos() / w_d;
-            peaks.iter().map(|t| ((t - half).max(t0), (t + half).min(t1))).filter(|(lo, hi)| hi > lo).collect()
-        };
+        let half = if floor <= 0.0 || e_d <= 0.0 { f64::INFINITY } else { floor.min(1.0).sqrt().acos() / w_d };
         let spacing = PHASE_PER_SAMPLE / self.omega[k - 1];
-        // (time, value, sample spacing) of each sampled peak after the parabola step
-        let mut candidates: Vec<(f64, f64, f64)> = Vec::new();
-        for (lo, hi) in windows {
-            let m = (((hi - lo) / spacing).ceil() as usize).max(2);
-            let dt = (hi - lo) / m as f64;
-            let v = self.sample(k, lo, hi, m, |i, q| 0.5 * self.omega[i] * self.omega[i] * q * q);
+        // a whole window (not cut by t0 or t1) has the same samples relative to its peak
+        let whole_m = ((2.0 * half / spacing).ceil() as usize).max(2);
+        let whole_dt = 2.0 * half / whole_m as f64;
+        let (mut back, mut whole_step) = (None, None);
+        // (time, value, sample spacing, phasors) of each sampled peak after the parabola step
+        let mut candidates: Vec<(f64, f64, f64, Phasors)> = Vec::new();
+        let windows: Vec<(f64, f64, Option<&Phasors>)> = if half.is_infinite() {
+            vec![(t0, t1, None)]
+        } else {
+            peaks.iter().zip(&at_peaks).map(|(t, ph)| (t - half, t + half, Some(ph))).collect()
+        };
+        for (lo, hi, at_peak) in windows {
+            let (lo, hi, whole) = (lo.max(t0), hi.min(t1), lo >= t0 && hi <= t1 && at_peak.is_some());
+            if hi <= lo {
+                continue;
+            }
+            let (m, dt, mut ph, step) = if let (true, Some(at)) = (whole, at_peak) {
+                let back = back.get_or_insert_with(|| self.rotation(k, -half));
+                let step = whole_step.get_or_insert_with(|| self.rotation(k, whole_dt));
+                let mut ph = at.clone();
+                ph.rotate(back);
+                (whole_m, whole_dt, ph, std::borrow::Cow::Borrowed(&*step))
+            } else {
+                let m = (((hi - lo) / spacing).ceil() as usize).max(2);
+                let dt = (hi - lo) / m as f64;
+                (m, dt, self.phasors(k, lo), std::borrow::Cow::Owned(self.rotation(k, dt)))
+            };
+            // the samples (`ph` is left at the window's start)
+            let start = ph.clone();
+            let mut v = Vec::with_capacity(m + 1);
+            for i in 0..=m {
+                if i > 0 {
+                    ph.rotate(&step);
+                }
+                v.push(self.pe_of(&ph));
+            }
             best = best.max(v[0]).max(v[m]);
             // every interior local maximum within the sampling error (a few per cent at a
             // quarter radian) of the highest sample may hold the peak
@@ -172,33 +301,36 @@ impl FreeVibration {
                 } else {
                     0.0
                 };
-                let t = lo + (i as f64 + shift) * dt;
-                let value = self.pe_first(k, t).max(v[i]);
+                let mut ph = start.clone();
+                for _ in 0..i {
+                    ph.rotate(&step);
+                }
+                ph.rotate_small(&self.omega[..k], shift * dt);
+                let value = self.pe_of(&ph).max(v[i]);
                 best = best.max(value);
-                candidates.push((t, value, dt));
+                candidates.push((lo + (i as f64 + shift) * dt, value, dt, ph));
             }
         }
         // the parabola step is good to about 1e-3 of the peak; polish the candidates that could
         // still be the largest by Newton on dPE/dt = 0 (analytic derivatives)
-        for &(t, value, dt) in &candidates {
+        for (t, value, dt, ph) in candidates {
             if value >= best * (1.0 - 1e-2) {
-                best = best.max(self.newton_peak(k, t, (t - 2.0 * dt).max(t0), (t + 2.0 * dt).min(t1)));
+                best = best.max(self.newton_peak(t, ph, (t - 2.0 * dt).max(t0), (t + 2.0 * dt).min(t1)));
             }
         }
         best
     }
 
-    /// The largest bending energy of the first `k` modes found by Newton steps on
-    /// `dPE/dt = 0` from `t`, kept inside `[lo, hi]`.
-    fn newton_peak(&self, k: usize, mut t: f64, lo: f64, hi: f64) -> f64 {
+    /// The largest bending energy found by Newton steps on `dPE/dt = 0` from `t`, where the
+    /// modes have phasors `ph`, kept inside `[lo, hi]`.
+    fn newton_peak(&self, mut t: f64, mut ph: Phasors, lo: f64, hi: f64) -> f64 {
+        let k = ph.q.len();
         let mut best: f64 = 0.0;
         for _ in 0..4 {
             let (mut pe, mut d1, mut d2) = (0.0, 0.0, 0.0);
             for i in 0..k {
                 let w = self.omega[i];
-                let (s, c) = (w * t).sin_cos();
-                let q = self.a[i] * c + self.b[i] * s;
-                let qd = w * (self.b[i] * c - self.a[i] * s);
+                let (q, qd) = (ph.q[i], w * ph.p[i]);
                 let w2 = w * w;
                 pe += 0.5 * w2 * q * q;
                 d1 += w2 * q * qd;
@@ -212,6 +344,7 @@ impl FreeVibration {
             if next == t {
                 break;
             }
+            ph.rotate_small(&self.omega[..k], next - t);
             t = next;
         }
         best
@@ -279,6 +412,15 @@ mod tests {
             best = best.max(v[i]).max(f.pe(0.5 * (lo + hi)));
         }
         best
+    }
+
+    #[test]
+    fn short_rotations_match_sin_cos() {
+        let xs = (-1000..=1000).map(|i| i as f64 * 1e-3 * 1.0000001);
+        for x in xs.chain([1e-4, 1e-3, 1e-2, 0.1, 0.5].iter().flat_map(|&x| [x, -x, 0.99 * x])) {
+            let (s, c) = small_sin_cos(x, series_terms(x.abs()));
+            assert!((s - x.sin()).abs() <= 2e-16 && (c - x.cos()).abs() <= 2e-16, "{x}");
+        }
     }
 
     #[test]
