@@ -29,7 +29,7 @@
 //! paper's peak bending PE and for re-contact.
 
 use crate::error::{Error, Result};
-use crate::model::contact::{pow_near, ContactState, Phase};
+use crate::model::contact::{ContactState, Phase};
 use crate::model::free::FreeVibration;
 use crate::params::Params;
 use crate::solver::{hermite_eval, hermite_max, hermite_root, ImpactResult, Model};
@@ -48,27 +48,30 @@ pub struct Resolution {
 
 /// The default resolution: modal and explicit solvers agree to 1e-4 (tests/modal.rs).
 pub const DEFAULT_RESOLUTION: Resolution =
-    Resolution { mode_cutoff: 100.0, phase_per_step: 0.15, impulse_tolerance: 1e-7 };
+    Resolution { mode_cutoff: 100.0, phase_per_step: 0.1, impulse_tolerance: 1e-7 };
+
+/// Terms of the binomial series for the power of a Newton iterate.
+const BINOMIAL_TERMS: usize = 17;
 
 /// Levels of step refinement below the base step, and the ratio between levels.
-const LEVELS: usize = 4;
-const REFINE: usize = 4;
+const LEVELS: usize = 7;
+const REFINE: usize = 2;
 
 /// Number of rigid coordinates ahead of the flexible modes: ball, translation, rotation, twist.
 const RIGID: usize = 4;
 
-/// One coordinate's exact step under the cubic force history: free propagation and the response
-/// to each of `F0, D0, F1, D1` (already multiplied by the coordinate's `g`).
-#[derive(Debug, Clone, Copy, Default)]
-struct Step {
+/// The exact step of every coordinate under the cubic force history, one array per
+/// coefficient (so the loops over coordinates vectorise): free propagation and the responses to
+/// `F0, D0, F1, D1` (already multiplied by the coordinate's `g`).
+#[derive(Debug, Clone, Default)]
+struct Steps {
     /// `cos(w h)`, `sin(w h)/w`, `-w sin(w h)`.
-    c: f64,
-    sq: f64,
-    vq: f64,
-    /// Position responses to `F0, D0, F1, D1`.
-    q: [f64; 4],
-    /// Velocity responses to `F0, D0, F1, D1`.
-    v: [f64; 4],
+    c: Vec<f64>,
+    sq: Vec<f64>,
+    vq: Vec<f64>,
+    /// Position and velocity responses to `F0, D0, F1, D1`.
+    q: [Vec<f64>; 4],
+    v: [Vec<f64>; 4],
 }
 
 /// The step tables of one step length.
@@ -76,8 +79,7 @@ struct Step {
 struct Grid {
     /// Step, s.
     h: f64,
-    /// Per coordinate.
-    steps: Vec<Step>,
+    steps: Steps,
     /// `Y_T(h) = Y_hat - bf F1 - bd D1` and `Y_T'(h) = Yd_hat - cf F1 - cd D1` (static correction
     /// included): m/N, m s/N, 1/(N s), m/N.
     bf: f64,
@@ -90,31 +92,51 @@ struct Grid {
 
 impl Grid {
     fn new(m: &ModalModel, h: f64) -> Grid {
-        let steps: Vec<Step> = m
-            .lam
-            .iter()
-            .zip(&m.omega)
-            .zip(&m.g)
-            .map(|((&l, &w), &gj)| {
-                let (rq, rv) = responses(l, h);
-                let (hq, hv) = (hermite(rq, h), hermite(rv, h));
-                let (s, c) = (w * h).sin_cos();
-                let sq = if w > 0.0 { s / w } else { h };
-                Step { c, sq, vq: -w * s, q: hq.map(|a| gj * a), v: hv.map(|a| gj * a) }
-            })
-            .collect();
-        let sum = |f: &dyn Fn(&Step) -> f64| m.g.iter().zip(&steps).map(|(gj, st)| gj * f(st)).sum::<f64>();
-        let bf = sum(&|st| st.q[2]) + m.residual;
-        let bd = sum(&|st| st.q[3]);
-        let cf = sum(&|st| st.v[2]);
-        let cd = sum(&|st| st.v[3]) + m.residual;
+        let mut st = Steps::default();
+        for ((&l, &w), &gj) in m.lam.iter().zip(&m.omega).zip(&m.g) {
+            let (rq, rv) = responses(l, h);
+            let (hq, hv) = (hermite(rq, h), hermite(rv, h));
+            let (s, c) = (w * h).sin_cos();
+            st.c.push(c);
+            st.sq.push(if w > 0.0 { s / w } else { h });
+            st.vq.push(-w * s);
+            for i in 0..4 {
+                st.q[i].push(gj * hq[i]);
+                st.v[i].push(gj * hv[i]);
+            }
+        }
+        let bf = dot(&m.g, &st.q[2]) + m.residual;
+        let bd = dot(&m.g, &st.q[3]);
+        let cf = dot(&m.g, &st.v[2]);
+        let cd = dot(&m.g, &st.v[3]) + m.residual;
         // F1 = ks (Y_hat - bf F1 - bd D1), D1 = ks (Yd_hat - cf F1 - cd D1)
         let ks = m.base.contact.compression_stiffness();
         let (a11, a12, a21, a22) = (1.0 + ks * bf, ks * bd, ks * cf, 1.0 + ks * cd);
         let det = a11 * a22 - a12 * a21;
         let compression = [[ks * a22 / det, -ks * a12 / det], [-ks * a21 / det, ks * a11 / det]];
-        Grid { h, steps, bf, bd, cf, cd, compression }
+        Grid { h, steps: st, bf, bd, cf, cd, compression }
     }
+}
+
+/// `sum_i f(i)` over `0..n` with four partial sums (so that it vectorises).
+#[inline(always)]
+fn sum4(n: usize, f: impl Fn(usize) -> f64) -> f64 {
+    let mut acc = [0.0; 4];
+    let whole = n - n % 4;
+    for j in (0..whole).step_by(4) {
+        for (i, a) in acc.iter_mut().enumerate() {
+            *a += f(j + i);
+        }
+    }
+    let tail: f64 = (whole..n).map(&f).sum();
+    (acc[0] + acc[2]) + (acc[1] + acc[3]) + tail
+}
+
+/// `sum a_i b_i` over the shorter slice.
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    let n = a.len().min(b.len());
+    let (a, b) = (&a[..n], &b[..n]);
+    sum4(n, |i| a[i] * b[i])
 }
 
 /// A prepared modal model of one impact.
@@ -129,6 +151,8 @@ pub struct ModalModel {
     residual: f64,
     /// Largest impulse error allowed per step, N s.
     impulse_tolerance: f64,
+    /// `C(p, n)`, the binomial coefficients of `(1 + x)^p`.
+    binomial: [f64; BINOMIAL_TERMS],
     /// Step tables: the base step, then each level `REFINE` times shorter (built when needed).
     grids: [std::sync::OnceLock<Grid>; LEVELS],
 }
@@ -233,7 +257,11 @@ impl ModalModel {
         }
         let omega: Vec<f64> = lam.iter().map(|l| l.sqrt()).collect();
         let impulse_tolerance = res.impulse_tolerance * mb * params.impact.v1;
-        let m = ModalModel { base, lam, omega, g, residual, impulse_tolerance, grids: Default::default() };
+        let mut binomial = [1.0; BINOMIAL_TERMS];
+        for n in 1..BINOMIAL_TERMS {
+            binomial[n] = binomial[n - 1] * (params.ball.p - (n - 1) as f64) / n as f64;
+        }
+        let m = ModalModel { base, lam, omega, g, residual, impulse_tolerance, binomial, grids: Default::default() };
         let grid = Grid::new(&m, h);
         let _ = m.grids[0].set(grid);
         Ok(m)
@@ -296,42 +324,40 @@ impl ModalModel {
     /// Advance `s` over one step with the end force and rate zero into `out`; returns
     /// `(Y_T, Y_T')` of that prediction.
     fn predict(&self, grid: &Grid, s: &State, f0: f64, d0: f64, out: &mut State) -> (f64, f64) {
-        let (mut y, mut yd) = (0.0, 0.0);
         let n = self.lam.len();
-        let (q0, v0, q1, v1, steps, g) =
-            (&s.q[..n], &s.v[..n], &mut out.q[..n], &mut out.v[..n], &grid.steps[..n], &self.g[..n]);
+        let st = &grid.steps;
+        let (q0, v0, q1, v1) = (&s.q[..n], &s.v[..n], &mut out.q[..n], &mut out.v[..n]);
+        let (c, sq, vq) = (&st.c[..n], &st.sq[..n], &st.vq[..n]);
+        let (qf, qd, vf, vd) = (&st.q[0][..n], &st.q[1][..n], &st.v[0][..n], &st.v[1][..n]);
         for j in 0..n {
-            let st = &steps[j];
-            let qh = st.c * q0[j] + st.sq * v0[j] + st.q[0] * f0 + st.q[1] * d0;
-            let vh = st.vq * q0[j] + st.c * v0[j] + st.v[0] * f0 + st.v[1] * d0;
-            q1[j] = qh;
-            v1[j] = vh;
-            y -= g[j] * qh;
-            yd -= g[j] * vh;
+            q1[j] = c[j] * q0[j] + sq[j] * v0[j] + qf[j] * f0 + qd[j] * d0;
+            v1[j] = vq[j] * q0[j] + c[j] * v0[j] + vf[j] * f0 + vd[j] * d0;
         }
-        (y, yd)
+        (-dot(&self.g, q1), -dot(&self.g, v1))
     }
 
     /// Add the end force and rate to a predicted step; returns the coordinates' energy, J.
     fn correct(&self, grid: &Grid, out: &mut State, f1: f64, d1: f64) -> f64 {
-        let mut e = 0.0;
         let n = self.lam.len();
-        let (q, v, steps, lam) = (&mut out.q[..n], &mut out.v[..n], &grid.steps[..n], &self.lam[..n]);
+        let st = &grid.steps;
+        let (q, v) = (&mut out.q[..n], &mut out.v[..n]);
+        let (qf, qd, vf, vd) = (&st.q[2][..n], &st.q[3][..n], &st.v[2][..n], &st.v[3][..n]);
         for j in 0..n {
-            let st = &steps[j];
-            q[j] += st.q[2] * f1 + st.q[3] * d1;
-            v[j] += st.v[2] * f1 + st.v[3] * d1;
-            e += v[j] * v[j] + lam[j] * q[j] * q[j];
+            q[j] += qf[j] * f1 + qd[j] * d1;
+            v[j] += vf[j] * f1 + vd[j] * d1;
         }
+        // kinetic plus potential
+        let lam = &self.lam[..n];
+        let e = sum4(n, |j| v[j] * v[j] + lam[j] * q[j] * q[j]);
         0.5 * e
     }
 
     /// The end force and rate of a step in expansion from the prediction `(Y_hat, Yd_hat)`:
-    /// Eq 10, `u + (k1/k_s + bf k1) u^p = z` with `z = (Y_hat - bd D1) / Y0`, by Halley's method
-    /// (Newton far from the root) from `start = (u, u^p)`, and `D1 = F'(Y_T) Y_T'` updated from
-    /// each iterate from its first guess `d_guess` (its coupling `bd` is of order `h^3`). The
-    /// power of each iterate is carried from the previous one ([`pow_near`]), so a good start
-    /// needs no power function. `Ok(None)` when the ball has left.
+    /// Newton on Eq 10, `u + (k1/k_s + bf k1) u^p = z` with `z = (Y_hat - bd D1) / Y0`, from
+    /// `start = (u, u^p)`, with `D1 = F'(Y_T) Y_T'` updated from each iterate from its first
+    /// guess `d_guess` (its coupling `bd` is of order `h^3`). Each iterate's power comes from
+    /// the previous one by the binomial series ([`ModalModel::pow_step`]), so a good start needs
+    /// no power function. `Ok(None)` when the ball has left.
     fn expansion_end(
         &self,
         grid: &Grid,
@@ -350,43 +376,63 @@ impl ModalModel {
         let inv_y0 = 1.0 / y0;
         let (mut u, mut up) = start;
         let mut d1 = d_guess;
+        let mut z = (yh - grid.bd * d1) * inv_y0;
+        if z <= 0.0 {
+            return Ok(None);
+        }
         if !(u > 0.0 && up > 0.0 && u <= 1.0) {
             // no usable start: the upper bound min(z, 1) of the root
-            u = (yh * inv_y0).min(1.0);
+            u = z.min(1.0);
             up = u.powf(p);
         }
+        let mut inv_u = 1.0 / u;
         for _ in 0..100 {
-            let z = (yh - grid.bd * d1) * inv_y0;
+            // Newton on an increasing convex function: from the left it lands right of the
+            // root, from the right it stays there; halving only guards against rounding
+            let r = p * up * inv_u;
+            let step = (u + beta * up - z) / (1.0 + beta * r);
+            let delta = (-step * inv_u).max(-0.5);
+            up = self.pow_step(u, up, delta);
+            u *= 1.0 + delta;
+            inv_u = 1.0 / u;
+            // dF/dY_T along Eq 10 with the strings in series, and the rate from it
+            let r = p * up * inv_u;
+            let f1 = c.k1 * y0 * up;
+            d1 = c.k1 * r * (ydh - grid.cf * f1) / (1.0 + r * (alpha + c.k1 * grid.cd));
+            let z_new = (yh - grid.bd * d1) * inv_y0;
+            let moved = (z_new - z).abs();
+            z = z_new;
             if z <= 0.0 {
                 return Ok(None);
             }
-            let inv_u = 1.0 / u;
-            let r = p * up * inv_u;
-            let hu = u + beta * up - z;
-            let slope = 1.0 + beta * r;
-            let newton = hu / slope;
-            // Halley's correction near the root (the function is increasing and convex, so far
-            // from it plain Newton is safe: from the left it lands right of the root, from the
-            // right it stays there)
-            let step = if newton.abs() < 1e-2 * u {
-                hu / (slope - 0.5 * newton * beta * (p - 1.0) * r * inv_u)
-            } else {
-                newton
-            };
-            let next = if u - step > 0.0 { u - step } else { 0.5 * u };
-            up = pow_near(next, (u, up), p);
-            u = next;
-            // dF/dY_T along Eq 10 with the strings in series, and the rate from it
-            let r = p * up / u;
-            let f1 = c.k1 * y0 * up;
-            let d_new = c.k1 * r * (ydh - grid.cf * f1) / (1.0 + r * (alpha + c.k1 * grid.cd));
-            let moved = (grid.bd * (d_new - d1)).abs();
-            d1 = d_new;
-            if step.abs() <= 1e-10 * u && moved <= 1e-12 * y0 {
+            // after a Newton step of 1e-8 the error is of order 1e-16
+            if delta.abs() <= 1e-8 && moved <= 1e-15 * z {
                 return Ok(Some(Contact1 { f: f1, d: d1, u: (u, up) }));
             }
         }
-        Err(Error::ContactSolve { z: yh * inv_y0 })
+        Err(Error::ContactSolve { z })
+    }
+
+    /// `(u (1 + delta))^p` from `up = u^p`: the binomial series `sum C(p, n) delta^n`, cut where
+    /// `|delta|^n` is below 1e-17, for `|delta| <= 0.1` (at most 17 terms), `powf` otherwise.
+    #[inline]
+    fn pow_step(&self, u: f64, up: f64, delta: f64) -> f64 {
+        let a = delta.abs();
+        let terms = match a {
+            _ if a <= 1e-9 => 2,
+            _ if a <= 1e-6 => 3,
+            _ if a <= 1e-4 => 5,
+            _ if a <= 1e-3 => 6,
+            _ if a <= 1e-2 => 9,
+            _ if a <= 0.1 => BINOMIAL_TERMS,
+            _ => return (u * (1.0 + delta)).powf(self.base.contact.p),
+        };
+        let b = &self.binomial;
+        let mut s = b[terms - 1];
+        for k in (0..terms - 1).rev() {
+            s = s * delta + b[k];
+        }
+        up * s
     }
 
     /// The force error of a cubic history whose midpoint force is `f` against the expansion law
@@ -592,7 +638,7 @@ impl Run<'_> {
                 let (u0, up0) = a.u;
                 let r0 = if u0 > 0.0 { c.p * up0 / u0 } else { 0.0 };
                 let u1 = u0 + h * a.ytd / (y0 * (1.0 + r0 * c.k1 / c.ks));
-                let start = if u1 > 0.0 { (u1, pow_near(u1, a.u, c.p)) } else { (0.0, 0.0) };
+                let start = if u1 > 0.0 && u0 > 0.0 { (u1, m.pow_step(u0, up0, u1 / u0 - 1.0)) } else { (0.0, 0.0) };
                 let e = m.expansion_end(grid, y0, (yh, ydh), start, a.d)?.unwrap_or_default();
                 end.u = e.u;
                 (e.f, e.d)
