@@ -46,6 +46,18 @@ fn sweeps(c: &mut Criterion) {
     group.bench_function("fig5_style_100_positions_parallel", |b| {
         b.iter(|| experiments::sweep(std::hint::black_box(&params)).unwrap())
     });
+    // the same with the modal solver (what `racket-impact sweep` uses by default)
+    let modal: Vec<Params> = params
+        .iter()
+        .map(|p| {
+            let mut p = *p;
+            p.numerics.solver = racket_impact::params::SolverKind::Modal;
+            p
+        })
+        .collect();
+    group.bench_function("fig5_style_100_positions_parallel_modal", |b| {
+        b.iter(|| experiments::sweep(std::hint::black_box(&modal)).unwrap())
+    });
     group.bench_function("all_experiment_tables_no_png", |b| {
         b.iter(|| experiments::registry().iter().map(|e| (e.run)().unwrap().rows.len()).sum::<usize>())
     });
