@@ -69,18 +69,28 @@ const REFINE: usize = 2;
 /// Number of rigid coordinates ahead of the flexible modes: ball, translation, rotation, twist.
 const RIGID: usize = 4;
 
-/// The exact step of every coordinate under the cubic force history, one array per
-/// coefficient (so the loops over coordinates vectorise): free propagation and the responses to
-/// `F0, D0, F1, D1` (already multiplied by the coordinate's `g`).
-#[derive(Debug, Clone, Default)]
+/// The exact step of every coordinate under the cubic force history, one column per
+/// coefficient in a single buffer (so the loops over coordinates vectorise and a table is one
+/// allocation): free propagation, `cos(w h)`, `sin(w h)/w`, `-w sin(w h)`, then the position and
+/// the velocity responses to `F0, D0, F1, D1` (already multiplied by the coordinate's `g`).
+#[derive(Debug, Clone)]
 struct Steps {
-    /// `cos(w h)`, `sin(w h)/w`, `-w sin(w h)`.
-    c: Vec<f64>,
-    sq: Vec<f64>,
-    vq: Vec<f64>,
-    /// Position and velocity responses to `F0, D0, F1, D1`.
-    q: [Vec<f64>; 4],
-    v: [Vec<f64>; 4],
+    n: usize,
+    data: Vec<f64>,
+}
+
+/// Columns of [`Steps`].
+const COS: usize = 0;
+const SIN_W: usize = 1;
+const W_SIN: usize = 2;
+const Q_RESPONSE: usize = 3;
+const V_RESPONSE: usize = 7;
+const COLUMNS: usize = 11;
+
+impl Steps {
+    fn col(&self, k: usize) -> &[f64] {
+        &self.data[k * self.n..(k + 1) * self.n]
+    }
 }
 
 /// The step tables of one step length.
@@ -102,25 +112,24 @@ struct Grid {
 impl Grid {
     fn new(m: &ModalModel, h: f64) -> Grid {
         let n = m.lam.len();
-        let col = || Vec::with_capacity(n);
-        let mut st =
-            Steps { c: col(), sq: col(), vq: col(), q: [col(), col(), col(), col()], v: [col(), col(), col(), col()] };
-        for ((&l, &w), &gj) in m.lam.iter().zip(&m.omega).zip(&m.g) {
+        let mut data = vec![0.0; COLUMNS * n];
+        for (j, ((&l, &w), &gj)) in m.lam.iter().zip(&m.omega).zip(&m.g).enumerate() {
             let (s, c) = (w * h).sin_cos();
             let (rq, rv) = responses(l, h, (s, c));
             let (hq, hv) = (hermite(rq, h), hermite(rv, h));
-            st.c.push(c);
-            st.sq.push(if w > 0.0 { s / w } else { h });
-            st.vq.push(-w * s);
+            data[COS * n + j] = c;
+            data[SIN_W * n + j] = if w > 0.0 { s / w } else { h };
+            data[W_SIN * n + j] = -w * s;
             for i in 0..4 {
-                st.q[i].push(gj * hq[i]);
-                st.v[i].push(gj * hv[i]);
+                data[(Q_RESPONSE + i) * n + j] = gj * hq[i];
+                data[(V_RESPONSE + i) * n + j] = gj * hv[i];
             }
         }
-        let bf = dot(&m.g, &st.q[2]) + m.residual;
-        let bd = dot(&m.g, &st.q[3]);
-        let cf = dot(&m.g, &st.v[2]);
-        let cd = dot(&m.g, &st.v[3]) + m.residual;
+        let st = Steps { n, data };
+        let bf = dot(&m.g, st.col(Q_RESPONSE + 2)) + m.residual;
+        let bd = dot(&m.g, st.col(Q_RESPONSE + 3));
+        let cf = dot(&m.g, st.col(V_RESPONSE + 2));
+        let cd = dot(&m.g, st.col(V_RESPONSE + 3)) + m.residual;
         // F1 = ks (Y_hat - bf F1 - bd D1), D1 = ks (Yd_hat - cf F1 - cd D1)
         let ks = m.base.contact.compression_stiffness();
         let (a11, a12, a21, a22) = (1.0 + ks * bf, ks * bd, ks * cf, 1.0 + ks * cd);
@@ -257,7 +266,7 @@ impl ModalModel {
     /// As [`ModalModel::new`] with a chosen resolution (for convergence studies).
     pub fn with_resolution(params: &Params, res: Resolution) -> Result<Self> {
         let base = Model::new(params)?;
-        let beam = &base.beam;
+        let beam = base.beam();
         let basis = std::sync::Arc::clone(&base.basis);
         let lp = base.load;
         let at_load = |phi: &[f64]| lp.weights[0] * phi[lp.nodes[0]] + lp.weights[1] * phi[lp.nodes[1]];
@@ -357,8 +366,9 @@ impl ModalModel {
         let n = self.lam.len();
         let st = &grid.steps;
         let (q0, v0, q1, v1) = (&s.q[..n], &s.v[..n], &mut out.q[..n], &mut out.v[..n]);
-        let (c, sq, vq) = (&st.c[..n], &st.sq[..n], &st.vq[..n]);
-        let (qf, qd, vf, vd) = (&st.q[0][..n], &st.q[1][..n], &st.v[0][..n], &st.v[1][..n]);
+        let (c, sq, vq) = (&st.col(COS)[..n], &st.col(SIN_W)[..n], &st.col(W_SIN)[..n]);
+        let (qf, qd) = (&st.col(Q_RESPONSE)[..n], &st.col(Q_RESPONSE + 1)[..n]);
+        let (vf, vd) = (&st.col(V_RESPONSE)[..n], &st.col(V_RESPONSE + 1)[..n]);
         for j in 0..n {
             q1[j] = c[j] * q0[j] + sq[j] * v0[j] + qf[j] * f0 + qd[j] * d0;
             v1[j] = vq[j] * q0[j] + c[j] * v0[j] + vf[j] * f0 + vd[j] * d0;
@@ -371,7 +381,8 @@ impl ModalModel {
         let n = self.lam.len();
         let st = &grid.steps;
         let (q, v) = (&mut out.q[..n], &mut out.v[..n]);
-        let (qf, qd, vf, vd) = (&st.q[2][..n], &st.q[3][..n], &st.v[2][..n], &st.v[3][..n]);
+        let (qf, qd) = (&st.col(Q_RESPONSE + 2)[..n], &st.col(Q_RESPONSE + 3)[..n]);
+        let (vf, vd) = (&st.col(V_RESPONSE + 2)[..n], &st.col(V_RESPONSE + 3)[..n]);
         for j in 0..n {
             q[j] += qf[j] * f1 + qd[j] * d1;
             v[j] += vf[j] * f1 + vd[j] * d1;

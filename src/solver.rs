@@ -134,8 +134,6 @@ impl Default for SeriesOptions {
 pub struct Model {
     /// The parameters.
     pub params: Params,
-    /// The discrete beam.
-    pub beam: Beam,
     /// The contact law.
     pub contact: Contact,
     /// Where the force acts.
@@ -176,7 +174,10 @@ pub struct Basis {
 /// the bytes they hold.
 static BASES: OnceLock<Mutex<BasisCache>> = OnceLock::new();
 /// The cached bases and the bytes they hold.
-type BasisCache = (HashMap<Vec<u64>, Arc<Basis>>, usize);
+type BasisCache = (HashMap<BasisKey, Arc<Basis>>, usize);
+/// The bits of the segment count, length, mass and EI, and of the profile's knots, densities and
+/// stiffnesses when there is one (no heap: looked up once per impact).
+type BasisKey = ([u64; 4], Option<[u64; 12]>);
 /// The cache is emptied before it would hold more than this many bytes of modes (a sweep over
 /// many rackets on fine beams would otherwise keep N^2 numbers per racket).
 const BASIS_CACHE_BYTES: usize = 32 << 20;
@@ -184,10 +185,15 @@ const BASIS_CACHE_BYTES: usize = 32 << 20;
 impl Basis {
     /// The basis of a racket on `segments` segments, from the cache or computed.
     pub fn of(racket: &Racket, segments: usize) -> Arc<Basis> {
-        let mut key = vec![segments as u64, racket.length.to_bits(), racket.mass.to_bits(), racket.ei.to_bits()];
-        if let Some(p) = &racket.profile {
-            key.extend(p.knots.iter().chain(&p.density).chain(&p.stiffness).map(|v| v.to_bits()));
-        }
+        let profile = racket.profile.as_ref().map(|p| {
+            let mut bits = [0; 12];
+            for (b, v) in bits.iter_mut().zip(p.knots.iter().chain(&p.density).chain(&p.stiffness)) {
+                *b = v.to_bits();
+            }
+            bits
+        });
+        let key: BasisKey =
+            ([segments as u64, racket.length.to_bits(), racket.mass.to_bits(), racket.ei.to_bits()], profile);
         let cache = BASES.get_or_init(|| Mutex::new((HashMap::new(), 0)));
         if let Some(b) = cache.lock().unwrap_or_else(|e| e.into_inner()).0.get(&key) {
             return Arc::clone(b);
@@ -212,18 +218,23 @@ impl Basis {
 }
 
 impl Model {
+    /// The discrete beam.
+    pub fn beam(&self) -> &Beam {
+        &self.basis.beam
+    }
+
     /// Validate the parameters, discretise the racket and choose (or check) the time step.
     pub fn new(params: &Params) -> Result<Self> {
         params.validate()?;
         let basis = Basis::of(&params.racket, params.numerics.segments);
-        let beam = basis.beam.clone();
+        let beam = &basis.beam;
         let mut contact = Contact::new(&params.ball, &params.strings);
         let v = &params.variants;
         if v.strings == StringLaw::Stiffening && v.string_stiffening > 0.0 {
             let energy = 0.5 * params.ball.mass * params.impact.v1 * params.impact.v1;
             contact = contact.with_stiffening(v.string_stiffening, v.stiffening_deflection, energy);
         }
-        let hand = if v.grip == Grip::Hand { hand_per_node(&beam, v) } else { Vec::new() };
+        let hand = if v.grip == Grip::Hand { hand_per_node(beam, v) } else { Vec::new() };
         let load = beam.load_point(params.impact.x, params.numerics.load);
         let f1_hz = basis.omega[0] / (2.0 * std::f64::consts::PI);
         // Weyl: the contact spring adds at most k_c |g|^2 to the largest eigenvalue, where g is
@@ -273,7 +284,7 @@ impl Model {
             }
             return Err(Error::TooManySteps { steps, dt_s: dt, nodes: beam.nodes(), limit: MAX_NODE_STEPS });
         }
-        Ok(Model { params: *params, beam, contact, load, f1_hz, dt_limit, dt, time_limit_s: t_limit, basis, hand })
+        Ok(Model { params: *params, contact, load, f1_hz, dt_limit, dt, time_limit_s: t_limit, basis, hand })
     }
 
     /// Run the impact.
@@ -289,7 +300,7 @@ impl Model {
     fn integrate(&self, series: Option<SeriesOptions>) -> Result<(ImpactResult, Option<Vec<SeriesRow>>)> {
         let p = &self.params;
         let (mb, v1, r, ix) = (p.ball.mass, p.impact.v1, p.impact.r, p.racket.ix);
-        let beam = &self.beam;
+        let beam = self.beam();
         let n = beam.nodes();
         let dt = self.dt;
         let [j0, j1] = self.load.nodes;
