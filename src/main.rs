@@ -572,16 +572,8 @@ fn sweep(a: SweepArgs) -> Result<()> {
             None => write_stdout(bytes),
         }
     };
-    emit(csv_line(&sweep.header()).as_bytes())?;
-    let mut buf = String::new();
-    let outcome = sweep.run(
-        |rows| {
-            buf.clear();
-            rows.iter().for_each(|r| buf.push_str(&csv_line(r)));
-            emit(buf.as_bytes())
-        },
-        |done| progress.update(done),
-    );
+    emit(&csv_lines(&[sweep.header()]))?;
+    let outcome = sweep.run(|rows| emit(&csv_lines(rows)), |done| progress.update(done));
     drop(progress);
     outcome?; // on error the temporary file is dropped, the target untouched
     match file {
@@ -590,11 +582,13 @@ fn sweep(a: SweepArgs) -> Result<()> {
     }
 }
 
-/// One CSV line (fields quoted only where needed).
-fn csv_line(fields: &[String]) -> String {
+/// CSV lines (fields quoted only where needed), one writer for them all.
+fn csv_lines(rows: &[Vec<String>]) -> Vec<u8> {
     let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(Vec::new());
-    let _ = w.write_record(fields);
-    String::from_utf8(w.into_inner().unwrap_or_default()).unwrap_or_default()
+    for r in rows {
+        let _ = w.write_record(r);
+    }
+    w.into_inner().unwrap_or_default()
 }
 
 fn racket_cmd(a: RacketArgs) -> Result<()> {
