@@ -25,8 +25,10 @@
 //! steps: the step holding maximum compression (the second rate of the force jumps there) and,
 //! on soft strings, the end of the contact, where the expansion law bends sharply. Every step
 //! that ends in expansion is therefore checked: where the cubic misses the contact law at the
-//! step's midpoint by more than the tolerance (as an impulse error), it is taken again as two
-//! half steps, down to 1/64 of the base step.
+//! step's midpoint (and at its quarter points where the force falls below a quarter of its start
+//! or the ball leaves) by more than the tolerance (as an impulse error), it is taken again as two
+//! half steps, down to 1/64 of the base step. A step at that finest level is accepted as it is,
+//! so the tolerance is a target, not a bound; the agreement tests measure what it achieves.
 //!
 //! Only modes below a cut-off are kept; the flexibility of the others at the load point is added
 //! as a static correction `Y_T -= R F`. Phase switch and separation are interpolated as in
@@ -50,8 +52,9 @@ pub struct Resolution {
     pub mode_cutoff: f64,
     /// Radians of the stiffest contact oscillation per step.
     pub phase_per_step: f64,
-    /// Largest error of a step's contact impulse, in units of the incident momentum: a step
-    /// whose force history misses the contact law at its midpoint by more is split.
+    /// Target for the error of a step's contact impulse, in units of the incident momentum: a
+    /// step whose force history misses the contact law at its check points by more is split
+    /// (down to 1/64 of the base step, where it is accepted as it is).
     pub impulse_tolerance: f64,
 }
 
@@ -265,7 +268,7 @@ impl ModalModel {
 
     /// As [`ModalModel::new`] with a chosen resolution (for convergence studies).
     pub fn with_resolution(params: &Params, res: Resolution) -> Result<Self> {
-        let base = Model::new(params)?;
+        let base = Model::for_modal(params)?;
         let beam = base.beam();
         let basis = std::sync::Arc::clone(&base.basis);
         let lp = base.load;
@@ -455,7 +458,9 @@ impl ModalModel {
     }
 
     /// `(u (1 + delta))^p` from `up = u^p`: the binomial series `sum C(p, n) delta^n`, cut where
-    /// `|delta|^n` is below 1e-17, for `|delta| <= 0.1` (at most 17 terms), `powf` otherwise.
+    /// `|delta|^n` is below 1e-17 (times `C(p, n)`, at most 252 for `p <= 10`: still
+    /// rounding-level; tested against `powf` for p from 1.0001 to 10), for `|delta| <= 0.1`
+    /// (at most 17 terms), `powf` otherwise.
     #[inline]
     fn pow_step(&self, u: f64, up: f64, delta: f64) -> f64 {
         let a = delta.abs();
@@ -482,8 +487,9 @@ impl ModalModel {
     fn expansion_miss(&self, y0: f64, ym: f64, f: f64) -> f64 {
         let c = &self.base.contact;
         if f <= 0.0 {
-            // the law is zero wherever Y_T <= 0, and no negative force is physical
-            return if ym > 0.0 { -c.compression_stiffness() * ym } else { f };
+            // no negative force is physical; the law lies between 0 and k_s Y_T (Y_T >= F/k_s),
+            // so the miss is at most this
+            return f - c.compression_stiffness() * ym.max(0.0);
         }
         let up = f / (c.k1 * y0);
         let u = up.powf(1.0 / c.p);
@@ -520,7 +526,10 @@ impl ModalModel {
         let p = &self.base.params;
         let e0 = 0.5 * p.ball.mass * p.impact.v1 * p.impact.v1;
         let e_a = -s.v[0] / (p.ball.mass.sqrt() * p.impact.v1);
-        let vib: f64 = (RIGID..self.lam.len()).map(|k| 0.5 * (s.v[k] * s.v[k] + self.lam[k] * s.q[k] * s.q[k])).sum();
+        // (a fold from +0: an empty sum of f64 is -0)
+        let vib = (RIGID..self.lam.len())
+            .map(|k| 0.5 * (s.v[k] * s.v[k] + self.lam[k] * s.q[k] * s.q[k]))
+            .fold(0.0, |a, b| a + b);
         let (peak_pe, recontact) = self.after_impact(s, since_separation);
         let result = ImpactResult {
             e_a,
@@ -604,6 +613,25 @@ mod tests {
                 assert!((q[m] - qr).abs() <= 1e-9 * scale_q, "q, lam h^2 = {x}, m = {m}: {} vs {qr}", q[m]);
                 assert!((v[m] - vr).abs() <= 1e-9 * scale_v, "v, lam h^2 = {x}, m = {m}: {} vs {vr}", v[m]);
             }
+        }
+    }
+
+    #[test]
+    fn powers_from_the_binomial_series_match_powf() {
+        for p in [1.0001, 1.3, 2.55, 4.0, 7.0, 10.0] {
+            let mut params = Params::paper();
+            params.ball.p = p;
+            let m = ModalModel::new(&params).unwrap();
+            let mut worst: f64 = 0.0;
+            for u in [1e-6, 0.01, 0.37, 1.0] {
+                for k in -2000..=2000 {
+                    let delta = k as f64 * 5e-5 * 1.0000003;
+                    let exact = (u * (1.0 + delta)).powf(p);
+                    worst = worst.max((m.pow_step(u, u.powf(p), delta) / exact - 1.0).abs());
+                }
+            }
+            // rounding of u (1 + delta) alone moves its p-th power by p times 1.1e-16
+            assert!(worst < 4e-16 * p.max(2.0), "p {p}: {worst:e}");
         }
     }
 
@@ -704,9 +732,10 @@ impl Run<'_> {
         end.ytd = ydh - grid.cf * f1 - grid.cd * d1;
         if let (Phase::Expansion { y0 }, true) = (end.phase, level + 1 < LEVELS) {
             // the cubic force history against the contact law at the midpoint, and at the
-            // quarter points too in a step that ends with the ball gone (where the law is zero
-            // after an unknown point and the midpoint alone can miss the error)
-            let points: &[f64] = if f1 <= 0.0 { &[0.25, 0.5, 0.75] } else { &[0.5] };
+            // quarter points too where the force falls to a quarter of its start or the ball
+            // leaves: there the law nears zero at an unknown point, the cubic can dip below
+            // zero after it, and the midpoint alone can miss that
+            let points: &[f64] = if f1 < 0.25 * a.f { &[0.25, 0.5, 0.75] } else { &[0.5] };
             let mut miss: f64 = 0.0;
             for &s in points {
                 let ym = hermite_eval(a.yt, a.ytd, end.yt, end.ytd, h, s);

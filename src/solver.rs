@@ -225,6 +225,16 @@ impl Model {
 
     /// Validate the parameters, discretise the racket and choose (or check) the time step.
     pub fn new(params: &Params) -> Result<Self> {
+        Self::build(params, true)
+    }
+
+    /// As [`Model::new`] for the modal solver, which takes its own steps: the explicit scheme's
+    /// work limit (too many node-steps for its step) does not apply.
+    pub(crate) fn for_modal(params: &Params) -> Result<Self> {
+        Self::build(params, false)
+    }
+
+    fn build(params: &Params, limit_work: bool) -> Result<Self> {
         params.validate()?;
         let basis = Basis::of(&params.racket, params.numerics.segments);
         let beam = &basis.beam;
@@ -269,7 +279,8 @@ impl Model {
         let t_expected = 2.0 * t_limit / IMPACT_TIME_LIMIT_HALF_PERIODS + 2.0 / f1_hz;
         let steps = t_expected / dt;
         let work = steps * beam.nodes() as f64;
-        if !(dt.is_finite() && dt > 0.0 && f1_hz.is_finite() && f1_hz > 0.0 && work <= MAX_NODE_STEPS) {
+        if !(dt.is_finite() && dt > 0.0 && f1_hz.is_finite() && f1_hz > 0.0 && (work <= MAX_NODE_STEPS || !limit_work))
+        {
             if let Some(user_dt) = params.numerics.dt {
                 return Err(Error::invalid(
                     "dt",
