@@ -8,9 +8,11 @@ use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use racket_impact::params::{LoadRule, Params, Profile, SolverKind};
 use racket_impact::solver::{simulate, ImpactResult};
 
-/// Relative agreement required; quantities are compared relative to max(|value|, FLOOR) so a
-/// fraction that is almost zero (vibration at the node) is held to 1e-4 of FLOOR.
-const TOL: f64 = 1e-4;
+/// Relative agreement required: half the 1e-4 the solvers are specified to, so that a regression
+/// of the size of the one pinned below (7e-5) fails here too (measured: 1.7e-5 over the random
+/// set, 1.6e-5 over the grid). Quantities are compared relative to max(|value|, FLOOR) so a
+/// fraction that is almost zero (vibration at the node) is held to TOL of FLOOR.
+const TOL: f64 = 5e-5;
 const FLOOR: f64 = 1e-2;
 
 fn both(p: &Params) -> (ImpactResult, ImpactResult) {
@@ -56,8 +58,14 @@ fn params() -> impl Strategy<Value = Params> {
     // a third of the rackets are non-uniform: random density and stiffness at the four knots
     let profile =
         prop::option::weighted(1.0 / 3.0, (prop::array::uniform4(0.3..3.0f64), prop::array::uniform4(0.5..2.0f64)));
-    (beam, profile).prop_map(|((xf, r, log_ks, ei, segments, hat), profile)| {
+    // the ball too: hysteresis exponent over its whole range, stiffness, mass and speed
+    let ball = (1.05..10.0f64, 3.5..5.0f64, 0.03..0.1f64, 2.0..60.0f64);
+    (beam, profile, ball).prop_map(|((xf, r, log_ks, ei, segments, hat), profile, (exponent, log_k1, mb, v1))| {
         let mut p = Params::paper();
+        p.ball.p = exponent;
+        p.ball.k1 = 10f64.powf(log_k1);
+        p.ball.mass = mb;
+        p.impact.v1 = v1;
         p.impact.x = xf * p.racket.length;
         p.impact.r = r;
         p.strings.ks = 10f64.powf(log_ks);
