@@ -54,17 +54,34 @@ pub(crate) fn commit_temp(tmp: &Path, path: &Path) -> Result<()> {
 /// [`ensure_dir`]).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     let tmp = temp_sibling(path, "")?;
+    if let Err(e) = write_synced(&tmp, path, bytes) {
+        let _ = fs::remove_file(&tmp);
+        return Err(e);
+    }
+    commit_temp(&tmp, path)
+}
+
+/// Write `bytes` to the temporary file `tmp` and sync it (errors name the eventual `target`);
+/// the caller removes `tmp` on error and renames it over `target` on success.
+pub(crate) fn write_synced(tmp: &Path, target: &Path, bytes: &[u8]) -> Result<()> {
     let written = (|| -> std::io::Result<()> {
-        let mut file = File::create(&tmp)?;
+        let mut file = File::create(tmp)?;
         file.write_all(bytes)?;
         file.flush()?;
         file.sync_all()
     })();
-    if let Err(e) = written {
-        let _ = fs::remove_file(&tmp);
-        return Err(Error::io(path, e));
+    written.map_err(|e| Error::io(target, e))
+}
+
+/// Refuse an output `path` whose directory does not exist, as an invalid value of the option
+/// `field` (checked before any work, so nothing is computed for an output that cannot be
+/// written).
+pub fn check_output_dir(field: &'static str, path: &Path) -> Result<()> {
+    let dir = parent_dir(path);
+    if !dir.is_dir() {
+        return Err(Error::invalid(field, path.display(), format!("directory {} does not exist", dir.display())));
     }
-    commit_temp(&tmp, path)
+    Ok(())
 }
 
 /// A file written in pieces and published atomically: the bytes go to a hidden temporary file

@@ -379,18 +379,10 @@ fn check_comparison(tensions_lb: &[f64], rackets_given: bool) -> Result<()> {
 }
 
 /// Fail early, before any computation, when an output file's directory does not exist.
-fn check_output_path(field: &'static str, path: &std::path::Path) -> Result<()> {
-    let parent = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(std::path::Path::new("."));
-    if !parent.is_dir() {
-        return Err(Error::invalid(field, path.display(), format!("directory {} does not exist", parent.display())));
-    }
-    Ok(())
-}
-
 fn simulate(a: SimulateArgs) -> Result<()> {
     let params = params_from(&a.common)?;
     if let Some(path) = &a.series {
-        check_output_path("series", path)?;
+        racket_impact::io::check_output_dir("series", path)?;
     }
     if !(a.series_dt.is_finite() && a.series_dt > 0.0) {
         return Err(Error::invalid("series-dt", a.series_dt, "sample spacing must be a finite number > 0 s"));
@@ -518,7 +510,7 @@ fn figures(a: FiguresArgs) -> Result<()> {
 
 fn report(a: ReportArgs) -> Result<()> {
     if !a.no_write {
-        check_output_path("out", &a.out)?;
+        racket_impact::io::check_output_dir("out", &a.out)?;
     }
     let rows = racket_impact::report::evaluate()?;
     let md = racket_impact::report::markdown(&rows);
@@ -562,7 +554,7 @@ fn sweep(a: SweepArgs) -> Result<()> {
     let sweep = Sweep { defaults, base, axes };
     sweep.validate_all()?; // a bad value anywhere fails before anything is written
     if let Some(path) = &a.out {
-        check_output_path("out", path)?;
+        racket_impact::io::check_output_dir("out", path)?;
     }
     let progress = Progress::new(sweep.len());
     let mut file = match &a.out {

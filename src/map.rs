@@ -195,16 +195,10 @@ impl Face {
         }
     }
 
-    /// Half the width at `x`, m (0 off the face along x). The expression of
+    /// Half the width at `x`, m (0 off the face along x). The function behind
     /// [`Racket::face_half_width`], so a point inside is a valid impact.
     pub fn half_width_at(&self, x: f64) -> f64 {
-        let a = 0.5 * self.length;
-        let q = (x - a) / a;
-        if q.abs() <= 1.0 {
-            self.half_width * (1.0 - q * q).max(0.0).sqrt()
-        } else {
-            0.0
-        }
+        crate::params::ellipse_half_width(self.length, self.half_width, x).unwrap_or(0.0)
     }
 
     /// `true` if `(x, r)` is on or inside the outline and the face has a width there.
@@ -749,14 +743,7 @@ impl Outputs {
                 "the CSV file of the map (the PNG and JSON go next to it with the same stem), e.g. map.csv",
             ));
         }
-        let parent = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(std::path::Path::new("."));
-        if !parent.is_dir() {
-            return Err(Error::invalid(
-                "out",
-                path.display(),
-                format!("directory {} does not exist", parent.display()),
-            ));
-        }
+        crate::io::check_output_dir("out", path)?;
         let out =
             Outputs { csv: path.to_path_buf(), png: path.with_extension("png"), json: path.with_extension("json") };
         for p in [&out.csv, &out.png, &out.json] {
@@ -779,8 +766,8 @@ impl Outputs {
             }
         };
         let written = (|| -> Result<()> {
-            write_synced(&tmp_csv, &self.csv, csv.as_bytes())?;
-            write_synced(&tmp_json, &self.json, json.as_bytes())?;
+            crate::io::write_synced(&tmp_csv, &self.csv, csv.as_bytes())?;
+            crate::io::write_synced(&tmp_json, &self.json, json.as_bytes())?;
             crate::heatmap::draw_file(map, &tmp_png)
                 .map_err(|message| Error::Plot { id: self.png.display().to_string(), message })
         })();
@@ -796,12 +783,6 @@ impl Outputs {
         }
         Ok(())
     }
-}
-
-fn write_synced(tmp: &std::path::Path, target: &std::path::Path, bytes: &[u8]) -> Result<()> {
-    use std::io::Write;
-    let mut f = std::fs::File::create(tmp).map_err(|e| Error::io(target, e))?;
-    f.write_all(bytes).and_then(|()| f.sync_all()).map_err(|e| Error::io(target, e))
 }
 
 #[cfg(test)]

@@ -14,7 +14,7 @@
 //! q(h) = cos(w h) q0 + sin(w h)/w v0 + g (a_F0 F0 + a_D0 D0 + a_F1 F1 + a_D1 D1)
 //! ```
 //! (and the same for `v(h)`), with the eight response coefficients of each mode computed once per
-//! step length ([`responses`]: a power series for `w h <= 1`, the polynomial particular solution
+//! step length (`responses`: a power series for `w h <= 1`, the polynomial particular solution
 //! otherwise). `Y_T(h)` and `Y_T'(h)` are then affine in `(F1, D1)`, so the implicit step is the
 //! contact law at the end of the step, `F1 = F(Y_T)` and `D1 = F'(Y_T) Y_T'`: a constant 2 x 2
 //! linear solve in compression (Eq 9) and, in expansion (Eq 10), Newton on the expansion law with

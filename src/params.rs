@@ -509,13 +509,17 @@ impl Racket {
     pub fn face_half_width(&self, x: f64) -> Option<f64> {
         match self.head_length {
             None => (0.0..=self.length).contains(&x).then_some(self.half_width),
-            Some(h) => {
-                let a = 0.5 * h;
-                let q = (x - a) / a;
-                (q.abs() <= 1.0).then(|| self.half_width * (1.0 - q * q).max(0.0).sqrt())
-            }
+            Some(h) => ellipse_half_width(h, self.half_width, x),
         }
     }
+}
+
+/// Half-width at `x` of the elliptical face that spans `0..=length` along the racket with
+/// half-width `half_width` at its middle (all m); `None` beyond its ends.
+pub fn ellipse_half_width(length: f64, half_width: f64, x: f64) -> Option<f64> {
+    let a = 0.5 * length;
+    let q = (x - a) / a;
+    (q.abs() <= 1.0).then(|| half_width * (1.0 - q * q).max(0.0).sqrt())
 }
 
 impl Profile {
@@ -566,16 +570,22 @@ impl Impact {
     }
 }
 
+/// Check a number of beam segments.
+pub fn check_segments(segments: usize) -> Result<()> {
+    if !(MIN_SEGMENTS..=MAX_SEGMENTS).contains(&segments) {
+        return Err(Error::invalid(
+            "segments",
+            segments,
+            format!("number of beam segments must satisfy {MIN_SEGMENTS} <= N <= {MAX_SEGMENTS}"),
+        ));
+    }
+    Ok(())
+}
+
 impl Numerics {
     /// Check the discretisation (the dt stability limit is checked when the beam is built).
     pub fn validate(&self) -> Result<()> {
-        if !(MIN_SEGMENTS..=MAX_SEGMENTS).contains(&self.segments) {
-            return Err(Error::invalid(
-                "segments",
-                self.segments,
-                format!("number of beam segments must satisfy {MIN_SEGMENTS} <= N <= {MAX_SEGMENTS}"),
-            ));
-        }
+        check_segments(self.segments)?;
         if let Some(dt) = self.dt {
             positive("dt", dt, "time step", "s")?;
         }

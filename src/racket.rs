@@ -94,7 +94,7 @@ use serde::Deserialize;
 
 use crate::error::{Error, Result};
 use crate::model::beam::Beam;
-use crate::params::{self, Ball, Profile, Racket, Strings, MAX_SEGMENTS, MIN_SEGMENTS};
+use crate::params::{self, Ball, Profile, Racket, Strings};
 use crate::table::{fmt_sig, Table, Value};
 
 /// Distance of the swingweight axis from the butt, m (the usual swingweight machine's axis).
@@ -633,13 +633,7 @@ impl RacketSpec {
     /// beam reproduces the mass, balance, swingweight and free-free frequency exactly (to
     /// rounding). Errors name the key that cannot be met.
     pub fn to_racket(&self, segments: usize) -> Result<Fitted> {
-        if !(MIN_SEGMENTS..=MAX_SEGMENTS).contains(&segments) {
-            return Err(Error::invalid(
-                "segments",
-                segments,
-                format!("number of beam segments must satisfy {MIN_SEGMENTS} <= N <= {MAX_SEGMENTS}"),
-            ));
-        }
+        params::check_segments(segments)?;
         let r = self.resolve()?;
         let (half_width, head_length) = match r.head {
             Some((l, hw)) => (hw, Some(l)),
@@ -884,12 +878,7 @@ pub fn resolve(spec: Option<&RacketSpec>, overrides: &params::Overrides) -> Resu
     let mut p = params::Params::default();
     let fitted = match spec {
         Some(spec) => {
-            let segments = overrides.segments.unwrap_or(p.numerics.segments);
-            if !(MIN_SEGMENTS..=MAX_SEGMENTS).contains(&segments) {
-                p.numerics.segments = segments;
-                p.numerics.validate()?;
-            }
-            let f = spec.to_racket(segments)?;
+            let f = spec.to_racket(overrides.segments.unwrap_or(p.numerics.segments))?;
             p.racket = f.racket;
             p.strings = f.strings;
             p.ball = f.ball;

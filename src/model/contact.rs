@@ -257,13 +257,15 @@ impl Contact {
 }
 
 /// Solve `u + a u^p = z` for `u >= 0` with `a > 0`, `p > 1`, `z >= 0`: Eq 10 in units of `Y0`
-/// (`a = k1/k_s`), and, with `a` enlarged by a compliance term, the implicit contact step of the
-/// modal solver. Newton from an upper bound of the root converges monotonically (the left side
+/// (`a = k1/k_s`), for the explicit solver. (The modal solver's implicit step solves the same law
+/// with its rate coupled in and powers from a binomial series: `modal::ModalModel::pow_step`,
+/// which reaches 10 % steps without a division; this one, kept for the explicit solver's
+/// results, uses [`pow_near`].) Newton from an upper bound of the root converges monotonically (the left side
 /// is increasing and convex), so the result is never negative and the loop always ends.
 /// Returns `(u, u^p)`. `guess` is `(u, u^p)` of the previous solve (any `u`; `u^p` must be its
 /// power: checked in debug builds); `u^p` of each iterate is carried from the previous one by
 /// [`pow_near`], so a warm-started solve usually needs no power function at all.
-pub(crate) fn solve_u(a: f64, p: f64, z: f64, guess: (f64, f64)) -> Result<(f64, f64)> {
+fn solve_u(a: f64, p: f64, z: f64, guess: (f64, f64)) -> Result<(f64, f64)> {
     let pow = |u: f64| if u > 0.0 { u.powf(p) } else { 0.0 };
     let (u_guess, guess_pow) = guess;
     debug_assert!(
@@ -316,7 +318,7 @@ pub(crate) fn solve_u(a: f64, p: f64, z: f64, guess: (f64, f64)) -> Result<(f64,
 /// `u^p` from a nearby reference `(u0, u0^p)`: `u0^p exp(p ln(u/u0))` by short series when
 /// `u/u0` is within 1 % of 1 (rounding-level accurate: the neglected terms are below 1e-17
 /// relative), `powf` otherwise.
-pub fn pow_near(u: f64, reference: (f64, f64), p: f64) -> f64 {
+fn pow_near(u: f64, reference: (f64, f64), p: f64) -> f64 {
     let (u0, p0) = reference;
     if u <= 0.0 {
         return 0.0;

@@ -166,28 +166,13 @@ impl FreeVibration {
     /// Samples of `sum_k weight_k(q_k)` over the first `k` modes at `m + 1` equally spaced times
     /// from `lo` to `hi`, by rotating each mode's phasor (no trigonometric call per sample).
     fn sample(&self, k: usize, lo: f64, hi: f64, m: usize, f: impl Fn(usize, f64) -> f64) -> Vec<f64> {
-        let dt = (hi - lo) / m as f64;
-        let mut q = Vec::with_capacity(k);
-        let mut p = Vec::with_capacity(k);
-        let mut rot = Vec::with_capacity(k);
-        for i in 0..k {
-            let (s, c) = (self.omega[i] * lo).sin_cos();
-            q.push(self.a[i] * c + self.b[i] * s);
-            p.push(self.b[i] * c - self.a[i] * s);
-            rot.push((self.omega[i] * dt).sin_cos());
-        }
+        let mut ph = self.phasors(k, lo);
+        let rot = self.rotation(k, (hi - lo) / m as f64);
         let mut out = Vec::with_capacity(m + 1);
-        out.push((0..k).map(|i| f(i, q[i])).sum());
+        out.push((0..k).map(|i| f(i, ph.q[i])).sum());
         for _ in 0..m {
-            let mut sum = 0.0;
-            for i in 0..k {
-                let (s, c) = rot[i];
-                let (qn, pn) = (q[i] * c + p[i] * s, p[i] * c - q[i] * s);
-                q[i] = qn;
-                p[i] = pn;
-                sum += f(i, qn);
-            }
-            out.push(sum);
+            ph.rotate(&rot);
+            out.push(ph.q.iter().enumerate().fold(0.0, |sum, (i, &q)| sum + f(i, q)));
         }
         out
     }

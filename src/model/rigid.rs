@@ -42,7 +42,7 @@ pub fn impact(p: &Params) -> Result<ImpactResult> {
     let f_spin = 0.5 * ix * omega * omega / e0;
     let f_rigid = (j * j / (2.0 * beam.total_mass) + (j * b).powi(2) / (2.0 * beam.i_cm)) / e0;
     let y0 = drop.y0_m;
-    let f_ball = (p.ball.p - 1.0) * k1 * y0 * y0 / (2.0 * q) / e0;
+    let f_ball = crate::model::contact::Contact::new(&p.ball, &p.strings).ball_loss(y0) / e0;
     let f_ke_ball = e_a * e_a;
     let result = ImpactResult {
         e_a,
