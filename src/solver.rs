@@ -609,7 +609,7 @@ impl Stepper {
         for i in 0..self.y.len() {
             let (k, c) = model.hand[i];
             let im = basis.inv_mass[i];
-            let mut force = 2.0 * self.moment[i + 1] - self.moment[i] - self.moment[i + 2] - k * self.y[i];
+            let mut force = Beam::elastic_force(&self.moment[i..i + 3]) - k * self.y[i];
             if i == j0 {
                 force += w0 * f;
             }
@@ -639,15 +639,7 @@ impl Stepper {
         for ((y, v), a) in self.y.iter_mut().zip(&self.v).zip(&self.a) {
             *y += v * dt + a * h;
         }
-        let mut twice_pe = 0.0;
-        // kappa is zero at the two end nodes, so their moments stay zero
-        let inner = &mut self.moment[2..self.y.len()];
-        for ((m, w), k) in inner.iter_mut().zip(self.y.windows(3)).zip(&kappa[1..]) {
-            let c = w[0] - 2.0 * w[1] + w[2];
-            *m = k * c;
-            twice_pe += *m * c;
-        }
-        0.5 * twice_pe
+        Beam::bending_moments(kappa, &self.y, &mut self.moment)
     }
 
     /// New accelerations from the bending moments and the contact force `f`, and the velocity
@@ -663,7 +655,7 @@ impl Stepper {
         for (((v, a), w), im) in
             self.v.iter_mut().zip(self.a.iter_mut()).zip(self.moment.windows(3)).zip(&basis.inv_mass)
         {
-            let an = (2.0 * w[1] - w[0] - w[2]) * im;
+            let an = Beam::elastic_force(w) * im;
             *v += (*a + an) * half;
             *a = an;
         }

@@ -101,30 +101,26 @@ impl Beam {
         self.segments + 1
     }
 
-    /// Second differences `c_j = y_{j-1} - 2 y_j + y_{j+1}` at interior nodes, written to
-    /// `curv[j]` for j = 1..N-1 (the end entries are set to zero).
-    fn curvature(y: &[f64], curv: &mut [f64]) {
-        let n = y.len() - 1;
-        curv[0] = 0.0;
-        curv[n] = 0.0;
-        for j in 1..n {
-            curv[j] = y[j - 1] - 2.0 * y[j] + y[j + 1];
+    /// The bending moments `kappa_j (y_{j-1} - 2 y_j + y_{j+1})` of the interior nodes into
+    /// `moment[j + 1]` (`moment` has N+3 entries: the end nodes' moments and a pad on each side
+    /// stay zero); returns the bending energy `y^T K y / 2`, J. The explicit solver's stencil.
+    pub fn bending_moments(kappa: &[f64], y: &[f64], moment: &mut [f64]) -> f64 {
+        let mut twice_pe = 0.0;
+        // kappa is zero at the two end nodes, so their moments stay zero
+        let inner = &mut moment[2..y.len()];
+        for ((m, w), k) in inner.iter_mut().zip(y.windows(3)).zip(&kappa[1..]) {
+            let c = w[0] - 2.0 * w[1] + w[2];
+            *m = k * c;
+            twice_pe += *m * c;
         }
+        0.5 * twice_pe
     }
 
-    /// Elastic forces `f = -K y`, N, using `curv` (N+1 values) as scratch: `curv` receives
-    /// the bending moments `kappa_j c_j` and `f = -D^T curv`.
-    pub fn elastic_forces(&self, y: &[f64], curv: &mut [f64], f: &mut [f64]) {
-        Self::curvature(y, curv);
-        for (c, k) in curv.iter_mut().zip(&self.kappa) {
-            *c *= k;
-        }
-        let n = self.segments;
-        for i in 0..=n {
-            let left = if i >= 1 { curv[i - 1] } else { 0.0 };
-            let right = if i < n { curv[i + 1] } else { 0.0 };
-            f[i] = -(left - 2.0 * curv[i] + right);
-        }
+    /// The elastic force on a node, `(-K y)_i = 2 M_i - M_{i-1} - M_{i+1}`, N, from the three
+    /// moments around it (`moment[i..i + 3]` of [`Beam::bending_moments`]).
+    #[inline(always)]
+    pub fn elastic_force(m: &[f64]) -> f64 {
+        2.0 * m[1] - m[0] - m[2]
     }
 
     /// Bending energy `y^T K y / 2`, J.
@@ -298,9 +294,10 @@ mod tests {
         let y: Vec<f64> = (0..13).map(|i| ((i * i) as f64 * 0.37).sin() * 1e-3).collect();
         let k = beam.stiffness_matrix();
         let dense = &k * nalgebra::DVector::from_vec(y.clone());
-        let mut curv = vec![0.0; 13];
-        let mut f = vec![0.0; 13];
-        beam.elastic_forces(&y, &mut curv, &mut f);
+        let mut moment = vec![0.0; 15];
+        let pe = Beam::bending_moments(&beam.kappa, &y, &mut moment);
+        let f: Vec<f64> = moment.windows(3).map(Beam::elastic_force).collect();
+        assert_relative_eq!(pe, beam.bending_energy(&y), max_relative = 1e-12);
         for i in 0..13 {
             assert_relative_eq!(-f[i], dense[i], max_relative = 1e-12, epsilon = 1e-9);
         }
@@ -312,9 +309,9 @@ mod tests {
     fn rigid_motions_carry_no_bending_force() {
         let beam = Beam::new(&Racket::default(), 39);
         let y: Vec<f64> = beam.x.iter().map(|x| 0.01 + 0.2 * x).collect();
-        let mut curv = vec![0.0; 40];
-        let mut f = vec![0.0; 40];
-        beam.elastic_forces(&y, &mut curv, &mut f);
+        let mut moment = vec![0.0; 42];
+        Beam::bending_moments(&beam.kappa, &y, &mut moment);
+        let f: Vec<f64> = moment.windows(3).map(Beam::elastic_force).collect();
         assert!(f.iter().all(|v| v.abs() < 1e-6), "{f:?}");
         assert!(beam.bending_energy(&y) < 1e-12);
     }
