@@ -659,6 +659,7 @@ fn racket_cmd(a: RacketArgs) -> Result<()> {
 }
 
 fn speed(a: SpeedArgs) -> Result<()> {
+    use racket_impact::experiments::speeds::{gain_pct, outgoing_speed};
     use racket_impact::table::{Table, Value};
     let unit = a.unit.si();
     for (field, v) in [("swing", a.swing), ("incoming", a.incoming)] {
@@ -689,7 +690,7 @@ fn speed(a: SpeedArgs) -> Result<()> {
         p.impact.v1 = v_in + v_racket;
         p.validate()?;
         let r = racket_impact::simulate(&p)?;
-        let v_out = racket_impact::experiments::speeds::outgoing_speed(r.e_a, v_in, v_racket);
+        let v_out = outgoing_speed(r.e_a, v_in, v_racket);
         rows.push((label.clone(), p, r, v_out));
     }
     let v_ref = rows[0].3;
@@ -707,7 +708,7 @@ fn speed(a: SpeedArgs) -> Result<()> {
             (1e3 * r.tau_s).into(),
             r.theta_end_deg.into(),
             (v_out / unit).into(),
-            (100.0 * (v_out / v_ref - 1.0)).into(),
+            gain_pct(v_ref, *v_out).into(),
             Value::Text(a.unit.label().into()),
         ])?;
     }
@@ -719,7 +720,7 @@ fn speed(a: SpeedArgs) -> Result<()> {
                 .map(|(label, p, r, v_out)| {
                     serde_json::json!({
                         "variant": label, "params": p, "result": r,
-                        "ball_speed_out": v_out / unit, "change_pct": 100.0 * (v_out / v_ref - 1.0), "unit": a.unit.label(),
+                        "ball_speed_out": v_out / unit, "change_pct": gain_pct(v_ref, *v_out), "unit": a.unit.label(),
                     })
                 })
                 .collect();
@@ -748,7 +749,7 @@ fn speed(a: SpeedArgs) -> Result<()> {
                     r.theta_end_deg,
                     v_out / unit,
                     a.unit.label(),
-                    100.0 * (v_out / v_ref - 1.0)
+                    gain_pct(v_ref, *v_out)
                 ));
             }
             s
@@ -784,22 +785,11 @@ fn racket_label(arg: Option<&str>) -> String {
     }
 }
 
-/// What the metadata's parameters mean for the impact point.
-const IMPACT_NOTE: &str =
-    "params.impact.x and params.impact.r are the face centre; each grid point moves the impact there";
-
 fn map(a: MapArgs) -> Result<()> {
-    use racket_impact::map::{config_metadata, DiffMap, FaceMap, Outputs, MAX_GRID, MIN_GRID};
+    use racket_impact::map::{check_count, DiffMap, FaceMap, Outputs};
     use racket_impact::params::ks_from_tension_lb;
-    for (field, n) in [("nx", a.nx), ("nr", a.nr)] {
-        if !(MIN_GRID..=MAX_GRID).contains(&n) {
-            return Err(Error::invalid(
-                field,
-                n,
-                format!("grid points must satisfy {MIN_GRID} <= {field} <= {MAX_GRID}"),
-            ));
-        }
-    }
+    check_count("nx", a.nx)?;
+    check_count("nr", a.nr)?;
     check_comparison(&a.compare_tension_lb, a.compare_racket.is_some())?;
     if a.compare_tension_lb.len() > 2 {
         return Err(Error::invalid(
@@ -862,41 +852,18 @@ fn map(a: MapArgs) -> Result<()> {
     let started = bar.started;
     let mut progress = |done: u64| bar.update(done);
     let q = a.quantity;
-    let grid_json =
-        |g: &racket_impact::map::Grid| serde_json::json!({ "nx": a.nx, "nr": a.nr, "x_m": g.xs, "r_m": g.rs });
+    let counts = (a.nx, a.nr);
     let computed = (|| -> Result<_> {
         Ok(match &configs[..] {
             [(la, pa), (lb, pb)] => {
                 let d = DiffMap::compute(pa, pb, a.nx, a.nr, &mut progress)?;
-                let table = d.table(q);
-                let heat = d.heatmap(q, la, lb);
-                let vals: Vec<f64> = d.values(q).into_iter().filter(|v| v.is_finite()).collect();
-                let meta = serde_json::json!({
-                    "quantity": q.name(), "column": q.column(), "unit": q.unit(),
-                    "note": IMPACT_NOTE,
-                    "difference": "b - a",
-                    "grid": grid_json(&d.a.grid),
-                    "points": d.len(),
-                    "a": config_metadata(la, &d.a, q)?,
-                    "b": config_metadata(lb, &d.b, q)?,
-                    "b_minus_a": {
-                        "min": vals.iter().copied().reduce(f64::min),
-                        "max": vals.iter().copied().reduce(f64::max),
-                        "mean": if vals.is_empty() { None } else { Some(vals.iter().sum::<f64>() / vals.len() as f64) },
-                    },
-                });
-                let summary = diff_summary(&d, q, la, lb, &vals);
-                (table, heat, meta, summary)
+                let meta = d.metadata((la, lb), q, counts)?;
+                let summary = diff_summary(&d, q, la, lb);
+                (d.table(q), d.heatmap(q, la, lb), meta, summary)
             }
             [(la, pa)] => {
                 let m = FaceMap::compute(pa, a.nx, a.nr, &mut progress)?;
-                let meta = serde_json::json!({
-                    "quantity": q.name(), "column": q.column(), "unit": q.unit(),
-                    "note": IMPACT_NOTE,
-                    "grid": grid_json(&m.grid),
-                    "points": m.len(),
-                    "a": config_metadata(la, &m, q)?,
-                });
+                let meta = m.metadata(la, q, counts)?;
                 let summary = map_summary(&m, q, la)?;
                 (m.table(), m.heatmap(q, la), meta, summary)
             }
@@ -972,7 +939,7 @@ fn map_summary(m: &racket_impact::map::FaceMap, q: Quantity, label: &str) -> Res
     Ok(s)
 }
 
-fn diff_summary(d: &racket_impact::map::DiffMap, q: Quantity, la: &str, lb: &str, vals: &[f64]) -> String {
+fn diff_summary(d: &racket_impact::map::DiffMap, q: Quantity, la: &str, lb: &str) -> String {
     let unit = if q.unit().is_empty() { String::new() } else { format!(" {}", q.unit()) };
     let mut s = format!(
         "difference map of {}: B - A, A = {la} (ks {:.0} N/m), B = {lb} (ks {:.0} N/m); {} x {} grid, {} points inside both faces\n",
@@ -983,7 +950,7 @@ fn diff_summary(d: &racket_impact::map::DiffMap, q: Quantity, la: &str, lb: &str
         d.a.grid.rs.len(),
         d.len()
     );
-    if let (Some(lo), Some(hi)) = (vals.iter().copied().reduce(f64::min), vals.iter().copied().reduce(f64::max)) {
+    if let racket_impact::map::Spread { min: Some(lo), max: Some(hi), .. } = d.spread(q) {
         s.push_str(&format!("B - A from {lo:.4} to {hi:.4}{unit}\n"));
     }
     s

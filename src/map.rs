@@ -276,7 +276,8 @@ impl Grid {
     }
 }
 
-fn check_count(field: &'static str, n: usize) -> Result<()> {
+/// Check a grid's point count along one axis (`field` is `nx` or `nr`).
+pub fn check_count(field: &'static str, n: usize) -> Result<()> {
     if (MIN_GRID..=MAX_GRID).contains(&n) {
         Ok(())
     } else {
@@ -685,6 +686,67 @@ impl DiffMap {
             segments,
             markers,
         }
+    }
+}
+
+/// What the metadata's parameters mean for the impact point.
+const IMPACT_NOTE: &str =
+    "params.impact.x and params.impact.r are the face centre; each grid point moves the impact there";
+
+/// The grid for the metadata: the requested counts and the coordinates.
+fn grid_metadata(g: &Grid, nx: usize, nr: usize) -> serde_json::Value {
+    serde_json::json!({ "nx": nx, "nr": nr, "x_m": g.xs, "r_m": g.rs })
+}
+
+impl FaceMap {
+    /// The JSON metadata of a map of `q` requested on an `nx x nr` grid: the quantity, the grid
+    /// and the configuration ([`config_metadata`]).
+    pub fn metadata(&self, label: &str, q: Quantity, (nx, nr): (usize, usize)) -> Result<serde_json::Value> {
+        Ok(serde_json::json!({
+            "quantity": q.name(), "column": q.column(), "unit": q.unit(),
+            "note": IMPACT_NOTE,
+            "grid": grid_metadata(&self.grid, nx, nr),
+            "points": self.len(),
+            "a": config_metadata(label, self, q)?,
+        }))
+    }
+}
+
+/// Smallest, largest and mean of the finite values, `None` when there are none.
+pub struct Spread {
+    /// Smallest value.
+    pub min: Option<f64>,
+    /// Largest value.
+    pub max: Option<f64>,
+    /// Mean value.
+    pub mean: Option<f64>,
+}
+
+impl DiffMap {
+    /// Spread of `B - A` of `q` over the points inside both faces.
+    pub fn spread(&self, q: Quantity) -> Spread {
+        let vals: Vec<f64> = self.values(q).into_iter().filter(|v| v.is_finite()).collect();
+        Spread {
+            min: vals.iter().copied().reduce(f64::min),
+            max: vals.iter().copied().reduce(f64::max),
+            mean: if vals.is_empty() { None } else { Some(vals.iter().sum::<f64>() / vals.len() as f64) },
+        }
+    }
+
+    /// The JSON metadata of a difference map (as [`FaceMap::metadata`], both configurations and
+    /// the spread of `B - A`).
+    pub fn metadata(&self, labels: (&str, &str), q: Quantity, (nx, nr): (usize, usize)) -> Result<serde_json::Value> {
+        let spread = self.spread(q);
+        Ok(serde_json::json!({
+            "quantity": q.name(), "column": q.column(), "unit": q.unit(),
+            "note": IMPACT_NOTE,
+            "difference": "b - a",
+            "grid": grid_metadata(&self.a.grid, nx, nr),
+            "points": self.len(),
+            "a": config_metadata(labels.0, &self.a, q)?,
+            "b": config_metadata(labels.1, &self.b, q)?,
+            "b_minus_a": { "min": spread.min, "max": spread.max, "mean": spread.mean },
+        }))
     }
 }
 
