@@ -42,6 +42,7 @@
 use crate::error::{Error, Result};
 use crate::model::contact::{ContactState, Phase};
 use crate::model::free::FreeVibration;
+use crate::model::sum4;
 use crate::params::Params;
 use crate::solver::{hermite_eval, hermite_max, hermite_root, ImpactResult, Model};
 
@@ -61,9 +62,6 @@ pub struct Resolution {
 /// The default resolution: modal and explicit solvers agree to 1e-4 (tests/modal.rs).
 pub const DEFAULT_RESOLUTION: Resolution =
     Resolution { mode_cutoff: 50.0, phase_per_step: 0.1, impulse_tolerance: 1e-7 };
-
-/// Terms of the binomial series for the power of a Newton iterate.
-const BINOMIAL_TERMS: usize = 17;
 
 /// Levels of step refinement below the base step, and the ratio between levels.
 const LEVELS: usize = 7;
@@ -142,25 +140,11 @@ impl Grid {
     }
 }
 
-/// `sum_i f(i)` over `0..n` with four partial sums (so that it vectorises).
-#[inline(always)]
-fn sum4(n: usize, f: impl Fn(usize) -> f64) -> f64 {
-    let mut acc = [0.0; 4];
-    let whole = n - n % 4;
-    for j in (0..whole).step_by(4) {
-        for (i, a) in acc.iter_mut().enumerate() {
-            *a += f(j + i);
-        }
-    }
-    let tail: f64 = (whole..n).map(&f).sum();
-    (acc[0] + acc[2]) + (acc[1] + acc[3]) + tail
-}
-
 /// `sum a_i b_i` over the shorter slice.
 fn dot(a: &[f64], b: &[f64]) -> f64 {
     let n = a.len().min(b.len());
     let (a, b) = (&a[..n], &b[..n]);
-    sum4(n, |i| a[i] * b[i])
+    sum4(n, |i| [a[i] * b[i]])[0]
 }
 
 /// A prepared modal model of one impact.
@@ -175,8 +159,6 @@ pub struct ModalModel {
     residual: f64,
     /// Largest impulse error allowed per step, N s.
     impulse_tolerance: f64,
-    /// `C(p, n)`, the binomial coefficients of `(1 + x)^p`.
-    binomial: [f64; BINOMIAL_TERMS],
     /// Step tables: the base step, then each level `REFINE` times shorter (built when needed).
     grids: [std::sync::OnceLock<Grid>; LEVELS],
 }
@@ -299,11 +281,7 @@ impl ModalModel {
         }
         let omega: Vec<f64> = lam.iter().map(|l| l.sqrt()).collect();
         let impulse_tolerance = res.impulse_tolerance * mb * params.impact.v1;
-        let mut binomial = [1.0; BINOMIAL_TERMS];
-        for n in 1..BINOMIAL_TERMS {
-            binomial[n] = binomial[n - 1] * (params.ball.p - (n - 1) as f64) / n as f64;
-        }
-        let m = ModalModel { base, lam, omega, g, residual, impulse_tolerance, binomial, grids: Default::default() };
+        let m = ModalModel { base, lam, omega, g, residual, impulse_tolerance, grids: Default::default() };
         let grid = Grid::new(&m, h);
         let _ = m.grids[0].set(grid);
         Ok(m)
@@ -392,7 +370,7 @@ impl ModalModel {
         }
         // kinetic plus potential
         let lam = &self.lam[..n];
-        let e = sum4(n, |j| v[j] * v[j] + lam[j] * q[j] * q[j]);
+        let [e] = sum4(n, |j| [v[j] * v[j] + lam[j] * q[j] * q[j]]);
         0.5 * e
     }
 
@@ -400,7 +378,7 @@ impl ModalModel {
     /// Newton on Eq 10, `u + (k1/k_s + bf k1) u^p = z` with `z = (Y_hat - bd D1) / Y0`, from
     /// `start = (u, u^p)`, with `D1 = F'(Y_T) Y_T'` updated from each iterate from its first
     /// guess `d_guess` (its coupling `bd` is of order `h^3`). Each iterate's power comes from
-    /// the previous one by the binomial series ([`ModalModel::pow_step`]), so a good start needs
+    /// the previous one by the binomial series ([`PowSeries::step`](crate::model::contact::PowSeries::step)), so a good start needs
     /// no power function. `Ok(None)` when the ball has left.
     fn expansion_end(
         &self,
@@ -436,7 +414,7 @@ impl ModalModel {
             let r = p * up * inv_u;
             let step = (u + beta * up - z) / (1.0 + beta * r);
             let delta = (-step * inv_u).max(-0.5);
-            up = self.pow_step(u, up, delta);
+            up = self.base.contact.pow.step(u, up, delta);
             u *= 1.0 + delta;
             inv_u = 1.0 / u;
             // dF/dY_T along Eq 10 with the strings in series, and the rate from it
@@ -455,30 +433,6 @@ impl ModalModel {
             }
         }
         Err(Error::ContactSolve { z })
-    }
-
-    /// `(u (1 + delta))^p` from `up = u^p`: the binomial series `sum C(p, n) delta^n`, cut where
-    /// `|delta|^n` is below 1e-17 (times `C(p, n)`, at most 252 for `p <= 10`: still
-    /// rounding-level; tested against `powf` for p from 1.0001 to 10), for `|delta| <= 0.1`
-    /// (at most 17 terms), `powf` otherwise.
-    #[inline]
-    fn pow_step(&self, u: f64, up: f64, delta: f64) -> f64 {
-        let a = delta.abs();
-        let terms = match a {
-            _ if a <= 1e-9 => 2,
-            _ if a <= 1e-6 => 3,
-            _ if a <= 1e-4 => 5,
-            _ if a <= 1e-3 => 6,
-            _ if a <= 1e-2 => 9,
-            _ if a <= 0.1 => BINOMIAL_TERMS,
-            _ => return (u * (1.0 + delta)).powf(self.base.contact.p),
-        };
-        let b = &self.binomial;
-        let mut s = b[terms - 1];
-        for k in (0..terms - 1).rev() {
-            s = s * delta + b[k];
-        }
-        up * s
     }
 
     /// The force error of a cubic history whose midpoint force is `f` against the expansion law
@@ -617,25 +571,6 @@ mod tests {
     }
 
     #[test]
-    fn powers_from_the_binomial_series_match_powf() {
-        for p in [1.0001, 1.3, 2.55, 4.0, 7.0, 10.0] {
-            let mut params = Params::paper();
-            params.ball.p = p;
-            let m = ModalModel::new(&params).unwrap();
-            let mut worst: f64 = 0.0;
-            for u in [1e-6, 0.01, 0.37, 1.0] {
-                for k in -2000..=2000 {
-                    let delta = k as f64 * 5e-5 * 1.0000003;
-                    let exact = (u * (1.0 + delta)).powf(p);
-                    worst = worst.max((m.pow_step(u, u.powf(p), delta) / exact - 1.0).abs());
-                }
-            }
-            // rounding of u (1 + delta) alone moves its p-th power by p times 1.1e-16
-            assert!(worst < 4e-16 * p.max(2.0), "p {p}: {worst:e}");
-        }
-    }
-
-    #[test]
     fn the_two_branches_meet() {
         let h = 2e-4;
         let (lb, la) = ((1.0 - 1e-12) / (h * h), (1.0 + 1e-12) / (h * h));
@@ -708,7 +643,7 @@ impl Run<'_> {
                 let (u0, up0) = a.u;
                 let r0 = if u0 > 0.0 { c.p * up0 / u0 } else { 0.0 };
                 let u1 = u0 + h * a.ytd / (y0 * (1.0 + r0 * c.k1 / c.ks));
-                let start = if u1 > 0.0 && u0 > 0.0 { (u1, m.pow_step(u0, up0, u1 / u0 - 1.0)) } else { (0.0, 0.0) };
+                let start = if u1 > 0.0 && u0 > 0.0 { (u1, c.pow.step(u0, up0, u1 / u0 - 1.0)) } else { (0.0, 0.0) };
                 let e = m.expansion_end(grid, y0, (yh, ydh), start, a.d)?.unwrap_or_default();
                 end.u = e.u;
                 (e.f, e.d)

@@ -105,14 +105,18 @@ impl Beam {
     /// `moment[j + 1]` (`moment` has N+3 entries: the end nodes' moments and a pad on each side
     /// stay zero); returns the bending energy `y^T K y / 2`, J. The explicit solver's stencil.
     pub fn bending_moments(kappa: &[f64], y: &[f64], moment: &mut [f64]) -> f64 {
-        let mut twice_pe = 0.0;
-        // kappa is zero at the two end nodes, so their moments stay zero
-        let inner = &mut moment[2..y.len()];
-        for ((m, w), k) in inner.iter_mut().zip(y.windows(3)).zip(&kappa[1..]) {
-            let c = w[0] - 2.0 * w[1] + w[2];
-            *m = k * c;
-            twice_pe += *m * c;
+        // kappa is zero at the two end nodes, so their moments stay zero; the interior nodes'
+        // neighbours as shifted slices make loops the compiler vectorises
+        let n = y.len() - 2;
+        let (left, centre, right) = (&y[..n], &y[1..n + 1], &y[2..n + 2]);
+        let curvature = |i: usize| left[i] - 2.0 * centre[i] + right[i];
+        let inner = &mut moment[2..n + 2];
+        for (m, (k, ((l, c), r))) in
+            inner.iter_mut().zip(kappa[1..n + 1].iter().zip(left.iter().zip(centre).zip(right)))
+        {
+            *m = k * (l - 2.0 * c + r);
         }
+        let [twice_pe] = super::sum4(n, |i| [inner[i] * curvature(i)]);
         0.5 * twice_pe
     }
 

@@ -45,6 +45,56 @@ pub struct Contact {
     stiffening: f64,
     /// Upper bound of the string deflection over the impact, m (for the stiffness bound).
     deflection_bound: f64,
+    /// Powers `u^p` of nearby points without a power function.
+    pub pow: PowSeries,
+}
+
+/// Terms of the binomial series for the power of a nearby point.
+const BINOMIAL_TERMS: usize = 17;
+
+/// `(u (1 + delta))^p` from `u^p` by the binomial series: both solvers carry the ball law's power
+/// from one Newton iterate (or one step) to the next with it instead of calling `powf`.
+#[derive(Debug, Clone, Copy)]
+pub struct PowSeries {
+    /// The exponent `p`.
+    p: f64,
+    /// `C(p, n)`, the binomial coefficients of `(1 + x)^p`.
+    binomial: [f64; BINOMIAL_TERMS],
+}
+
+impl PowSeries {
+    /// The series for exponent `p`.
+    pub fn new(p: f64) -> Self {
+        let mut binomial = [1.0; BINOMIAL_TERMS];
+        for n in 1..BINOMIAL_TERMS {
+            binomial[n] = binomial[n - 1] * (p - (n - 1) as f64) / n as f64;
+        }
+        PowSeries { p, binomial }
+    }
+
+    /// `(u (1 + delta))^p` from `up = u^p`: the binomial series `sum C(p, n) delta^n`, cut where
+    /// `|delta|^n` is below 1e-17 (times `C(p, n)`, at most 252 for `p <= 10`: still
+    /// rounding-level; tested against `powf` for p from 1.0001 to 10), for `|delta| <= 0.1`
+    /// (at most 17 terms), `powf` otherwise.
+    #[inline]
+    pub fn step(&self, u: f64, up: f64, delta: f64) -> f64 {
+        let a = delta.abs();
+        let terms = match a {
+            _ if a <= 1e-9 => 2,
+            _ if a <= 1e-6 => 3,
+            _ if a <= 1e-4 => 5,
+            _ if a <= 1e-3 => 6,
+            _ if a <= 1e-2 => 9,
+            _ if a <= 0.1 => BINOMIAL_TERMS,
+            _ => return (u * (1.0 + delta)).powf(self.p),
+        };
+        let b = &self.binomial;
+        let mut s = b[terms - 1];
+        for k in (0..terms - 1).rev() {
+            s = s * delta + b[k];
+        }
+        up * s
+    }
 }
 
 /// The force and compressions at one total compression `Y_T`.
@@ -85,6 +135,7 @@ impl Contact {
             k_series: k1 * ks / (k1 + ks),
             stiffening: 0.0,
             deflection_bound: 0.0,
+            pow: PowSeries::new(ball.p),
         }
     }
 
@@ -197,7 +248,7 @@ impl Contact {
             }
             Phase::Expansion { y0 } => {
                 let z = yt / y0;
-                let (u, up) = solve_u(self.alpha, self.p, z, guess)?;
+                let (u, up) = solve_u(self.alpha, &self.pow, z, guess)?;
                 let ball_compression = u * y0;
                 Ok(ContactState {
                     force: self.k1 * y0 * up,
@@ -258,53 +309,68 @@ impl Contact {
 
 /// Solve `u + a u^p = z` for `u >= 0` with `a > 0`, `p > 1`, `z >= 0`: Eq 10 in units of `Y0`
 /// (`a = k1/k_s`), for the explicit solver. (The modal solver's implicit step solves the same law
-/// with its rate coupled in and powers from a binomial series: `modal::ModalModel::pow_step`,
-/// which reaches 10 % steps without a division; this one, kept for the explicit solver's
-/// results, uses [`pow_near`].) Newton from an upper bound of the root converges monotonically (the left side
-/// is increasing and convex), so the result is never negative and the loop always ends.
-/// Returns `(u, u^p)`. `guess` is `(u, u^p)` of the previous solve (any `u`; `u^p` must be its
-/// power: checked in debug builds); `u^p` of each iterate is carried from the previous one by
-/// [`pow_near`], so a warm-started solve usually needs no power function at all.
-fn solve_u(a: f64, p: f64, z: f64, guess: (f64, f64)) -> Result<(f64, f64)> {
-    let pow = |u: f64| if u > 0.0 { u.powf(p) } else { 0.0 };
-    let (u_guess, guess_pow) = guess;
+/// with its rate coupled in: `modal::ModalModel::expansion_end`.) Newton from an upper bound of
+/// the root converges monotonically (the left side is increasing and convex), so the result is
+/// never negative and the loop always ends. Returns `(u, u^p)`. `guess` is `(u, u^p)` of the
+/// previous solve (any `u`; `u^p` must be its power: checked in debug builds); `u^p` of each
+/// iterate is carried from the previous one by the binomial series ([`PowSeries::step`]), so a
+/// warm-started solve needs no power function.
+fn solve_u(a: f64, pow: &PowSeries, z: f64, guess: (f64, f64)) -> Result<(f64, f64)> {
+    let p = pow.p;
+    let powf = |u: f64| if u > 0.0 { u.powf(p) } else { 0.0 };
+    // the power of `next = u (1 + delta)`: by the series from `up = u^p` when the move is short,
+    // else of `next` itself (a long move's `1 + delta` has lost digits to cancellation)
+    let carry = |u: f64, up: f64, next: f64, delta: f64| {
+        if next > 0.0 && delta.abs() <= 0.1 {
+            pow.step(u, up, delta)
+        } else {
+            powf(next)
+        }
+    };
+    let (mut u, mut up) = guess;
     debug_assert!(
-        !(u_guess > 0.0 && guess_pow > 0.0) || (guess_pow / u_guess.powf(p) - 1.0).abs() < 1e-9,
+        !(u > 0.0 && up > 0.0) || (up / u.powf(p) - 1.0).abs() < 1e-9,
         "solve_u: guess {guess:?} is not (u, u^p) for p = {p}"
     );
-    // The previous step's u is an upper bound whenever z has not grown (the usual case in
-    // expansion): Newton starts there, one or two iterations from the root. A start far above
-    // the root would lose digits to cancellation in `u - step`, so the guess must also lie
-    // below the cheap bounds z (u < z always) and 1 (when z <= 1 + a).
+    // Upper bounds of the root (h >= 0 there): z itself (u < z always), (z/a)^(1/p), and 1
+    // whenever z <= 1 + a (Y_T at or below its maximum; above it the frame has sprung back and
+    // reloads the ball on its expansion curve). A start far above the root would lose digits to
+    // cancellation in `u - step`, so a start must also lie below the cheap ones.
     let cheap = if z <= 1.0 + a { z.min(1.0) } else { z };
-    let mut u = u_guess;
-    let mut up = if u > 0.0 && guess_pow > 0.0 && guess_pow.is_finite() { guess_pow } else { pow(u) };
-    if !(u > 0.0 && u <= cheap && u + a * up - z >= 0.0) {
-        // Upper bounds of the root (h >= 0 there): z itself, (z/a)^(1/p), and 1 whenever
-        // z <= 1 + a (Y_T at or below its maximum; above it the frame has sprung back and
-        // reloads the ball on its expansion curve). The smallest keeps Newton short.
+    let warm = u > 0.0 && up > 0.0 && up.is_finite() && u <= cheap;
+    if warm && u + a * up - z < 0.0 {
+        // The previous root lies left of this one (z has grown): one Newton step from the left
+        // lands right of the root (convexity), a short way off, and the iteration below goes on
+        // from there.
+        let next = (u - (u + a * up - z) / (1.0 + a * p * up / u)).min(cheap);
+        up = carry(u, up, next, next / u - 1.0);
+        u = next;
+    } else if !warm {
+        // no usable start: the smallest of the upper bounds keeps Newton short
         u = z.min((z / a).powf(1.0 / p));
         if z <= 1.0 + a {
             u = u.min(1.0);
         }
-        up = pow(u);
+        up = powf(u);
     }
     for _ in 0..200 {
         let hu = u + a * up - z;
         if hu <= 0.0 || u <= 0.0 {
             return Ok((u, up));
         }
-        let d1 = 1.0 + a * p * up / u;
+        let inv_u = 1.0 / u;
+        let g = a * p * up * inv_u;
+        let d1 = 1.0 + g;
         let mut step = hu / d1;
         let halley = step < 1e-5 * u;
         if halley {
             // close to the root: Halley's correction (third order; its overshoot is of the
             // order of the cube of the step, below rounding)
-            let d2 = a * p * (p - 1.0) * up / (u * u);
-            step = hu / (d1 - 0.5 * hu * d2 / d1);
+            let d2 = (p - 1.0) * g * inv_u;
+            step = hu * d1 / (d1 * d1 - 0.5 * hu * d2);
         }
         let next = (u - step).max(0.0);
-        let next_pow = pow_near(next, (u, up), p);
+        let next_pow = carry(u, up, next, -step * inv_u);
         // after a Halley step of 1e-6 the error is of order 1e-18: done
         if (halley && step <= 1e-6 * u) || step <= 4.0 * f64::EPSILON * u || next == u {
             return Ok((next, next_pow));
@@ -313,35 +379,6 @@ fn solve_u(a: f64, p: f64, z: f64, guess: (f64, f64)) -> Result<(f64, f64)> {
         up = next_pow;
     }
     Err(Error::ContactSolve { z })
-}
-
-/// `u^p` from a nearby reference `(u0, u0^p)`: `u0^p exp(p ln(u/u0))` by short series when
-/// `u/u0` is within 1 % of 1 (rounding-level accurate: the neglected terms are below 1e-17
-/// relative), `powf` otherwise.
-fn pow_near(u: f64, reference: (f64, f64), p: f64) -> f64 {
-    let (u0, p0) = reference;
-    if u <= 0.0 {
-        return 0.0;
-    }
-    let x = u / u0 - 1.0;
-    if !(x.abs() < 0.01 && u0 > 0.0) {
-        return u.powf(p);
-    }
-    // ln(1 + x) = 2 atanh(s), s = x / (2 + x), |s| < 0.005
-    let s = x / (2.0 + x);
-    let s2 = s * s;
-    let ln = 2.0 * s * (1.0 + s2 * (1.0 / 3.0 + s2 * (1.0 / 5.0 + s2 * (1.0 / 7.0))));
-    let y = p * ln;
-    if y.abs() >= 0.02 {
-        return u.powf(p);
-    }
-    // exp(y) to y^8 / 8!
-    let e = 1.0
-        + y * (1.0
-            + y * (1.0 / 2.0
-                + y * (1.0 / 6.0
-                    + y * (1.0 / 24.0 + y * (1.0 / 120.0 + y * (1.0 / 720.0 + y * (1.0 / 5040.0 + y / 40320.0)))))));
-    p0 * e
 }
 
 #[cfg(test)]
@@ -369,13 +406,19 @@ mod tests {
         let c = contact(2.0e4);
         let y0 = 0.008;
         for &yt in &[1e-9, 1e-5, 0.003, 0.0119, 0.02] {
-            for &guess in &[0.0, 0.5, 1.0, 7.0] {
+            let root = c.state(yt, Phase::Expansion { y0 }, (0.0, 0.0)).unwrap().u;
+            // cold, far above and below, and just left and right of the root (the warm starts
+            // of a time step: a start left of the root takes one Newton step to its right)
+            let near = [0.9, 0.999, 1.0 - 1e-9, 1.001, 1.05].map(|f| f * root);
+            for &guess in [0.0, 0.5, 1.0, 7.0].iter().chain(&near) {
                 let st = c.state(yt, Phase::Expansion { y0 }, (guess, guess.powf(c.p))).unwrap();
                 let k2 = c.k1 * y0.powf(1.0 - c.p);
                 let yb = st.ball_compression;
                 assert!(yb >= 0.0);
                 assert_relative_eq!(yb + k2 * yb.powf(c.p) / c.ks, yt, max_relative = 1e-12);
                 assert_relative_eq!(st.force, c.ks * (yt - yb), max_relative = 1e-9);
+                // the carried power is the power of the returned u
+                assert_relative_eq!(st.u_pow, st.u.powf(c.p), max_relative = 1e-14);
             }
         }
     }
@@ -398,19 +441,19 @@ mod tests {
     }
 
     #[test]
-    fn power_from_a_nearby_point_matches_powf() {
-        for &p in &[1.0 + 1e-9, 1.7, 2.55, 10.0] {
-            for i in 0..2000 {
-                let u0 = 1e-6 + (i as f64 * 0.61803).fract();
-                for &x in &[-0.0099, -1e-3, -1e-9, 0.0, 3e-7, 2e-3, 0.0099, 0.05] {
-                    let u = u0 * (1.0 + x);
-                    let exact = u.powf(p);
-                    let near = pow_near(u, (u0, u0.powf(p)), p);
-                    // the rounding of u / u0 is amplified p times, as it is in u^p itself
-                    let tol = (p + 3.0) * f64::EPSILON * exact;
-                    assert!((near - exact).abs() <= tol, "p {p} u0 {u0} x {x}: {near} vs {exact}");
+    fn powers_from_the_binomial_series_match_powf() {
+        for p in [1.0001, 1.3, 2.55, 4.0, 7.0, 10.0] {
+            let series = PowSeries::new(p);
+            let mut worst: f64 = 0.0;
+            for u in [1e-6, 0.01, 0.37, 1.0] {
+                for k in -2000..=2000 {
+                    let delta = k as f64 * 5e-5 * 1.0000003;
+                    let exact = (u * (1.0 + delta)).powf(p);
+                    worst = worst.max((series.step(u, u.powf(p), delta) / exact - 1.0).abs());
                 }
             }
+            // rounding of u (1 + delta) alone moves its p-th power by p times 1.1e-16
+            assert!(worst < 4e-16 * p.max(2.0), "p {p}: {worst:e}");
         }
     }
 
