@@ -42,7 +42,6 @@
 use crate::error::{Error, Result};
 use crate::model::contact::{ContactState, Phase};
 use crate::model::free::FreeVibration;
-use crate::model::sum4;
 use crate::params::Params;
 use crate::solver::{hermite_eval, hermite_max, hermite_root, ImpactResult, Model};
 
@@ -140,11 +139,25 @@ impl Grid {
     }
 }
 
+/// `sum_i f(i)` over `0..n` with four partial sums (so that it vectorises).
+#[inline(always)]
+fn sum4(n: usize, f: impl Fn(usize) -> f64) -> f64 {
+    let mut acc = [0.0; 4];
+    let whole = n - n % 4;
+    for j in (0..whole).step_by(4) {
+        for (i, a) in acc.iter_mut().enumerate() {
+            *a += f(j + i);
+        }
+    }
+    let tail: f64 = (whole..n).map(&f).sum();
+    (acc[0] + acc[2]) + (acc[1] + acc[3]) + tail
+}
+
 /// `sum a_i b_i` over the shorter slice.
 fn dot(a: &[f64], b: &[f64]) -> f64 {
     let n = a.len().min(b.len());
     let (a, b) = (&a[..n], &b[..n]);
-    sum4(n, |i| [a[i] * b[i]])[0]
+    sum4(n, |i| a[i] * b[i])
 }
 
 /// A prepared modal model of one impact.
@@ -370,7 +383,7 @@ impl ModalModel {
         }
         // kinetic plus potential
         let lam = &self.lam[..n];
-        let [e] = sum4(n, |j| [v[j] * v[j] + lam[j] * q[j] * q[j]]);
+        let e = sum4(n, |j| v[j] * v[j] + lam[j] * q[j] * q[j]);
         0.5 * e
     }
 

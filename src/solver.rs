@@ -26,7 +26,6 @@ use crate::error::{Error, Result};
 use crate::model::beam::{Beam, LoadPoint};
 use crate::model::contact::{Contact, ContactState, Phase};
 use crate::model::free::FreeVibration;
-use crate::model::sum4;
 use crate::params::{Grip, Params, Racket, StringLaw, Variants};
 
 /// Fraction of the stability limit used by the default time step.
@@ -165,14 +164,49 @@ pub struct Model {
 pub struct Basis {
     /// The discrete beam.
     pub beam: Beam,
-    /// `1 / m_i`, 1/kg.
-    pub inv_mass: Vec<f64>,
+    /// The explicit solver's node arrays, padded with zeros to whole chunks of four nodes.
+    pub pad: Padded,
     /// Flexible modes, ascending: `omega^2`, rad^2/s^2.
     pub lam: Vec<f64>,
     /// `omega`, rad/s.
     pub omega: Vec<f64>,
     /// Shapes normalised to unit modal mass (`phi^T M phi = 1`), one per flexible mode.
     pub shapes: Vec<Vec<f64>>,
+}
+
+/// The explicit solver's node arrays padded with zeros: `lanes` (a multiple of four, at least the
+/// node count) entries of mass and inverse mass, `lanes + 2` of `kappa` (the state `y`, `v`, `a`
+/// has as many). The padding nodes have no mass, inverse mass or stiffness, so they never move
+/// and carry no moment, and the loops over them run in whole chunks of four without a remainder.
+#[derive(Debug)]
+pub struct Padded {
+    /// A multiple of four, at least the node count.
+    pub lanes: usize,
+    /// `m_i`, kg.
+    pub mass: Vec<f64>,
+    /// `1 / m_i`, 1/kg.
+    pub inv_mass: Vec<f64>,
+    /// `kappa_i`, N/m.
+    pub kappa: Vec<f64>,
+}
+
+impl Padded {
+    fn new(beam: &Beam) -> Self {
+        let n = beam.nodes();
+        let lanes = n.div_ceil(4) * 4;
+        let padded = |x: &[f64], len: usize| {
+            let mut v = x.to_vec();
+            v.resize(len, 0.0);
+            v
+        };
+        let inv_mass: Vec<f64> = beam.mass.iter().map(|m| 1.0 / m).collect();
+        Padded {
+            lanes,
+            mass: padded(&beam.mass, lanes),
+            inv_mass: padded(&inv_mass, lanes),
+            kappa: padded(&beam.kappa, lanes + 2),
+        }
+    }
 }
 
 /// Cached bases, keyed by the beam-defining numbers of the racket and the segment count, with
@@ -206,8 +240,8 @@ impl Basis {
         let beam = Beam::new(racket, segments);
         let (lam, shapes) = beam.modes_mass_normalised();
         let omega = lam.iter().map(|l| l.max(0.0).sqrt()).collect();
-        let inv_mass = beam.mass.iter().map(|m| 1.0 / m).collect();
-        let basis = Arc::new(Basis { beam, inv_mass, lam, omega, shapes });
+        let pad = Padded::new(&beam);
+        let basis = Arc::new(Basis { beam, pad, lam, omega, shapes });
         let bytes = 8 * (basis.shapes.len() + 6) * basis.beam.nodes();
         let mut guard = cache.lock().unwrap_or_else(|e| e.into_inner());
         let (map, held) = &mut *guard;
@@ -329,7 +363,6 @@ impl Model {
         let p = &self.params;
         let (mb, v1, r, ix) = (p.ball.mass, p.impact.v1, p.impact.r, p.racket.ix);
         let beam = self.beam();
-        let n = beam.nodes();
         let dt = self.dt;
         let [j0, j1] = self.load.nodes;
         let [w0, w1] = self.load.weights;
@@ -337,7 +370,7 @@ impl Model {
         let p0 = mb * v1;
         let t_limit = self.time_limit_s;
 
-        let mut st = Stepper::new(n, v1);
+        let mut st = Stepper::new(self.basis.pad.lanes, v1);
         let mut phase = Phase::Compression;
         let mut cs = ContactState::ZERO;
         let mut t = 0.0;
@@ -379,7 +412,7 @@ impl Model {
                 return Err(Error::ImpactDidNotEnd { limit_s: t_limit });
             }
             let (th_prev, om_prev) = (st.th, st.om);
-            let pe = st.drift(dt, &beam.kappa);
+            let pe = st.drift(dt, &self.basis.pad.kappa);
             let yt = st.yb - (w0 * st.y[j0] + w1 * st.y[j1] + r * st.th);
             cs = self.contact.state(yt, phase, cs.guess())?;
             let (mut ke, mut mom) = st.kick(dt, cs.force, self);
@@ -435,7 +468,7 @@ impl Model {
             let (mut peak, mut meets) = (beam.bending_energy(&s2.y), false);
             let mut t2 = t;
             while t2 < t_post {
-                let pe = s2.drift(dt, &beam.kappa);
+                let pe = s2.drift(dt, &self.basis.pad.kappa);
                 s2.kick(dt, 0.0, self);
                 t2 += dt;
                 if t2 <= t_window {
@@ -474,7 +507,7 @@ impl Model {
         // not depend on it).
         if rows.is_some() {
             while t < t_post {
-                let pe = st.drift(dt, &beam.kappa);
+                let pe = st.drift(dt, &self.basis.pad.kappa);
                 let (ke, _) = st.kick(dt, 0.0, self);
                 t += dt;
                 step += 1;
@@ -576,6 +609,8 @@ struct Stepper {
     al: f64,
     /// `moment[i + 1] = kappa_i c_i` for node i; zero padding at both ends.
     moment: Vec<f64>,
+    /// The contact force on each node, N: zero but at the load nodes during a kick.
+    load: Vec<f64>,
     /// Energy dissipated by the hand's dampers so far, J.
     hand_loss: f64,
     /// Momentum given to the hand so far, kg m/s.
@@ -583,8 +618,9 @@ struct Stepper {
 }
 
 impl Stepper {
-    fn new(nodes: usize, v1: f64) -> Self {
-        let zeros = vec![0.0; nodes];
+    /// At rest with the ball at `v1` (m/s), for a beam padded to `lanes` nodes ([`Padded`]).
+    fn new(lanes: usize, v1: f64) -> Self {
+        let zeros = vec![0.0; lanes + 2];
         Stepper {
             yb: 0.0,
             vb: v1,
@@ -595,7 +631,8 @@ impl Stepper {
             th: 0.0,
             om: 0.0,
             al: 0.0,
-            moment: vec![0.0; nodes + 2],
+            moment: vec![0.0; lanes + 4],
+            load: vec![0.0; lanes],
             hand_loss: 0.0,
             hand_impulse: 0.0,
         }
@@ -626,9 +663,8 @@ impl Stepper {
         let [j0, j1] = model.load.nodes;
         let [w0, w1] = model.load.weights;
         let (mut twice_ke, mut mom) = (0.0, 0.0);
-        for i in 0..self.y.len() {
-            let (k, c) = model.hand[i];
-            let im = basis.inv_mass[i];
+        for (i, &(k, c)) in model.hand.iter().enumerate() {
+            let im = basis.pad.inv_mass[i];
             let mut force = Beam::elastic_force(&self.moment[i..i + 3]) - k * self.y[i];
             if i == j0 {
                 force += w0 * f;
@@ -669,21 +705,13 @@ impl Stepper {
         }
         let half = 0.5 * dt;
         self.kick_ball_and_twist(half, f, model);
-        let basis = &model.basis;
-        kick_nodes(&mut self.v, &mut self.a, &self.moment, &basis.inv_mass, half);
-        let n = self.v.len();
         let [j0, j1] = model.load.nodes;
         let [w0, w1] = model.load.weights;
-        for (j, w) in [(j0, w0), (j1, w1)] {
-            let da = w * f * basis.inv_mass[j];
-            self.a[j] += da;
-            self.v[j] += da * half;
-        }
-        let (mass, v) = (&basis.beam.mass[..n], &self.v[..n]);
-        let [twice_ke, mom] = sum4(n, |i| {
-            let p = mass[i] * v[i];
-            [p * v[i], p]
-        });
+        self.load[j0] += w0 * f;
+        self.load[j1] += w1 * f;
+        let [twice_ke, mom] = kick_nodes(&mut self.v, &mut self.a, &self.moment, &self.load, &model.basis.pad, half);
+        self.load[j0] = 0.0;
+        self.load[j1] = 0.0;
         (0.5 * twice_ke, mom)
     }
 
@@ -699,7 +727,7 @@ impl Stepper {
         let [j0, j1] = model.load.nodes;
         let [w0, w1] = model.load.weights;
         for (j, w) in [(j0, w0), (j1, w1)] {
-            let im = model.basis.inv_mass[j];
+            let im = model.basis.pad.inv_mass[j];
             // a hand's damper at the node takes part implicitly, as in the kick
             let c = model.hand.get(j).map_or(0.0, |h| h.1);
             let dv = w * df * im * half / (1.0 + c * im * half);
@@ -721,20 +749,34 @@ fn drift_nodes(y: &mut [f64], v: &[f64], a: &[f64], dt: f64, h: f64) {
     }
 }
 
-/// The nodes' elastic accelerations from the bending moments (`moment[i..i + 3]` around node
-/// i) and the half-kicks `v += (a_old + a_new) dt / 2` (`half = dt / 2`); as [`drift_nodes`], a
-/// function of its own so that the loop vectorises.
+/// The nodes' accelerations from the bending moments (`moment[i..i + 3]` around node i) and the
+/// contact force `load`, the half-kicks `v += (a_old + a_new) dt / 2` (`half = dt / 2`), and the
+/// sums `[sum m v^2, sum m v]` of the new velocities (four partial sums each, over the chunks of
+/// four nodes of [`Padded`]); as [`drift_nodes`], a function of its own so that the loops
+/// vectorise.
 #[inline]
-fn kick_nodes(v: &mut [f64], a: &mut [f64], moment: &[f64], inv_mass: &[f64], half: f64) {
-    let n = v.len();
+fn kick_nodes(v: &mut [f64], a: &mut [f64], moment: &[f64], load: &[f64], pad: &Padded, half: f64) -> [f64; 2] {
+    let lanes = pad.lanes;
+    let (v, a) = (&mut v[..lanes], &mut a[..lanes]);
     // the three moments around node i as three shifted slices
-    let (left, centre, right) = (&moment[..n], &moment[1..n + 1], &moment[2..n + 2]);
+    let (left, centre, right) = (&moment[..lanes], &moment[1..lanes + 1], &moment[2..lanes + 2]);
     let moments = left.iter().zip(centre).zip(right);
-    for (((v, a), im), ((l, c), r)) in v.iter_mut().zip(a.iter_mut()).zip(inv_mass).zip(moments) {
-        let an = Beam::elastic_force(&[*l, *c, *r]) * im;
+    let nodes = load.iter().zip(&pad.inv_mass);
+    for (((v, a), ((l, c), r)), (f, im)) in v.iter_mut().zip(a.iter_mut()).zip(moments).zip(nodes) {
+        let an = (Beam::elastic_force(&[*l, *c, *r]) + f) * im;
         *v += (*a + an) * half;
         *a = an;
     }
+    let (mut twice_ke, mut momentum) = ([0.0; 4], [0.0; 4]);
+    for (v, m) in v.chunks_exact(4).zip(pad.mass.chunks_exact(4)) {
+        for k in 0..4 {
+            let p = m[k] * v[k];
+            twice_ke[k] += p * v[k];
+            momentum[k] += p;
+        }
+    }
+    let total = |x: [f64; 4]| (x[0] + x[2]) + (x[1] + x[3]);
+    [total(twice_ke), total(momentum)]
 }
 
 /// The damping ratio the hand gives flexible mode `k` (1 = fundamental) of the racket, from

@@ -102,22 +102,33 @@ impl Beam {
     }
 
     /// The bending moments `kappa_j (y_{j-1} - 2 y_j + y_{j+1})` of the interior nodes into
-    /// `moment[j + 1]` (`moment` has N+3 entries: the end nodes' moments and a pad on each side
-    /// stay zero); returns the bending energy `y^T K y / 2`, J. The explicit solver's stencil.
+    /// `moment[j + 1]`; returns the bending energy `y^T K y / 2`, J. The explicit solver's
+    /// stencil. `kappa` is as long as `y` and `moment` two longer: the end nodes' moments and a
+    /// pad on each side stay zero (the solver passes arrays padded with zero-stiffness nodes, see
+    /// `solver::Padded`).
     pub fn bending_moments(kappa: &[f64], y: &[f64], moment: &mut [f64]) -> f64 {
-        // kappa is zero at the two end nodes, so their moments stay zero; the interior nodes'
-        // neighbours as shifted slices make loops the compiler vectorises
+        // kappa is zero at the two end nodes (and at any padding), so their moments stay zero;
+        // the interior nodes' neighbours as shifted slices, in chunks of four and a remainder
         let n = y.len() - 2;
+        let whole = n - n % 4;
         let (left, centre, right) = (&y[..n], &y[1..n + 1], &y[2..n + 2]);
-        let curvature = |i: usize| left[i] - 2.0 * centre[i] + right[i];
-        let inner = &mut moment[2..n + 2];
-        for (m, (k, ((l, c), r))) in
-            inner.iter_mut().zip(kappa[1..n + 1].iter().zip(left.iter().zip(centre).zip(right)))
-        {
-            *m = k * (l - 2.0 * c + r);
+        let (kappa, inner) = (&kappa[1..n + 1], &mut moment[2..n + 2]);
+        let mut twice_pe = [0.0; 4];
+        let neighbours = left.chunks_exact(4).zip(centre.chunks_exact(4)).zip(right.chunks_exact(4));
+        for ((m, k), ((l, c), r)) in inner.chunks_exact_mut(4).zip(kappa.chunks_exact(4)).zip(neighbours) {
+            for j in 0..4 {
+                let curvature = l[j] - 2.0 * c[j] + r[j];
+                m[j] = k[j] * curvature;
+                twice_pe[j] += m[j] * curvature;
+            }
         }
-        let [twice_pe] = super::sum4(n, |i| [inner[i] * curvature(i)]);
-        0.5 * twice_pe
+        let mut tail = 0.0;
+        for j in whole..n {
+            let curvature = left[j] - 2.0 * centre[j] + right[j];
+            inner[j] = kappa[j] * curvature;
+            tail += inner[j] * curvature;
+        }
+        0.5 * ((twice_pe[0] + twice_pe[2]) + (twice_pe[1] + twice_pe[3]) + tail)
     }
 
     /// The elastic force on a node, `(-K y)_i = 2 M_i - M_{i-1} - M_{i+1}`, N, from the three
@@ -294,19 +305,33 @@ mod tests {
 
     #[test]
     fn stencil_equals_dense_stiffness() {
-        let beam = Beam::new(&Racket::default(), 12);
-        let y: Vec<f64> = (0..13).map(|i| ((i * i) as f64 * 0.37).sin() * 1e-3).collect();
-        let k = beam.stiffness_matrix();
-        let dense = &k * nalgebra::DVector::from_vec(y.clone());
-        let mut moment = vec![0.0; 15];
-        let pe = Beam::bending_moments(&beam.kappa, &y, &mut moment);
-        let f: Vec<f64> = moment.windows(3).map(Beam::elastic_force).collect();
-        assert_relative_eq!(pe, beam.bending_energy(&y), max_relative = 1e-12);
-        for i in 0..13 {
-            assert_relative_eq!(-f[i], dense[i], max_relative = 1e-12, epsilon = 1e-9);
+        // every remainder of the stencil's chunks of four, unpadded and padded as the solver runs it
+        for segments in 12..=16 {
+            let n = segments + 1;
+            let beam = Beam::new(&Racket::default(), segments);
+            let y: Vec<f64> = (0..n).map(|i| ((i * i) as f64 * 0.37).sin() * 1e-3).collect();
+            let k = beam.stiffness_matrix();
+            let dense = &k * nalgebra::DVector::from_vec(y.clone());
+            let mut moment = vec![0.0; n + 2];
+            let pe = Beam::bending_moments(&beam.kappa, &y, &mut moment);
+            let f: Vec<f64> = moment.windows(3).map(Beam::elastic_force).collect();
+            assert_relative_eq!(pe, beam.bending_energy(&y), max_relative = 1e-12);
+            for i in 0..n {
+                assert_relative_eq!(-f[i], dense[i], max_relative = 1e-12, epsilon = 1e-9);
+            }
+            let e_dense = 0.5 * nalgebra::DVector::from_vec(y.clone()).dot(&dense);
+            assert_relative_eq!(beam.bending_energy(&y), e_dense, max_relative = 1e-12);
+            // zero-stiffness padding nodes change no moment and add no energy
+            let lanes = n.div_ceil(4) * 4;
+            let (mut y_pad, mut kappa_pad) = (y.clone(), beam.kappa.clone());
+            y_pad.resize(lanes + 2, 0.0);
+            kappa_pad.resize(lanes + 2, 0.0);
+            let mut moment_pad = vec![0.0; lanes + 4];
+            let pe_pad = Beam::bending_moments(&kappa_pad, &y_pad, &mut moment_pad);
+            assert_relative_eq!(pe_pad, pe, max_relative = 1e-14);
+            assert_eq!(&moment_pad[..n + 2], &moment[..]);
+            assert!(moment_pad[n + 2..].iter().all(|&m| m == 0.0));
         }
-        let e_dense = 0.5 * nalgebra::DVector::from_vec(y.clone()).dot(&dense);
-        assert_relative_eq!(beam.bending_energy(&y), e_dense, max_relative = 1e-12);
     }
 
     #[test]
