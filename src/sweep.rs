@@ -147,8 +147,11 @@ pub const RESULT_COLUMNS: [&str; 14] = [
     "solver",
 ];
 
+/// The result columns of one impact. Numbers are written in their shortest form that reads back
+/// as the same `f64` (`ryu`): exact, and without the noise digits of a fixed 17.
 fn result_fields(r: &ImpactResult, p: &Params) -> [String; 14] {
-    let f = |v: f64| crate::table::fmt_sig(v, 17);
+    let mut buffer = ryu::Buffer::new();
+    let mut f = |v: f64| buffer.format(v).to_string();
     [
         f(r.e_a),
         f(r.tau_s),
