@@ -35,6 +35,12 @@ struct Phasors {
 }
 
 impl Phasors {
+    /// Take the values of `other` (as long), keeping this one's storage.
+    fn copy_from(&mut self, other: &Phasors) {
+        self.q.copy_from_slice(&other.q);
+        self.p.copy_from_slice(&other.p);
+    }
+
     /// Advance by the rotations `(sin, cos)(w_k dt)`.
     fn rotate(&mut self, rot: &[(f64, f64)]) {
         for ((q, p), &(s, c)) in self.q.iter_mut().zip(self.p.iter_mut()).zip(rot) {
@@ -216,18 +222,17 @@ impl FreeVibration {
         let j_lo = ((w_d * t0 - phi) / std::f64::consts::PI).floor() as i64;
         let j_hi = ((w_d * t1 - phi) / std::f64::consts::PI).ceil() as i64;
         let peaks: Vec<f64> = (j_lo..=j_hi).map(|j| (phi + j as f64 * std::f64::consts::PI) / w_d).collect();
+        // (the phasors at the j-th maximum are those at the first rotated j times: once here and
+        // again, the same way, window by window below)
         let turn = self.rotation(k, half_period);
-        let mut at_peaks: Vec<Phasors> = Vec::with_capacity(peaks.len());
-        let mut ph = self.phasors(k, peaks[0]);
-        for _ in &peaks {
-            at_peaks.push(ph.clone());
-            ph.rotate(&turn);
-        }
+        let first = self.phasors(k, peaks[0]);
+        let mut at = first.clone();
         let mut best = self.pe_first(k, t0).max(self.pe_first(k, t1));
-        for (t, ph) in peaks.iter().zip(&at_peaks) {
+        for t in &peaks {
             if (t0..=t1).contains(t) {
-                best = best.max(self.pe_of(ph));
+                best = best.max(self.pe_of(&at));
             }
+            at.rotate(&turn);
         }
         // where the peak can be: windows of half-width `half` around the dominant maxima
         let floor = (best - rest) / e_d;
@@ -239,30 +244,35 @@ impl FreeVibration {
         let (mut back, mut whole_step) = (None, None);
         // (time, value, sample spacing, phasors) of each sampled peak after the parabola step
         let mut candidates: Vec<(f64, f64, f64, Phasors)> = Vec::new();
-        let windows: Vec<(f64, f64, Option<&Phasors>)> = if half.is_infinite() {
-            vec![(t0, t1, None)]
-        } else {
-            peaks.iter().zip(&at_peaks).map(|(t, ph)| (t - half, t + half, Some(ph))).collect()
-        };
-        for (lo, hi, at_peak) in windows {
-            let (lo, hi, whole) = (lo.max(t0), hi.min(t1), lo >= t0 && hi <= t1 && at_peak.is_some());
+        // one window over [t0, t1] when the dominant mode does not bound the peak, else one
+        // around each maximum; the buffers are reused from window to window
+        let windows = if half.is_infinite() { 1 } else { peaks.len() };
+        at.copy_from(&first);
+        let (mut ph, mut start, mut v) = (first.clone(), first, Vec::new());
+        for (j, &peak) in peaks.iter().enumerate().take(windows) {
+            if j > 0 {
+                at.rotate(&turn);
+            }
+            let (lo, hi, around) = if half.is_infinite() { (t0, t1, false) } else { (peak - half, peak + half, true) };
+            let (lo, hi, whole) = (lo.max(t0), hi.min(t1), lo >= t0 && hi <= t1 && around);
             if hi <= lo {
                 continue;
             }
-            let (m, dt, mut ph, step) = if let (true, Some(at)) = (whole, at_peak) {
+            let (m, dt, step) = if whole {
                 let back = back.get_or_insert_with(|| self.rotation(k, -half));
                 let step = whole_step.get_or_insert_with(|| self.rotation(k, whole_dt));
-                let mut ph = at.clone();
+                ph.copy_from(&at);
                 ph.rotate(back);
-                (whole_m, whole_dt, ph, std::borrow::Cow::Borrowed(&*step))
+                (whole_m, whole_dt, std::borrow::Cow::Borrowed(&*step))
             } else {
                 let m = (((hi - lo) / spacing).ceil() as usize).max(2);
                 let dt = (hi - lo) / m as f64;
-                (m, dt, self.phasors(k, lo), std::borrow::Cow::Owned(self.rotation(k, dt)))
+                ph = self.phasors(k, lo);
+                (m, dt, std::borrow::Cow::Owned(self.rotation(k, dt)))
             };
             // the samples (`ph` is left at the window's start)
-            let start = ph.clone();
-            let mut v = Vec::with_capacity(m + 1);
+            start.copy_from(&ph);
+            v.clear();
             for i in 0..=m {
                 if i > 0 {
                     ph.rotate(&step);
@@ -340,7 +350,8 @@ impl FreeVibration {
     /// position minus the rigid-body motion of the load point, m and m/s).
     pub fn meets_ball(&self, gap0: f64, rate: f64, t1: f64) -> bool {
         let n = self.omega.len();
-        let amp = |i: usize| self.g[i].abs() * self.a[i].hypot(self.b[i]);
+        // (a and b are modal amplitudes, far from overflow: no need for hypot's care)
+        let amp = |i: usize| self.g[i].abs() * (self.a[i] * self.a[i] + self.b[i] * self.b[i]).sqrt();
         if n == 0 {
             return gap0 + rate * t1.max(0.0) > 0.0 || gap0 > 0.0;
         }
