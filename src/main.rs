@@ -72,7 +72,7 @@ enum Command {
     /// list (2e4,4e4 or node,hat), a range start:stop:count or a log range start:stop:count:log.
     /// Keys: x r ks ei mass length ix half-width mb k1 p v1 segments load dt solver frame grip strings
     /// string-stiffening stiffening-deflection hand-stiffness hand-damping grip-length. Options
-    /// (--out, --config, --racket) go before the pairs. Sweeps use the modal solver (~40x faster,
+    /// (--out, --config, --racket) go before the pairs. Sweeps use the modal solver (~30x faster,
     /// within 2e-5 of fd) unless --solver is given or a hand grip or stiffening strings need fd;
     /// the last CSV column names the solver.
     /// Example: racket-impact sweep --out s.csv --x 0.02:0.60:50 --ks 2e4,4e4 --load node

@@ -70,7 +70,7 @@ pub fn parse_spec(key: &str, spec: &str) -> Result<Axis> {
 }
 
 /// The solver a sweep uses unless told: the modal one (it agrees with the explicit reference to
-/// 2e-5 over the randomized and grid test sets and is about 40 times faster), or the explicit one when a
+/// 2e-5 over the randomized and grid test sets and is about 30 times faster), or the explicit one when a
 /// fixed or swept value needs it (a hand grip or stiffening strings), or `solver` is given.
 pub fn default_solver(base: &Overrides, axes: &[Axis]) -> Option<crate::params::SolverKind> {
     use crate::params::{Grip, SolverKind, StringLaw};
