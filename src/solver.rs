@@ -191,7 +191,8 @@ pub struct Padded {
 }
 
 impl Padded {
-    fn new(beam: &Beam) -> Self {
+    /// The padded arrays of a beam.
+    pub(crate) fn new(beam: &Beam) -> Self {
         let n = beam.nodes();
         let lanes = n.div_ceil(4) * 4;
         let padded = |x: &[f64], len: usize| {
@@ -242,7 +243,9 @@ impl Basis {
         let omega = lam.iter().map(|l| l.max(0.0).sqrt()).collect();
         let pad = Padded::new(&beam);
         let basis = Arc::new(Basis { beam, pad, lam, omega, shapes });
-        let bytes = 8 * (basis.shapes.len() + 6) * basis.beam.nodes();
+        // the shapes, and eight arrays of about one number per node (the beam's x, mass and
+        // kappa, the padded mass, inverse mass and kappa, the eigenvalues and frequencies)
+        let bytes = 8 * (basis.shapes.len() + 8) * basis.beam.nodes();
         let mut guard = cache.lock().unwrap_or_else(|e| e.into_inner());
         let (map, held) = &mut *guard;
         if *held + bytes > BASIS_CACHE_BYTES {
@@ -718,10 +721,10 @@ impl Stepper {
     /// Replace the contact force of the last kick by one `df` larger (used at the phase switch).
     fn correct_force(&mut self, dt: f64, df: f64, model: &Model) {
         let half = 0.5 * dt;
-        let dab = -df / model.params.ball.mass;
+        let dab = -df * model.inv_ball_mass;
         self.ab += dab;
         self.vb += dab * half;
-        let dal = df * model.params.impact.r / model.params.racket.ix;
+        let dal = df * model.twist_per_force;
         self.al += dal;
         self.om += dal * half;
         let [j0, j1] = model.load.nodes;

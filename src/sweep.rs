@@ -148,10 +148,12 @@ pub const RESULT_COLUMNS: [&str; 14] = [
 ];
 
 /// The result columns of one impact. Numbers are written in their shortest form that reads back
-/// as the same `f64` (`ryu`): exact, and without the noise digits of a fixed 17.
+/// as the same `f64` (`ryu`: `0.25`, `1.5e-7`, `3.0`): exact, and without the noise digits of a
+/// fixed 17.
 fn result_fields(r: &ImpactResult, p: &Params) -> [String; 14] {
     let mut buffer = ryu::Buffer::new();
-    let mut f = |v: f64| buffer.format(v).to_string();
+    // (zero of either sign as "0", as in the other tables)
+    let mut f = |v: f64| if v == 0.0 { "0".to_string() } else { buffer.format(v).to_string() };
     [
         f(r.e_a),
         f(r.tau_s),

@@ -11,7 +11,9 @@
 //! In the expansion phase the law is written in the scale-free variable `u = Y_b / Y0`:
 //! `F = k1 Y0 u^p` and Eq 10 becomes `u + (k1/k_s) u^p = Y_T / Y0`. The left side is increasing
 //! and convex in `u`, so Newton's method started at or right of the root converges
-//! monotonically and never leaves `[0, hi]`: the safeguarded solve cannot fail or go negative.
+//! monotonically and never leaves `[0, hi]`; the solve starts there (a warm start left of the
+//! root is first stepped across it, or replaced by an upper bound), so it cannot go negative,
+//! and it converges from every start.
 
 use crate::error::{Error, Result};
 use crate::params::{Ball, Strings};
@@ -225,8 +227,9 @@ impl Contact {
     }
 
     /// Force and compressions at total compression `yt` in the given phase. `guess` is a warm
-    /// start `(u, u^p)`, as [`ContactState::guess`] returns it: any `u` is safe (it is only used
-    /// when it lies right of the root), but `u^p` must be `u`'s power (checked in debug builds).
+    /// start `(u, u^p)`, as [`ContactState::guess`] returns it: any `u` is safe (one left of the
+    /// root is used only when a short Newton step takes it right of the root, one far above it
+    /// not at all), but `u^p` must be `u`'s power (checked in debug builds).
     pub fn state(&self, yt: f64, phase: Phase, guess: (f64, f64)) -> Result<ContactState> {
         if yt <= 0.0 {
             return Ok(ContactState::ZERO);
@@ -311,22 +314,15 @@ impl Contact {
 /// (`a = k1/k_s`), for the explicit solver. (The modal solver's implicit step solves the same law
 /// with its rate coupled in: `modal::ModalModel::expansion_end`.) Newton from an upper bound of
 /// the root converges monotonically (the left side is increasing and convex), so the result is
-/// never negative and the loop always ends. Returns `(u, u^p)`. `guess` is `(u, u^p)` of the
+/// never negative and the loop always ends; a start left of the root is first moved right of it
+/// by one Newton step when that step is short, and replaced by the smallest cheap upper bound
+/// otherwise. Returns `(u, u^p)`. `guess` is `(u, u^p)` of the
 /// previous solve (any `u`; `u^p` must be its power: checked in debug builds); `u^p` of each
 /// iterate is carried from the previous one by the binomial series ([`PowSeries::step`]), so a
 /// warm-started solve needs no power function.
 fn solve_u(a: f64, pow: &PowSeries, z: f64, guess: (f64, f64)) -> Result<(f64, f64)> {
     let p = pow.p;
     let powf = |u: f64| if u > 0.0 { u.powf(p) } else { 0.0 };
-    // the power of `next = u (1 + delta)`: by the series from `up = u^p` when the move is short,
-    // else of `next` itself (a long move's `1 + delta` has lost digits to cancellation)
-    let carry = |u: f64, up: f64, next: f64, delta: f64| {
-        if next > 0.0 && delta.abs() <= 0.1 {
-            pow.step(u, up, delta)
-        } else {
-            powf(next)
-        }
-    };
     let (mut u, mut up) = guess;
     debug_assert!(
         !(u > 0.0 && up > 0.0) || (up / u.powf(p) - 1.0).abs() < 1e-9,
@@ -337,15 +333,22 @@ fn solve_u(a: f64, pow: &PowSeries, z: f64, guess: (f64, f64)) -> Result<(f64, f
     // reloads the ball on its expansion curve). A start far above the root would lose digits to
     // cancellation in `u - step`, so a start must also lie below the cheap ones.
     let cheap = if z <= 1.0 + a { z.min(1.0) } else { z };
-    let warm = u > 0.0 && up > 0.0 && up.is_finite() && u <= cheap;
+    let mut warm = u > 0.0 && up > 0.0 && up.is_finite() && u <= cheap;
     if warm && u + a * up - z < 0.0 {
         // The previous root lies left of this one (z has grown): one Newton step from the left
-        // lands right of the root (convexity), a short way off, and the iteration below goes on
-        // from there.
+        // lands right of the root (convexity). A short step (the usual time step) starts the
+        // iteration below a short way off; a long one could land far above the root, where
+        // Newton on a steep power law crawls back, so that start is cold instead.
         let next = (u - (u + a * up - z) / (1.0 + a * p * up / u)).min(cheap);
-        up = carry(u, up, next, next / u - 1.0);
-        u = next;
-    } else if !warm {
+        let delta = next / u - 1.0;
+        if delta <= 0.1 {
+            up = pow.step(u, up, delta);
+            u = next;
+        } else {
+            warm = false;
+        }
+    }
+    if !warm {
         // no usable start: the smallest of the upper bounds keeps Newton short
         u = z.min((z / a).powf(1.0 / p));
         if z <= 1.0 + a {
@@ -370,7 +373,10 @@ fn solve_u(a: f64, pow: &PowSeries, z: f64, guess: (f64, f64)) -> Result<(f64, f
             step = hu * d1 / (d1 * d1 - 0.5 * hu * d2);
         }
         let next = (u - step).max(0.0);
-        let next_pow = carry(u, up, next, -step * inv_u);
+        // the power of `next = u (1 + delta)`: by the series from `up = u^p` when the move is
+        // short, else of `next` itself (a long move's `1 + delta` has lost digits to cancellation)
+        let delta = -step * inv_u;
+        let next_pow = if next > 0.0 && delta.abs() <= 0.1 { pow.step(u, up, delta) } else { powf(next) };
         // after a Halley step of 1e-6 the error is of order 1e-18: done
         if (halley && step <= 1e-6 * u) || step <= 4.0 * f64::EPSILON * u || next == u {
             return Ok((next, next_pow));
@@ -437,6 +443,21 @@ mod tests {
                     assert!((lhs - z).abs() <= 1e-12 * z.max(1e-300) + 1e-300, "p {p} ks {ks} z {z}: {lhs}");
                 }
             }
+        }
+    }
+
+    #[test]
+    fn a_warm_start_far_left_of_the_root_starts_cold_instead() {
+        // a steep law (p 10, k1/ks 1e9) with z above 1 + a and the guess far below the root: one
+        // Newton step from the guess lands near z, about 1e9 times the root, from where Newton
+        // would need hundreds of steps; the solve must start from an upper bound instead
+        let c = Contact::new(&Ball { mass: 0.057, k1: 1e9, p: 10.0 }, &Strings { ks: 1.0 });
+        let y0 = 1e-3;
+        let z = 1e9 + 2.0;
+        for guess in [1e-3, 0.5, 0.999] {
+            let st = c.state(z * y0, Phase::Expansion { y0 }, (guess, f64::powf(guess, 10.0))).unwrap();
+            assert_relative_eq!(st.u + c.alpha * st.u.powf(10.0), z, max_relative = 1e-12);
+            assert_relative_eq!(st.u_pow, st.u.powf(10.0), max_relative = 1e-14);
         }
     }
 
