@@ -70,8 +70,9 @@ pub fn parse_spec(key: &str, spec: &str) -> Result<Axis> {
 }
 
 /// The solver a sweep uses unless told: the modal one (it agrees with the explicit reference to
-/// 2e-5 over the randomized and grid test sets and is about 30 times faster), or the explicit one when a
-/// fixed or swept value needs it (a hand grip or stiffening strings), or `solver` is given.
+/// 2e-5 over the randomized and grid test sets and is about 30 times faster), or the explicit
+/// one when a fixed or swept value needs it (a hand grip or stiffening strings), or `solver` is
+/// given.
 pub fn default_solver(base: &Overrides, axes: &[Axis]) -> Option<crate::params::SolverKind> {
     use crate::params::{Grip, SolverKind, StringLaw};
     if base.solver.is_some() || axes.iter().any(|a| a.key == "solver") {

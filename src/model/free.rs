@@ -147,11 +147,16 @@ impl FreeVibration {
     fn pe_first(&self, k: usize, t: f64) -> f64 {
         (0..k)
             .map(|i| {
-                let (s, c) = (self.omega[i] * t).sin_cos();
-                let q = self.a[i] * c + self.b[i] * s;
+                let q = self.phasor(i, t).0;
                 0.5 * self.omega[i] * self.omega[i] * q * q
             })
             .sum()
+    }
+
+    /// Mode `i`'s phasor `(q_i, q_i'/w_i)` at time `t`.
+    fn phasor(&self, i: usize, t: f64) -> (f64, f64) {
+        let (s, c) = (self.omega[i] * t).sin_cos();
+        (self.a[i] * c + self.b[i] * s, self.b[i] * c - self.a[i] * s)
     }
 
     /// Bending energy at time `t`, J.
@@ -161,12 +166,7 @@ impl FreeVibration {
 
     /// Displacement of the load point due to the vibration at time `t`, m.
     pub fn load_displacement(&self, t: f64) -> f64 {
-        (0..self.omega.len())
-            .map(|i| {
-                let (s, c) = (self.omega[i] * t).sin_cos();
-                self.g[i] * (self.a[i] * c + self.b[i] * s)
-            })
-            .sum()
+        (0..self.omega.len()).map(|i| self.g[i] * self.phasor(i, t).0).sum()
     }
 
     /// Samples of `sum_k weight_k(q_k)` over the first `k` modes at `m + 1` equally spaced times
@@ -185,13 +185,8 @@ impl FreeVibration {
 
     /// Phasors `(q_k, q_k'/w_k)` of the first `k` modes at time `t`.
     fn phasors(&self, k: usize, t: f64) -> Phasors {
-        let mut ph = Phasors { q: Vec::with_capacity(k), p: Vec::with_capacity(k) };
-        for i in 0..k {
-            let (s, c) = (self.omega[i] * t).sin_cos();
-            ph.q.push(self.a[i] * c + self.b[i] * s);
-            ph.p.push(self.b[i] * c - self.a[i] * s);
-        }
-        ph
+        let (q, p) = (0..k).map(|i| self.phasor(i, t)).unzip();
+        Phasors { q, p }
     }
 
     /// `(sin, cos)(w_k dt)` of the first `k` modes.
