@@ -390,9 +390,9 @@ impl ModalModel {
     /// The end force and rate of a step in expansion from the prediction `(Y_hat, Yd_hat)`:
     /// Newton on Eq 10, `u + (k1/k_s + bf k1) u^p = z` with `z = (Y_hat - bd D1) / Y0`, from
     /// `start = (u, u^p)`, with `D1 = F'(Y_T) Y_T'` updated from each iterate from its first
-    /// guess `d_guess` (its coupling `bd` is of order `h^3`). Each iterate's power comes from
-    /// the previous one by the binomial series ([`PowSeries::step`](crate::model::contact::PowSeries::step)), so a good start needs
-    /// no power function. `Ok(None)` when the ball has left.
+    /// guess `d_guess` (its coupling `bd` is of order `h^3`). Each iterate and its power come
+    /// from the previous pair by the binomial series (`PowSeries::advance`), so a good start
+    /// needs no power function. `Ok(None)` when the ball has left.
     fn expansion_end(
         &self,
         grid: &Grid,
@@ -427,8 +427,7 @@ impl ModalModel {
             let r = p * up * inv_u;
             let step = (u + beta * up - z) / (1.0 + beta * r);
             let delta = (-step * inv_u).max(-0.5);
-            up = self.base.contact.pow.step(u, up, delta);
-            u *= 1.0 + delta;
+            (u, up) = self.base.contact.pow.advance(u, up, delta);
             inv_u = 1.0 / u;
             // dF/dY_T along Eq 10 with the strings in series, and the rate from it
             let r = p * up * inv_u;
@@ -656,7 +655,7 @@ impl Run<'_> {
                 let (u0, up0) = a.u;
                 let r0 = if u0 > 0.0 { c.p * up0 / u0 } else { 0.0 };
                 let u1 = u0 + h * a.ytd / (y0 * (1.0 + r0 * c.k1 / c.ks));
-                let start = if u1 > 0.0 && u0 > 0.0 { (u1, c.pow.step(u0, up0, u1 / u0 - 1.0)) } else { (0.0, 0.0) };
+                let start = if u1 > 0.0 && u0 > 0.0 { c.pow.advance(u0, up0, u1 / u0 - 1.0) } else { (0.0, 0.0) };
                 let e = m.expansion_end(grid, y0, (yh, ydh), start, a.d)?.unwrap_or_default();
                 end.u = e.u;
                 (e.f, e.d)

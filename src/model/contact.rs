@@ -97,6 +97,13 @@ impl PowSeries {
         }
         up * s
     }
+
+    /// The point `u (1 + delta)` and its power by [`PowSeries::step`]: a pair that stays
+    /// consistent however far the move (the fallback's `powf` is of that same point).
+    #[inline]
+    pub fn advance(&self, u: f64, up: f64, delta: f64) -> (f64, f64) {
+        (u * (1.0 + delta), self.step(u, up, delta))
+    }
 }
 
 /// The force and compressions at one total compression `Y_T`.
@@ -316,10 +323,10 @@ impl Contact {
 /// the root converges monotonically (the left side is increasing and convex), so the result is
 /// never negative and the loop always ends; a start left of the root is first moved right of it
 /// by one Newton step when that step is short, and replaced by the smallest cheap upper bound
-/// otherwise. Returns `(u, u^p)`. `guess` is `(u, u^p)` of the
-/// previous solve (any `u`; `u^p` must be its power: checked in debug builds); `u^p` of each
-/// iterate is carried from the previous one by the binomial series ([`PowSeries::step`]), so a
-/// warm-started solve needs no power function.
+/// otherwise. Returns `(u, u^p)`. `guess` is `(u, u^p)` of the previous solve (any `u`; `u^p`
+/// must be its power: checked in debug builds); `u^p` of each iterate is carried from the
+/// previous one by the binomial series ([`PowSeries::step`]), so a warm-started solve needs no
+/// power function.
 fn solve_u(a: f64, pow: &PowSeries, z: f64, guess: (f64, f64)) -> Result<(f64, f64)> {
     let p = pow.p;
     let powf = |u: f64| if u > 0.0 { u.powf(p) } else { 0.0 };
