@@ -12,6 +12,8 @@ build:
 
 # Doc examples first, then the whole suite under nextest, whose summary is the last line.
 test:
+	@$(CARGO) nextest --version >/dev/null 2>&1 || { \
+		echo "make test needs cargo-nextest; install it with: cargo install cargo-nextest --locked" >&2; exit 2; }
 	$(CARGO) test --locked --doc
 	$(CARGO) nextest run --locked --no-fail-fast
 
