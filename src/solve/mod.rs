@@ -6,7 +6,7 @@
 //! - [`rigid`]: the rigid racket in closed form (`--frame rigid`).
 //!
 //! The outcome types ([`ImpactResult`], with its field table, and the time series) are in
-//! [`outcome`]; the time series is recorded by an [`observer`] the stepping loop is generic over.
+//! [`outcome`]; the time series is recorded by an observer (`observer`) the stepping loop is generic over.
 //! Everything physical (the contact law, the beam and its modes, the coupling of the contact
 //! point to the frame) comes from [`crate::model`].
 

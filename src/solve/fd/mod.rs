@@ -13,9 +13,9 @@
 //! through the bending moments `kappa_j c_j`, and the energy ledger and momentum are
 //! accumulated in the same passes. After separation the free racket is linear, so the paper's
 //! vibration measure (peak bending PE over two fundamental periods) and the re-contact check
-//! come from the closed-form modal solution of the discrete beam ([`FreeVibration`]), whose
+//! come from the closed-form modal solution of the discrete beam ([`FreeVibration`](crate::model::free::FreeVibration)), whose
 //! modes are computed once per racket and cached ([`Basis`]). A time series, when asked for, is
-//! recorded by an observer ([`crate::solve::observer`]) and extended by stepping on.
+//! recorded by an observer (`solve::observer`) and extended by stepping on.
 //!
 //! Files: this one prepares the impact (the time step, the limits); `integrate` runs it,
 //! `stepper` holds the state and the Verlet steps, `ledger` the energy ledger, `hand` the hand

@@ -35,7 +35,7 @@
 //! [`crate::solve::fd`]; after separation the free vibration is evaluated in closed form for the
 //! paper's peak bending PE and for re-contact.
 //!
-//! The contact law's end-of-step solve is the law's own ([`ImplicitLaw`]); the coordinates'
+//! The contact law's end-of-step solve is the law's own ([`ImplicitLaw`](crate::model::contact::ImplicitLaw)); the coordinates'
 //! amplitudes at the contact point come from the same coupling as the explicit solver's
 //! ([`crate::model::coupling::Coupling`]). Files: this one prepares the model and reports the
 //! result, `steps` builds the step tables, `run` takes the steps.
