@@ -5,7 +5,7 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use racket_impact::experiments;
 use racket_impact::params::{LoadRule, Params};
-use racket_impact::solver::{simulate, Model};
+use racket_impact::solve::{simulate, Model};
 
 fn paper_impact(c: &mut Criterion) {
     let p = Params::paper();
@@ -21,7 +21,7 @@ fn paper_impact(c: &mut Criterion) {
     let mut modal = p;
     modal.numerics.solver = racket_impact::params::SolverKind::Modal;
     c.bench_function("fig4_impact_n39_node_modal", |b| b.iter(|| simulate(std::hint::black_box(&modal)).unwrap()));
-    let prepared = racket_impact::modal::ModalModel::new(&modal).unwrap();
+    let prepared = racket_impact::solve::modal::ModalModel::new(&modal).unwrap();
     c.bench_function("fig4_impact_n39_node_modal_prepared", |b| b.iter(|| prepared.run().unwrap()));
     let mut fine = p;
     fine.numerics.segments = 160;

@@ -23,11 +23,14 @@
 //! - [`params`]: parameter structs (defaults = the paper), validation, `--config` overrides.
 //! - [`racket`]: a racket file or preset in spec-sheet units (mass, balance, swingweight, Hz),
 //!   fitted exactly to the discrete beam.
-//! - [`model`]: the contact law (linear or stiffening strings), the discrete beam and its modes,
-//!   closed-form drop tests and rigid racket, the closed-form free vibration after separation.
-//! - [`solver`]: one impact by velocity-Verlet time stepping, with the energy ledger (and the
-//!   hand grip variant); modes cached per racket.
-//! - [`modal`]: an independent modal-superposition solver with a contact-sized step.
+//! - [`model`]: physics only: the ball + strings contact law behind one trait (linear or
+//!   stiffening strings), the discrete beam and its modes (cached per racket), the contact
+//!   point's coupling to the frame, closed-form drop tests, the closed-form free vibration after
+//!   separation.
+//! - [`solve`]: the impact solvers behind one trait and the dispatcher [`simulate`]: velocity-Verlet
+//!   time stepping with the energy ledger (and the hand grip variant), an independent
+//!   modal-superposition solver with a contact-sized step, the closed-form rigid racket; the
+//!   result with its one field table, and the time series.
 //! - [`experiments`]: one module per result of the paper (figure -> module table there).
 //! - [`table`], [`plot`], [`io`]: result tables, the one look of every figure, atomic writes.
 //! - [`report`]: the paper's numbers beside ours.
@@ -57,17 +60,16 @@ pub mod experiments;
 pub mod heatmap;
 pub mod io;
 pub mod map;
-pub mod modal;
 pub mod model;
 pub mod output;
 pub mod params;
 pub mod plot;
 pub mod racket;
 pub mod report;
-pub mod solver;
+pub mod solve;
 pub mod sweep;
 pub mod table;
 
 pub use error::{Error, Result};
 pub use params::Params;
-pub use solver::{simulate, ImpactResult, Model};
+pub use solve::{simulate, ImpactResult, Model};

@@ -11,7 +11,7 @@ use racket_impact::map::Quantity;
 use racket_impact::model::beam::Beam;
 use racket_impact::params::{Overrides, Params};
 use racket_impact::racket::Fitted;
-use racket_impact::solver::{Model, SeriesOptions};
+use racket_impact::solve::{Model, SeriesOptions};
 use racket_impact::{Error, Result};
 
 /// `print!` for the commands: a closed pipe (`racket-impact ... | head`) ends the program quietly,
@@ -401,7 +401,7 @@ fn simulate(a: SimulateArgs) -> Result<()> {
         (racket_impact::simulate(&params)?, None)
     };
     // (from the cached modes: the modal solver runs where the explicit one would refuse)
-    let f1_hz = racket_impact::solver::Basis::of(&params.racket, params.numerics.segments).omega[0]
+    let f1_hz = racket_impact::model::basis::Basis::of(&params.racket, params.numerics.segments).omega[0]
         / (2.0 * std::f64::consts::PI);
     let text = match a.common.format {
         Format::Json => {

@@ -42,7 +42,7 @@ use crate::error::{Error, Result};
 use crate::heatmap::{ColorScale, Ellipse, HeatMap, Marker, Segment};
 use crate::model::beam::Beam;
 use crate::params::{Params, Racket};
-use crate::solver::{simulate, ImpactResult};
+use crate::solve::{simulate, ImpactResult};
 use crate::table::{Table, Value};
 
 /// Length of the default face of a racket without a head outline, m (the paper's "centre of

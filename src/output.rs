@@ -4,7 +4,7 @@ use std::path::Path;
 
 use crate::error::Result;
 use crate::params::Params;
-use crate::solver::{ImpactResult, SeriesRow};
+use crate::solve::{ImpactResult, SeriesRow};
 use crate::table::{fmt_sig, Table, Value};
 
 /// The result as `name value unit` lines, with the impact it describes on top.

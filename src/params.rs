@@ -291,7 +291,7 @@ pub enum StringLaw {
 ///
 /// The hand defaults are assumptions, not measurements: a 15 cm grip holding the racket with
 /// 5e3 N/m and 10 N s/m in all. The damping gives the 125 Hz mode of the paper's racket a
-/// damping ratio of 2.6 % ([`crate::solver::hand_damping_ratio`]; a test pins it), the order at
+/// damping ratio of 2.6 % ([`crate::solve::hand_damping_ratio`]; a test pins it), the order at
 /// which a hand-held frame's vibration dies away in a few tens of milliseconds; the stiffness makes the whole
 /// racket bounce on the hand at a few hertz, far below any frame mode. H. Hatze (Med. Sci.
 /// Sports 8, 1976) modelled the racket-hand system the same way; D. Chadefaux et al. (2017)

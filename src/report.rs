@@ -20,7 +20,7 @@ use crate::experiments::{converged, impact, paper_params, read_off_curve, CENTRE
 use crate::model::beam::Beam;
 use crate::model::reduced::{clamped_drop, concrete_drop};
 use crate::params::{drop_speed, ks_from_tension_lb, Ball, Racket, Strings, DROP_HEIGHT_100_IN};
-use crate::solver::ImpactResult;
+use crate::solve::ImpactResult;
 use crate::table::fmt_sig;
 
 /// The claims file, compiled in.

@@ -9,7 +9,7 @@ use rayon::prelude::*;
 
 use crate::error::{Error, Result};
 use crate::params::{Overrides, Params};
-use crate::solver::{simulate, ImpactResult};
+use crate::solve::{simulate, ImpactResult};
 
 /// Impacts computed per parallel chunk (bounded memory, deterministic order).
 pub const CHUNK: usize = 4096;

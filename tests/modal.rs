@@ -6,7 +6,7 @@ use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use racket_impact::params::{LoadRule, Params, Profile, SolverKind};
-use racket_impact::solver::{simulate, ImpactResult};
+use racket_impact::solve::{simulate, ImpactResult};
 
 /// Relative agreement required: half the 1e-4 the solvers are specified to, so that a regression
 /// of the size of the one pinned below (7e-5) fails here too (measured: 1.7e-5 over the random
@@ -181,7 +181,7 @@ fn the_separation_step_is_checked_beyond_its_midpoint() {
 /// (where the step refinement near separation matters most).
 #[test]
 fn modal_solver_converges_to_the_explicit_one_as_its_step_shrinks() {
-    use racket_impact::modal::{ModalModel, Resolution};
+    use racket_impact::solve::modal::{ModalModel, Resolution};
     for (x, ks) in [(0.16, 4.0e4), (0.03, 1.5e3)] {
         let mut p = Params::paper();
         p.impact.x = x;

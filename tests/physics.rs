@@ -6,7 +6,7 @@ use approx::assert_relative_eq;
 use racket_impact::model::beam::Beam;
 use racket_impact::model::reduced::{clamped_drop, concrete_drop};
 use racket_impact::params::{drop_speed, LoadRule, Params, Racket, Strings, DROP_HEIGHT_100_IN};
-use racket_impact::solver::{simulate, ImpactResult, Model};
+use racket_impact::solve::{simulate, ImpactResult, Model};
 
 /// Relative tolerances the issue sets for the paper's numbers.
 const DROP_TOL: f64 = 0.005;
@@ -257,7 +257,7 @@ fn a_recontact_is_flagged_and_refused_by_the_paper_experiments() {
 /// racket on with the explicit scheme and reading the same quantities off the time series.
 fn stepped_after_impact(p: &Params) -> (ImpactResult, f64, bool) {
     let model = Model::new(p).unwrap();
-    let opts = racket_impact::solver::SeriesOptions { sample_dt: model.dt, t_end: 0.0 };
+    let opts = racket_impact::solve::SeriesOptions { sample_dt: model.dt, t_end: 0.0 };
     let (r, rows) = model.run_with_series(opts).unwrap();
     assert_eq!(r, model.run().unwrap(), "a time series must not change the result");
     let window_end = r.tau_s + 2.0 / model.f1_hz;

@@ -5,7 +5,7 @@
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 use racket_impact::params::{Ball, Impact, LoadRule, Numerics, Overrides, Params, Racket, Strings};
-use racket_impact::solver::{simulate, ImpactResult, Model};
+use racket_impact::solve::{simulate, ImpactResult, Model};
 
 /// A racket, ball, strings and impact drawn from wide but physical ranges.
 fn params() -> impl Strategy<Value = Params> {

@@ -149,9 +149,9 @@ fn unsupported_combinations_are_refused_with_the_reason() {
 fn the_default_hand_damps_the_fundamental_by_a_few_per_cent() {
     // the documented calibration of the default hand (params::Variants)
     let mut p = Params::paper();
-    assert_eq!(racket_impact::solver::hand_damping_ratio(&p, 1), 0.0);
+    assert_eq!(racket_impact::solve::hand_damping_ratio(&p, 1), 0.0);
     p.variants.grip = Grip::Hand;
-    let zeta = racket_impact::solver::hand_damping_ratio(&p, 1);
+    let zeta = racket_impact::solve::hand_damping_ratio(&p, 1);
     eprintln!("default hand: mode-1 damping ratio {:.2} %", 100.0 * zeta);
     assert!((0.02..0.04).contains(&zeta), "{zeta}");
 }

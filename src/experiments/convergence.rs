@@ -13,7 +13,7 @@ use super::{col, fig4_energy, impact, line, styled, Experiment};
 use crate::error::Result;
 use crate::params::{LoadRule, Params};
 use crate::plot::{Chart, LineStyle};
-use crate::solver::Model;
+use crate::solve::Model;
 use crate::table::{fmt_sig, Table};
 
 /// The registry entry.

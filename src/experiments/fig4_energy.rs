@@ -12,7 +12,7 @@ use super::{col, line, scaled, styled, Experiment};
 use crate::error::Result;
 use crate::params::Params;
 use crate::plot::{Chart, LineStyle, VLine};
-use crate::solver::{Model, SeriesOptions};
+use crate::solve::{Model, SeriesOptions};
 use crate::table::{fmt_sig, Table};
 
 /// The registry entry.

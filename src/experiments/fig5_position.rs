@@ -52,7 +52,7 @@ fn run(id: &str, ks: f64) -> Result<Table> {
 }
 
 /// The values of [`COLUMNS`] for one impact.
-pub fn sweep_values(r: &crate::solver::ImpactResult) -> Vec<crate::table::Value> {
+pub fn sweep_values(r: &crate::solve::ImpactResult) -> Vec<crate::table::Value> {
     [r.e_a, r.f_ball, r.f_vib, r.f_vib_peak_pe, r.tau_s, r.peak_force_n].into_iter().map(Into::into).collect()
 }
 

@@ -25,7 +25,7 @@ use std::path::Path;
 use crate::error::{Error, Result};
 use crate::params::{Ball, LoadRule, Params, Racket};
 use crate::plot::Chart;
-use crate::solver::{simulate, ImpactResult};
+use crate::solve::{simulate, ImpactResult};
 
 /// One impact for an experiment: as [`simulate`], but a re-contact after separation (which the
 /// model does not follow) is an error rather than a number in a paper figure.

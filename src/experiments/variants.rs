@@ -149,7 +149,7 @@ fn chart_grip(t: &Table) -> Chart {
             100.0 * {
                 let mut p = paper_params(0.0, KS);
                 p.variants.grip = Grip::Hand;
-                crate::solver::hand_damping_ratio(&p, 1)
+                crate::solve::hand_damping_ratio(&p, 1)
             }
         ),
         x_label: "impact distance from the tip x (cm)".into(),

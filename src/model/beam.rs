@@ -105,7 +105,7 @@ impl Beam {
     /// `moment[j + 1]`; returns the bending energy `y^T K y / 2`, J. The explicit solver's
     /// stencil. `kappa` is as long as `y` and `moment` two longer: the end nodes' moments and a
     /// pad on each side stay zero (the solver passes arrays padded with zero-stiffness nodes, see
-    /// `solver::Padded`).
+    /// [`Padded`](crate::model::basis::Padded)).
     pub fn bending_moments(kappa: &[f64], y: &[f64], moment: &mut [f64]) -> f64 {
         // kappa is zero at the two end nodes (and at any padding), so their moments stay zero;
         // the interior nodes' neighbours as shifted slices, in chunks of four and a remainder
@@ -322,7 +322,7 @@ mod tests {
             let e_dense = 0.5 * nalgebra::DVector::from_vec(y.clone()).dot(&dense);
             assert_relative_eq!(beam.bending_energy(&y), e_dense, max_relative = 1e-12);
             // the solver's zero-stiffness padding nodes change no moment and add no energy
-            let pad = crate::solver::Padded::new(&beam);
+            let pad = crate::model::basis::Padded::new(&beam);
             let mut y_pad = y.clone();
             y_pad.resize(pad.lanes + 2, 0.0);
             let mut moment_pad = vec![0.0; pad.lanes + 4];

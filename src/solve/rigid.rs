@@ -15,23 +15,48 @@
 //! vibrates, so `f_vib = 0` and the energy closes exactly: ball KE + ball loss + racket rigid
 //! KE + spin KE = 1.
 
+use std::sync::Arc;
+
 use crate::error::Result;
+use crate::model::basis::Basis;
+use crate::model::beam::LoadPoint;
+use crate::model::contact::{ContactLaw, Cross};
 use crate::model::reduced::clamped_drop;
 use crate::params::{Ball, Params};
-use crate::solver::{Basis, ImpactResult};
+use crate::solve::outcome::ImpactResult;
+use crate::solve::Solver;
+
+/// A prepared rigid-racket impact: the parameters, the racket's rigid-body modes (those of its
+/// beam) and the load point.
+#[derive(Debug, Clone)]
+pub struct Rigid {
+    params: Params,
+    basis: Arc<Basis>,
+    load: LoadPoint,
+}
+
+impl Solver for Rigid {
+    fn prepare(p: &Params) -> Result<Self> {
+        p.validate()?;
+        let basis = Basis::of(&p.racket, p.numerics.segments);
+        let load = basis.beam.load_point(p.impact.x, p.numerics.load);
+        Ok(Rigid { params: *p, basis, load })
+    }
+
+    fn run(&self) -> Result<ImpactResult> {
+        impact(&self.params, &self.basis, &self.load)
+    }
+}
 
 /// The closed-form rigid-racket impact.
-pub fn impact(p: &Params) -> Result<ImpactResult> {
-    p.validate()?;
-    let basis = Basis::of(&p.racket, p.numerics.segments);
+fn impact(p: &Params, basis: &Basis, load: &LoadPoint) -> Result<ImpactResult> {
     let beam = &basis.beam;
-    let load = beam.load_point(p.impact.x, p.numerics.load);
     let (mb, v1, r, ix) = (p.ball.mass, p.impact.v1, p.impact.r, p.racket.ix);
     let b = load.x_load - beam.x_cm;
     let m_eff = 1.0 / (1.0 / beam.total_mass + b * b / beam.i_cm + r * r / ix);
     let mu = mb * m_eff / (mb + m_eff);
-    let (k1, ks, q) = (p.ball.k1, p.strings.ks, p.ball.p + 1.0);
-    let e = ((1.0 / ks + 2.0 / (q * k1)) / (1.0 / ks + 1.0 / k1)).sqrt();
+    let law = Cross::new(&p.ball, &p.strings);
+    let e = law.restitution_on_fixed_frame();
     let e_a = (e * m_eff - mb) / (mb + m_eff);
     let j = mu * (1.0 + e) * v1;
     let drop = clamped_drop(&Ball { mass: mu, ..p.ball }, &p.strings, v1);
@@ -42,7 +67,7 @@ pub fn impact(p: &Params) -> Result<ImpactResult> {
     let f_spin = 0.5 * ix * omega * omega / e0;
     let f_rigid = (j * j / (2.0 * beam.total_mass) + (j * b).powi(2) / (2.0 * beam.i_cm)) / e0;
     let y0 = drop.y0_m;
-    let f_ball = crate::model::contact::Contact::new(&p.ball, &p.strings).ball_loss(y0) / e0;
+    let f_ball = law.ball_loss(y0) / e0;
     let f_ke_ball = e_a * e_a;
     let result = ImpactResult {
         e_a,

@@ -1,0 +1,64 @@
+//! Cubic Hermite interpolation within one time step: both time-stepping solvers place the
+//! maximum compression, the separation and the twist angle there from the values and rates at
+//! the step's ends.
+
+/// Cubic Hermite interpolant on a step of length `h` with values `p0, p1` and derivatives
+/// `m0, m1`, evaluated at the fraction `s` of the step.
+pub(crate) fn hermite_eval(p0: f64, m0: f64, p1: f64, m1: f64, h: f64, s: f64) -> f64 {
+    let (s2, s3) = (s * s, s * s * s);
+    (2.0 * s3 - 3.0 * s2 + 1.0) * p0 + (s3 - 2.0 * s2 + s) * h * m0 + (-2.0 * s3 + 3.0 * s2) * p1 + (s3 - s2) * h * m1
+}
+
+/// Derivative (per unit time) of the Hermite interpolant.
+fn hermite_slope(p0: f64, m0: f64, p1: f64, m1: f64, h: f64, s: f64) -> f64 {
+    let s2 = s * s;
+    ((6.0 * s2 - 6.0 * s) * p0
+        + (3.0 * s2 - 4.0 * s + 1.0) * h * m0
+        + (6.0 * s - 6.0 * s2) * p1
+        + (3.0 * s2 - 2.0 * s) * h * m1)
+        / h
+}
+
+/// Bisection for the sign change of `f` on [0, 1], given f(0) > 0 >= f(1).
+fn bisect(f: impl Fn(f64) -> f64) -> f64 {
+    let (mut lo, mut hi) = (0.0, 1.0);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if f(mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The maximum of the Hermite interpolant in a step where the slope goes from > 0 to <= 0:
+/// (fraction of the step, value).
+pub(crate) fn hermite_max(p0: f64, m0: f64, p1: f64, m1: f64, h: f64) -> (f64, f64) {
+    let s = bisect(|s| hermite_slope(p0, m0, p1, m1, h, s));
+    let v = hermite_eval(p0, m0, p1, m1, h, s);
+    (s, v.max(p0).max(p1))
+}
+
+/// The zero of the Hermite interpolant in a step where the value goes from > 0 to <= 0.
+pub(crate) fn hermite_root(p0: f64, m0: f64, p1: f64, m1: f64, h: f64) -> f64 {
+    bisect(|s| hermite_eval(p0, m0, p1, m1, h, s))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    #[test]
+    fn hermite_is_exact_for_cubics() {
+        let f = |t: f64| 1.0 + 2.0 * t - 3.0 * t * t + 0.5 * t * t * t;
+        let df = |t: f64| 2.0 - 6.0 * t + 1.5 * t * t;
+        let (a, h) = (0.2, 0.7);
+        for &s in &[0.0, 0.3, 0.8, 1.0] {
+            assert_relative_eq!(hermite_eval(f(a), df(a), f(a + h), df(a + h), h, s), f(a + s * h), epsilon = 1e-13);
+            assert_relative_eq!(hermite_slope(f(a), df(a), f(a + h), df(a + h), h, s), df(a + s * h), epsilon = 1e-12);
+        }
+    }
+}

@@ -1,0 +1,52 @@
+//! The impact solvers, one trait ([`Solver`]) and one dispatcher ([`simulate`]):
+//!
+//! - [`fd`]: velocity-Verlet time stepping of the lumped beam (the reference), with the energy
+//!   ledger, the hand grip and the time series;
+//! - [`modal`]: modal superposition with exact modal propagation and a contact-sized step;
+//! - [`rigid`]: the rigid racket in closed form (`--frame rigid`).
+//!
+//! The outcome types ([`ImpactResult`], with its field table, and the time series) are in
+//! [`outcome`]; the time series is recorded by an observer (`observer`) the stepping loop is generic over.
+//! Everything physical (the contact law, the beam and its modes, the coupling of the contact
+//! point to the frame) comes from [`crate::model`].
+
+pub mod fd;
+mod hermite;
+pub mod modal;
+pub(crate) mod observer;
+pub mod outcome;
+pub mod rigid;
+
+use crate::error::Result;
+use crate::params::{Frame, Params, SolverKind};
+
+pub use fd::{hand_damping_ratio, Model};
+pub use modal::{ModalModel, Resolution};
+pub use outcome::{ImpactResult, SeriesOptions, SeriesRow};
+pub use rigid::Rigid;
+
+/// An impact solver: prepared once from the parameters (validated, discretised, the step
+/// chosen), then run.
+pub trait Solver: Sized {
+    /// Validate the parameters and prepare the impact.
+    fn prepare(params: &Params) -> Result<Self>;
+
+    /// Run the impact.
+    fn run(&self) -> Result<ImpactResult>;
+}
+
+/// Prepare and run one impact with the solver `S`.
+pub fn solve<S: Solver>(params: &Params) -> Result<ImpactResult> {
+    S::prepare(params)?.run()
+}
+
+/// Validate, prepare and run one impact with the solver (and model variant) the parameters name.
+pub fn simulate(params: &Params) -> Result<ImpactResult> {
+    if params.variants.frame == Frame::Rigid {
+        return solve::<Rigid>(params);
+    }
+    match params.numerics.solver {
+        SolverKind::Fd => solve::<Model>(params),
+        SolverKind::Modal => solve::<ModalModel>(params),
+    }
+}

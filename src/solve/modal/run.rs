@@ -1,0 +1,193 @@
+//! The modal solver's steps: predict every coordinate over a step with the end force and rate
+//! zero, solve the contact law at the end of the step ([`ImplicitLaw`]), check the cubic force
+//! history against the law inside the step (splitting the step where it misses), then add the
+//! end force and rate and keep the ledger.
+
+use crate::error::Result;
+use crate::model::contact::{ContactLaw, ImplicitLaw, Phase};
+use crate::solve::hermite::{hermite_eval, hermite_max, hermite_root};
+use crate::solve::modal::steps::{dot, sum4, Grid, COS, Q_RESPONSE, SIN_W, V_RESPONSE, W_SIN};
+use crate::solve::modal::{ModalModel, State, LEVELS, REFINE};
+
+/// The contact at the end of a step.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct End {
+    /// Force, N, and its rate, N/s.
+    pub f: f64,
+    pub d: f64,
+    /// Total compression `Y_T`, m, and its rate, m/s.
+    pub yt: f64,
+    pub ytd: f64,
+    pub phase: Phase,
+    /// `(u, u^p)` of the expansion law.
+    pub u: (f64, f64),
+    /// Time of maximum compression, s (once passed).
+    pub t_max: f64,
+}
+
+/// An impact in progress.
+pub(super) struct Run<'a> {
+    pub m: &'a ModalModel,
+    pub s: State,
+    pub next: State,
+    pub at: End,
+    pub t: f64,
+    pub peak_force: f64,
+    pub energy_err: f64,
+    pub momentum_err: f64,
+    /// Contact time and twist angle at separation, once it has happened.
+    pub separated: Option<(f64, f64)>,
+}
+
+impl Run<'_> {
+    /// Take one step of the given level, or, if its force history misses the contact law by
+    /// more than the tolerance, `REFINE` steps of the next level.
+    pub fn advance(&mut self, level: usize) -> Result<()> {
+        let m = self.m;
+        let grid = m.grid(level);
+        let a = self.at;
+        let pred = m.predict(grid, &self.s, a.f, a.d, &mut self.next);
+        let (end, switch) = self.end_of_step(grid, pred)?;
+        if let (Phase::Expansion { y0 }, true) = (end.phase, level + 1 < LEVELS) {
+            if self.miss(grid, &end, switch, y0) * grid.h > m.impulse_tolerance {
+                for _ in 0..REFINE {
+                    self.advance(level + 1)?;
+                    if self.separated.is_some() {
+                        break;
+                    }
+                }
+                return Ok(());
+            }
+        }
+        self.accept(grid, end);
+        Ok(())
+    }
+
+    /// The contact at the end of the step from the prediction `(Y_hat, Yd_hat)`, and the
+    /// fraction of the step where maximum compression falls if it falls in this step.
+    fn end_of_step(&self, grid: &Grid, (yh, ydh): (f64, f64)) -> Result<(End, Option<f64>)> {
+        let m = self.m;
+        let h = grid.h;
+        let c = &m.law;
+        let ks = c.compression_stiffness();
+        let a = self.at;
+        let mut end = a;
+        let (mut f1, mut d1) = match a.phase {
+            Phase::Compression => {
+                let [m0, m1] = grid.compression;
+                (m0[0] * yh + m0[1] * ydh, m1[0] * yh + m1[1] * ydh)
+            }
+            Phase::Expansion { y0 } => {
+                let start = c.expansion_start(y0, a.u, a.ytd, h);
+                let e = c.expansion_end(&grid.coupling, y0, (yh, ydh), start, a.d)?.unwrap_or_default();
+                end.u = e.u;
+                (e.f, e.d)
+            }
+        };
+        let mut switch = None;
+        if a.phase == Phase::Compression && d1 <= 0.0 {
+            // maximum compression within this step: Y_T = F/ks on its compression side
+            let (sm, ytm) = hermite_max(a.yt, a.ytd, f1 / ks, d1 / ks, h);
+            end.t_max = self.t + sm * h;
+            let y0 = c.ball_compression_at_max(ytm);
+            end.phase = Phase::Expansion { y0 };
+            let e = c.expansion_end(&grid.coupling, y0, (yh, ydh), (1.0, 1.0), 0.0)?.unwrap_or_default();
+            end.u = e.u;
+            (f1, d1) = (e.f, e.d);
+            switch = Some(sm);
+        }
+        let k = &grid.coupling;
+        end.f = f1;
+        end.d = d1;
+        end.yt = yh - k.bf * f1 - k.bd * d1;
+        end.ytd = ydh - k.cf * f1 - k.cd * d1;
+        Ok((end, switch))
+    }
+
+    /// How far the cubic force history of a step ending in expansion (maximum compression of
+    /// `y0` m) misses the contact law, N: at the midpoint, and at the quarter points too where
+    /// the force falls to a quarter of its start or the ball leaves (there the law nears zero at
+    /// an unknown point, the cubic can dip below zero after it, and the midpoint alone can miss
+    /// that).
+    fn miss(&self, grid: &Grid, end: &End, switch: Option<f64>, y0: f64) -> f64 {
+        let (a, h) = (&self.at, grid.h);
+        let c = &self.m.law;
+        let ks = c.compression_stiffness();
+        let f1 = end.f;
+        let points: &[f64] = if f1 < 0.25 * a.f { &[0.25, 0.5, 0.75] } else { &[0.5] };
+        let mut miss: f64 = 0.0;
+        for &s in points {
+            let ym = hermite_eval(a.yt, a.ytd, end.yt, end.ytd, h, s);
+            let cubic = hermite_eval(a.f, a.d, f1, end.d, h, s);
+            let at = match switch {
+                Some(sm) if sm > s => cubic - ks * ym,
+                _ => c.expansion_miss(y0, ym, cubic),
+            };
+            miss = miss.max(at.abs());
+        }
+        miss
+    }
+
+    /// Take the step to `end`: the coordinates, the time, the ledger and the separation.
+    fn accept(&mut self, grid: &Grid, end: End) {
+        let m = self.m;
+        let (h, c, a) = (grid.h, &m.law, self.at);
+        let (f1, d1) = (end.f, end.d);
+        let modal_energy = m.correct(grid, &mut self.next, f1, d1);
+        std::mem::swap(&mut self.s, &mut self.next);
+        self.t += h;
+        self.peak_force = self.peak_force.max(f1);
+        let p = &m.base.params;
+        let (mb, v1) = (p.ball.mass, p.impact.v1);
+        let e0 = 0.5 * mb * v1 * v1;
+        let st = c.state_at_force(end.phase, f1, end.u);
+        let e =
+            modal_energy + c.ball_energy_with_loss(end.phase, &st) + c.string_energy(&st) + 0.5 * m.residual * f1 * f1;
+        self.energy_err = self.energy_err.max((e - e0).abs() / e0);
+        let pm = mb.sqrt() * self.s.v[0] + self.s.v[1] / m.g[1];
+        self.momentum_err = self.momentum_err.max((pm - mb * v1).abs() / (mb * v1));
+        if matches!(end.phase, Phase::Expansion { .. }) && f1 <= 0.0 {
+            let sc = hermite_root(a.yt, a.ytd, end.yt, end.ytd, h);
+            // twist angle at the crossing (`next` now holds the state before the step)
+            let theta =
+                hermite_eval(self.next.q[3], self.next.v[3], self.s.q[3], self.s.v[3], h, sc) / p.racket.ix.sqrt();
+            self.separated = Some((self.t - h + sc * h, theta));
+        }
+        self.at = end;
+    }
+}
+
+impl ModalModel {
+    /// Advance `s` over one step with the end force and rate zero into `out`; returns
+    /// `(Y_T, Y_T')` of that prediction.
+    pub(super) fn predict(&self, grid: &Grid, s: &State, f0: f64, d0: f64, out: &mut State) -> (f64, f64) {
+        let n = self.lam.len();
+        let st = &grid.steps;
+        let (q0, v0, q1, v1) = (&s.q[..n], &s.v[..n], &mut out.q[..n], &mut out.v[..n]);
+        let (c, sq, vq) = (&st.col(COS)[..n], &st.col(SIN_W)[..n], &st.col(W_SIN)[..n]);
+        let (qf, qd) = (&st.col(Q_RESPONSE)[..n], &st.col(Q_RESPONSE + 1)[..n]);
+        let (vf, vd) = (&st.col(V_RESPONSE)[..n], &st.col(V_RESPONSE + 1)[..n]);
+        for j in 0..n {
+            q1[j] = c[j] * q0[j] + sq[j] * v0[j] + qf[j] * f0 + qd[j] * d0;
+            v1[j] = vq[j] * q0[j] + c[j] * v0[j] + vf[j] * f0 + vd[j] * d0;
+        }
+        (-dot(&self.g, q1), -dot(&self.g, v1))
+    }
+
+    /// Add the end force and rate to a predicted step; returns the coordinates' energy, J.
+    pub(super) fn correct(&self, grid: &Grid, out: &mut State, f1: f64, d1: f64) -> f64 {
+        let n = self.lam.len();
+        let st = &grid.steps;
+        let (q, v) = (&mut out.q[..n], &mut out.v[..n]);
+        let (qf, qd) = (&st.col(Q_RESPONSE + 2)[..n], &st.col(Q_RESPONSE + 3)[..n]);
+        let (vf, vd) = (&st.col(V_RESPONSE + 2)[..n], &st.col(V_RESPONSE + 3)[..n]);
+        for j in 0..n {
+            q[j] += qf[j] * f1 + qd[j] * d1;
+            v[j] += vf[j] * f1 + vd[j] * d1;
+        }
+        // kinetic plus potential
+        let lam = &self.lam[..n];
+        let e = sum4(n, |j| v[j] * v[j] + lam[j] * q[j] * q[j]);
+        0.5 * e
+    }
+}

@@ -1,0 +1,298 @@
+//! What an impact reports: [`ImpactResult`], declared once with the table of its fields
+//! ([`FIELDS`]) that every reader of a result (the finiteness check, the text output, the sweep
+//! columns, the map quantities) takes names, units and values from; and the time series.
+
+use serde::Serialize;
+
+use crate::error::{Error, Result};
+
+/// How a field's value is read from a result.
+#[derive(Debug, Clone, Copy)]
+pub enum Get {
+    /// A number.
+    Number(fn(&ImpactResult) -> f64),
+    /// A yes/no flag.
+    Flag(fn(&ImpactResult) -> bool),
+}
+
+/// How the plain-text output shows a field: `label value unit`, the value times `scale`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Text {
+    /// The label (the key without its unit suffix).
+    pub label: &'static str,
+    /// The value is shown times this (1e3 for ms and mm).
+    pub scale: f64,
+    /// The unit or remark after the value (empty for none).
+    pub unit: &'static str,
+    /// Shown only for a racket held in a hand (`--grip hand`).
+    pub hand_only: bool,
+}
+
+/// One field of [`ImpactResult`].
+#[derive(Debug, Clone, Copy)]
+pub struct Field {
+    /// The struct field's name, which is also its JSON and CSV key.
+    pub key: &'static str,
+    /// Its SI unit (empty for a pure number or a fraction of the incident energy).
+    pub unit: &'static str,
+    /// What it is (the struct field's doc).
+    pub doc: &'static str,
+    /// Its value.
+    pub get: Get,
+    /// Checked to be finite before a result is returned ([`ImpactResult::check_finite`]).
+    pub checked: bool,
+    /// A column of every sweep row.
+    pub sweep: bool,
+    /// Its line in the text output, if it has one.
+    pub text: Option<Text>,
+}
+
+impl Field {
+    /// The value as a number (a flag as 0 or 1).
+    pub fn number(&self, r: &ImpactResult) -> f64 {
+        match self.get {
+            Get::Number(g) => g(r),
+            Get::Flag(g) => f64::from(u8::from(g(r))),
+        }
+    }
+}
+
+/// The field of a key, at compile time where the key is a constant (an unknown key is then a
+/// compile error).
+pub const fn field(key: &str) -> &'static Field {
+    let mut i = 0;
+    while i < FIELDS.len() {
+        if same(FIELDS[i].key, key) {
+            return &FIELDS[i];
+        }
+        i += 1;
+    }
+    panic!("no such impact result field")
+}
+
+/// String equality in a `const fn`.
+const fn same(a: &str, b: &str) -> bool {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        if a[i] != b[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
+/// A text line with the value as it is.
+const fn text(label: &'static str, unit: &'static str) -> Option<Text> {
+    Some(Text { label, scale: 1.0, unit, hand_only: false })
+}
+
+/// A text line with the value times 1000 (ms, mm).
+const fn text_milli(label: &'static str, unit: &'static str) -> Option<Text> {
+    Some(Text { label, scale: 1e3, unit, hand_only: false })
+}
+
+/// Declares [`ImpactResult`] and [`FIELDS`] from one list: each field's doc, name, type, unit,
+/// whether it is checked and swept, and its text line.
+macro_rules! impact_result {
+    (@get f64, $key:ident) => { Get::Number(|r: &ImpactResult| r.$key) };
+    (@get bool, $key:ident) => { Get::Flag(|r: &ImpactResult| r.$key) };
+    ($($(#[doc = $doc:literal])+ $key:ident: $ty:tt [$unit:literal] checked: $checked:literal, sweep: $sweep:literal, text: $text:expr;)+) => {
+        /// What one impact reports (SPEC.md section 2). Energies are fractions of `m_b v1^2 / 2`.
+        #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+        pub struct ImpactResult {
+            $($(#[doc = $doc])+ pub $key: $ty,)+
+        }
+
+        /// Every field of [`ImpactResult`], in declaration (and JSON) order.
+        pub const FIELDS: &[Field] = &[$(Field {
+            key: stringify!($key),
+            unit: $unit,
+            doc: concat!($($doc),+),
+            get: impact_result!(@get $ty, $key),
+            checked: $checked,
+            sweep: $sweep,
+            text: $text,
+        },)+];
+    };
+}
+
+impact_result! {
+    /// Apparent coefficient of restitution `v2 / v1` (racket initially at rest).
+    e_a: f64 [""] checked: true, sweep: true, text: text("e_a", "");
+    /// Impact duration, s.
+    tau_s: f64 ["s"] checked: true, sweep: true, text: text_milli("tau", "ms");
+    /// Rotation about the long axis at the end of the impact, degrees.
+    theta_end_deg: f64 ["deg"] checked: true, sweep: true, text: text("theta_end", "deg");
+    /// Energy dissipated in the ball (Eq 11).
+    f_ball: f64 [""] checked: true, sweep: true, text: text("f_ball", "lost in the ball (Eq 11)");
+    /// Racket vibration energy after impact: racket energy minus its rigid-body energy.
+    f_vib: f64 [""] checked: true, sweep: true, text: text("f_vib", "racket vibration");
+    /// The paper's vibration measure: peak bending PE during two fundamental periods after impact.
+    f_vib_peak_pe: f64 [""] checked: true, sweep: true,
+        text: text("f_vib_peak_pe", "peak bending PE after impact (paper)");
+    /// Kinetic energy of twist about the long axis.
+    f_spin: f64 [""] checked: true, sweep: true, text: text("f_spin", "twist about the long axis");
+    /// Energy taken by the hand (`--grip hand`: its springs' energy plus what its dampers
+    /// dissipated) at separation; 0 for the paper's free racket.
+    f_hand: f64 [""] checked: true, sweep: false,
+        text: Some(Text { label: "f_hand", scale: 1.0, unit: "taken by the hand (springs + damping)", hand_only: true });
+    /// Rigid-body kinetic energy of the racket (translation + rotation about the centre of mass).
+    f_rigid: f64 [""] checked: true, sweep: true, text: text("f_rigid", "racket rigid-body KE");
+    /// Rebound kinetic energy of the ball (= e_a^2).
+    f_ke_ball: f64 [""] checked: true, sweep: true, text: text("f_ke_ball", "of initial ball KE");
+    /// Maximum contact force, N.
+    peak_force_n: f64 ["N"] checked: true, sweep: true, text: text("peak_force", "N");
+    /// Largest relative deviation of the total energy from its initial value, over the run.
+    energy_error: f64 [""] checked: true, sweep: true, text: text("energy_error", "relative");
+    /// Largest relative deviation of the total linear momentum from `m_b v1`, over the run.
+    momentum_error: f64 [""] checked: true, sweep: false, text: text("momentum_error", "relative");
+    /// Where the force really acted, m from the tip.
+    x_load_m: f64 ["m"] checked: false, sweep: true, text: None;
+    /// Time of maximum total compression `Y_T`, s.
+    t_max_compression_s: f64 ["s"] checked: false, sweep: false, text: text_milli("t_max_compression", "ms");
+    /// Maximum ball compression `Y0`, m.
+    y0_m: f64 ["m"] checked: false, sweep: false, text: text_milli("y0", "mm ball compression");
+    /// True if the vibrating frame caught the ball again within the post-impact window.
+    recontact: bool [""] checked: false, sweep: true, text: None;
+    /// Time step used, s.
+    dt_s: f64 ["s"] checked: false, sweep: false, text: text("dt", "s");
+}
+
+/// The text output's lines, in its order.
+pub const TEXT_ORDER: [&Field; 16] = [
+    field("e_a"),
+    field("tau_s"),
+    field("theta_end_deg"),
+    field("peak_force_n"),
+    field("f_ke_ball"),
+    field("f_ball"),
+    field("f_rigid"),
+    field("f_vib"),
+    field("f_vib_peak_pe"),
+    field("f_spin"),
+    field("f_hand"),
+    field("t_max_compression_s"),
+    field("y0_m"),
+    field("energy_error"),
+    field("momentum_error"),
+    field("dt_s"),
+];
+
+impl ImpactResult {
+    /// Every checked field finite, or an error naming the first that is not (`f64::max` would
+    /// hide a NaN in the running error maxima, so the check is on the final numbers).
+    pub fn check_finite(&self) -> Result<()> {
+        match FIELDS.iter().find(|f| f.checked && !f.number(self).is_finite()) {
+            Some(f) => Err(Error::NonFinite { field: f.key }),
+            None => Ok(()),
+        }
+    }
+}
+
+/// One sample of the time series.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SeriesRow {
+    /// Time, s.
+    pub t_s: f64,
+    /// Contact force, N.
+    pub force_n: f64,
+    /// Ball displacement `y_b`, m.
+    pub y_ball_m: f64,
+    /// Total compression `Y_T` (ball + strings), m; negative after separation.
+    pub y_total_m: f64,
+    /// Rotation about the long axis, rad.
+    pub theta_rad: f64,
+    /// Ball kinetic energy (fraction of the initial).
+    pub ke_ball: f64,
+    /// Ball elastic energy plus the energy it has dissipated.
+    pub pe_ball: f64,
+    /// String elastic energy.
+    pub pe_string: f64,
+    /// Kinetic energy of all beam nodes (translation, rotation and vibration).
+    pub ke_racket: f64,
+    /// Bending potential energy of the beam.
+    pub pe_racket: f64,
+    /// Kinetic energy of twist about the long axis.
+    pub ke_spin: f64,
+    /// Energy in the hand's springs plus what its dampers dissipated (`--grip hand`).
+    pub hand: f64,
+    /// Sum of the above (1 up to the integration error).
+    pub total: f64,
+}
+
+/// Options for recording the time series.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SeriesOptions {
+    /// Spacing of the samples, s (rounded to a whole number of steps).
+    pub sample_dt: f64,
+    /// Record (and step) at least until this time, s.
+    pub t_end: f64,
+}
+
+impl Default for SeriesOptions {
+    fn default() -> Self {
+        SeriesOptions { sample_dt: 2.0e-5, t_end: 0.0 }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_field_table_reads_every_field_under_its_json_key_in_json_order() {
+        let r = ImpactResult {
+            e_a: 1.0,
+            tau_s: 2.0,
+            theta_end_deg: 3.0,
+            f_ball: 4.0,
+            f_vib: 5.0,
+            f_vib_peak_pe: 6.0,
+            f_spin: 7.0,
+            f_hand: 8.0,
+            f_rigid: 9.0,
+            f_ke_ball: 10.0,
+            peak_force_n: 11.0,
+            energy_error: 12.0,
+            momentum_error: 13.0,
+            x_load_m: 14.0,
+            t_max_compression_s: 15.0,
+            y0_m: 16.0,
+            recontact: true,
+            dt_s: 18.0,
+        };
+        let text = serde_json::to_string(&r).unwrap();
+        let json = serde_json::to_value(r).unwrap();
+        let json = json.as_object().unwrap();
+        assert_eq!(json.len(), FIELDS.len());
+        let mut at = 0;
+        for f in FIELDS {
+            let value = match f.get {
+                Get::Number(_) => json[f.key].as_f64().unwrap(),
+                Get::Flag(_) => f64::from(u8::from(json[f.key].as_bool().unwrap())),
+            };
+            assert_eq!(f.number(&r), value, "{}", f.key);
+            let pos = text.find(&format!("\"{}\":", f.key)).unwrap();
+            assert!(pos >= at, "{} out of order", f.key);
+            at = pos;
+        }
+    }
+
+    #[test]
+    fn the_first_non_finite_checked_field_is_named() {
+        let mut r = crate::solve::simulate(&crate::params::Params::paper()).unwrap();
+        r.momentum_error = f64::NAN;
+        r.f_vib = f64::INFINITY;
+        assert!(matches!(r.check_finite(), Err(Error::NonFinite { field: "f_vib" })));
+        r.f_vib = 0.0;
+        assert!(matches!(r.check_finite(), Err(Error::NonFinite { field: "momentum_error" })));
+        r.momentum_error = 0.0;
+        r.dt_s = f64::NAN;
+        assert!(r.check_finite().is_ok());
+    }
+}
