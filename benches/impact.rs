@@ -73,7 +73,7 @@ fn png(c: &mut Criterion) {
     group.bench_function("render_all_figures", |b| {
         b.iter(|| {
             for (id, chart) in &charts {
-                racket_impact::plot::render_png(id, chart, &dir.join(format!("{id}.png"))).unwrap();
+                racket_impact::render::plot::render_png(id, chart, &dir.join(format!("{id}.png"))).unwrap();
             }
         })
     });

@@ -20,8 +20,8 @@ use crate::experiments::{converged, impact, paper_params, read_off_curve, CENTRE
 use crate::model::beam::Beam;
 use crate::model::reduced::{clamped_drop, concrete_drop};
 use crate::params::{drop_speed, ks_from_tension_lb, Ball, Racket, Strings, DROP_HEIGHT_100_IN};
+use crate::render::table::fmt_sig;
 use crate::solver::ImpactResult;
-use crate::table::fmt_sig;
 
 /// The claims file, compiled in.
 pub const CLAIMS_CSV: &str = include_str!("../golden/paper_claims.csv");

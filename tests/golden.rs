@@ -109,8 +109,8 @@ fn committed_pngs_are_current_and_deterministic() {
         let chart = (e.chart)(&table);
         let a = dir.join(format!("{}-a.png", e.id));
         let b = dir.join(format!("{}-b.png", e.id));
-        racket_impact::plot::render_png(e.id, &chart, &a).unwrap();
-        racket_impact::plot::render_png(e.id, &chart, &b).unwrap();
+        racket_impact::render::plot::render_png(e.id, &chart, &a).unwrap();
+        racket_impact::render::plot::render_png(e.id, &chart, &b).unwrap();
         let (a, b) = (std::fs::read(a).unwrap(), std::fs::read(b).unwrap());
         assert_eq!(a, b, "{}: rendering is not deterministic", e.id);
         let committed = std::fs::read(root().join("figures").join(format!("{}.png", e.id))).unwrap();

@@ -12,8 +12,8 @@ use super::{col, line, log_space, on_right, scaled, styled, Experiment};
 use crate::error::Result;
 use crate::model::reduced::{clamped_drop, concrete_drop};
 use crate::params::{drop_speed, Ball, Strings, DROP_HEIGHT_100_IN};
-use crate::plot::{Chart, LineStyle, VLine};
-use crate::table::Table;
+use crate::render::plot::{Chart, LineStyle, VLine};
+use crate::render::table::Table;
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {

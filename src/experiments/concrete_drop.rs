@@ -12,8 +12,8 @@ use super::{col, line, on_right, scaled, Experiment};
 use crate::error::Result;
 use crate::model::reduced::concrete_drop;
 use crate::params::{drop_speed, Ball, DROP_HEIGHT_100_IN};
-use crate::plot::{Chart, VLine};
-use crate::table::{fmt_sig, Table};
+use crate::render::plot::{Chart, VLine};
+use crate::render::table::{fmt_sig, Table};
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {

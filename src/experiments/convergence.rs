@@ -12,9 +12,9 @@
 use super::{col, fig4_energy, impact, line, styled, Experiment};
 use crate::error::Result;
 use crate::params::{LoadRule, Params};
-use crate::plot::{Chart, LineStyle};
+use crate::render::plot::{Chart, LineStyle};
+use crate::render::table::{fmt_sig, Table};
 use crate::solver::Model;
-use crate::table::{fmt_sig, Table};
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {

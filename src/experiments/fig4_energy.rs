@@ -11,9 +11,9 @@
 use super::{col, line, scaled, styled, Experiment};
 use crate::error::Result;
 use crate::params::Params;
-use crate::plot::{Chart, LineStyle, VLine};
+use crate::render::plot::{Chart, LineStyle, VLine};
+use crate::render::table::{fmt_sig, Table};
 use crate::solver::{Model, SeriesOptions};
-use crate::table::{fmt_sig, Table};
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {

@@ -11,8 +11,8 @@
 
 use super::{col, line, node_positions, on_right, paper_params, scaled, sweep, Experiment, CENTRE_X};
 use crate::error::Result;
-use crate::plot::{Chart, VLine};
-use crate::table::Table;
+use crate::render::plot::{Chart, VLine};
+use crate::render::table::Table;
 
 /// Fig 5(a), soft strings.
 pub const SOFT: Experiment = Experiment {
@@ -52,7 +52,7 @@ fn run(id: &str, ks: f64) -> Result<Table> {
 }
 
 /// The values of [`COLUMNS`] for one impact.
-pub fn sweep_values(r: &crate::solver::ImpactResult) -> Vec<crate::table::Value> {
+pub fn sweep_values(r: &crate::solver::ImpactResult) -> Vec<crate::render::table::Value> {
     [r.e_a, r.f_ball, r.f_vib, r.f_vib_peak_pe, r.tau_s, r.peak_force_n].into_iter().map(Into::into).collect()
 }
 
@@ -73,7 +73,7 @@ fn chart(t: &Table, title: &str) -> Chart {
 }
 
 /// The paper's four curves: e_A, f(ball), f(vib) on the left, tau (ms) on the right.
-pub fn sweep_curves(x: Vec<f64>, t: &Table) -> Vec<crate::plot::Curve> {
+pub fn sweep_curves(x: Vec<f64>, t: &Table) -> Vec<crate::render::plot::Curve> {
     vec![
         line("e_A", x.clone(), col(t, "e_a"), 0),
         line("f(ball)", x.clone(), col(t, "f_ball"), 1),

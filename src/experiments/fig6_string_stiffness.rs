@@ -9,8 +9,8 @@
 use super::fig5_position::{sweep_curves, sweep_values, COLUMNS};
 use super::{col, log_space, paper_params, sweep, Experiment};
 use crate::error::Result;
-use crate::plot::Chart;
-use crate::table::Table;
+use crate::render::plot::Chart;
+use crate::render::table::Table;
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {
@@ -63,7 +63,7 @@ pub fn stiffness_chart(t: &Table, title: &str, faint_ei: Option<f64>) -> Chart {
         let faint = t.filter_num("ei_n_m2", f);
         for mut c in sweep_curves(col(&faint, "ks_n_per_m"), &faint) {
             c.label = format!("{} (EI {f})", c.label);
-            c.style = crate::plot::LineStyle::Faint;
+            c.style = crate::render::plot::LineStyle::Faint;
             curves.push(c);
         }
     }

@@ -10,8 +10,8 @@
 
 use super::{col, line, on_right, paper_params, scaled, sweep, Experiment, V1_OFF_AXIS};
 use crate::error::Result;
-use crate::plot::{Chart, LineStyle};
-use crate::table::Table;
+use crate::render::plot::{Chart, LineStyle};
+use crate::render::table::Table;
 
 /// Fig 7, x = 10 cm.
 pub const X10: Experiment = Experiment {

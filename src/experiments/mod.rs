@@ -24,7 +24,7 @@ use std::path::Path;
 
 use crate::error::{Error, Result};
 use crate::params::{Ball, LoadRule, Params, Racket};
-use crate::plot::Chart;
+use crate::render::plot::Chart;
 use crate::solver::{simulate, ImpactResult};
 
 /// One impact for an experiment: as [`simulate`], but a re-contact after separation (which the
@@ -40,7 +40,7 @@ pub fn checked(p: &Params, r: ImpactResult) -> Result<ImpactResult> {
     }
     Ok(r)
 }
-use crate::table::Table;
+use crate::render::table::Table;
 
 pub mod clamped_drop;
 pub mod concrete_drop;
@@ -111,8 +111,8 @@ pub fn run_and_write(exp: &Experiment, out: &Path) -> Result<Table> {
             "every number in an experiment table must be finite",
         ));
     }
-    crate::io::write_atomic(&out.join(format!("{}.csv", exp.id)), table.to_csv().as_bytes())?;
-    crate::plot::render_png(exp.id, &(exp.chart)(&table), &out.join(format!("{}.png", exp.id)))?;
+    crate::render::io::write_atomic(&out.join(format!("{}.csv", exp.id)), table.to_csv().as_bytes())?;
+    crate::render::plot::render_png(exp.id, &(exp.chart)(&table), &out.join(format!("{}.png", exp.id)))?;
     Ok(table)
 }
 
@@ -120,7 +120,7 @@ pub fn run_and_write(exp: &Experiment, out: &Path) -> Result<Table> {
 pub fn first_non_finite(t: &Table) -> Option<(usize, String)> {
     t.rows.iter().enumerate().find_map(|(i, row)| {
         row.iter()
-            .position(|v| matches!(v, crate::table::Value::Num(x) if !x.is_finite()))
+            .position(|v| matches!(v, crate::render::table::Value::Num(x) if !x.is_finite()))
             .map(|j| (i, t.columns[j].clone()))
     })
 }
@@ -215,25 +215,25 @@ pub fn log_space(a: f64, b: f64, n: usize) -> Vec<f64> {
 }
 
 /// A solid curve on the left axis.
-pub fn line(label: impl Into<String>, x: Vec<f64>, y: Vec<f64>, color: usize) -> crate::plot::Curve {
-    crate::plot::Curve {
+pub fn line(label: impl Into<String>, x: Vec<f64>, y: Vec<f64>, color: usize) -> crate::render::plot::Curve {
+    crate::render::plot::Curve {
         label: label.into(),
         x,
         y,
-        axis: crate::plot::Axis::Left,
-        style: crate::plot::LineStyle::Solid,
+        axis: crate::render::plot::Axis::Left,
+        style: crate::render::plot::LineStyle::Solid,
         color,
     }
 }
 
 /// The same curve on the right axis.
-pub fn on_right(mut c: crate::plot::Curve) -> crate::plot::Curve {
-    c.axis = crate::plot::Axis::Right;
+pub fn on_right(mut c: crate::render::plot::Curve) -> crate::render::plot::Curve {
+    c.axis = crate::render::plot::Axis::Right;
     c
 }
 
 /// The same curve in another style.
-pub fn styled(mut c: crate::plot::Curve, style: crate::plot::LineStyle) -> crate::plot::Curve {
+pub fn styled(mut c: crate::render::plot::Curve, style: crate::render::plot::LineStyle) -> crate::render::plot::Curve {
     c.style = style;
     c
 }

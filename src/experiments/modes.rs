@@ -12,8 +12,8 @@ use super::{col, line, Experiment};
 use crate::error::Result;
 use crate::model::beam::Beam;
 use crate::params::Racket;
-use crate::plot::{Chart, VLine};
-use crate::table::{fmt_sig, Table};
+use crate::render::plot::{Chart, VLine};
+use crate::render::table::{fmt_sig, Table};
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {

@@ -19,8 +19,8 @@ use super::{
 };
 use crate::error::Result;
 use crate::params::{ks_from_tension_lb, Params};
-use crate::plot::{Chart, LineStyle, VLine};
-use crate::table::{fmt_sig, Table};
+use crate::render::plot::{Chart, LineStyle, VLine};
+use crate::render::table::{fmt_sig, Table};
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {

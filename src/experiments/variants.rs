@@ -12,8 +12,8 @@
 use super::{col, line, node_positions, on_right, paper_params, scaled, styled, sweep, Experiment, CENTRE_X};
 use crate::error::Result;
 use crate::params::{Frame, Grip, Params, StringLaw};
-use crate::plot::{Chart, LineStyle, VLine};
-use crate::table::Table;
+use crate::render::plot::{Chart, LineStyle, VLine};
+use crate::render::table::Table;
 
 /// String stiffness of the comparisons along the racket, N/m (the paper's 60 lb).
 const KS: f64 = 4.0e4;

@@ -14,7 +14,7 @@
 //! the nearest of them, so the shading reaches the outline; the shading is clipped to every
 //! ellipse in [`HeatMap::clip`].
 //!
-//! The image has the size, fonts and determinism of [`crate::plot`]: identical maps give
+//! The image has the size, fonts and determinism of [`crate::render::plot`]: identical maps give
 //! identical bytes, the file is written atomically, and no input (all NaN, a constant field, a
 //! 2 x 2 grid, one point) panics.
 
@@ -28,8 +28,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::FontStyle;
 
 use crate::error::{Error, Result};
-use crate::plot::{self, AXIS_DESC_SIZE, HEIGHT, TICK_SIZE, WIDTH};
-use crate::table::fmt_sig;
+use crate::render::plot::{self, AXIS_DESC_SIZE, HEIGHT, TICK_SIZE, WIDTH};
+use crate::render::table::fmt_sig;
 
 /// Height of the title block (title and subtitle), pixels.
 const TITLE_AREA: u32 = 92;
@@ -420,12 +420,12 @@ fn level_label(v: f64, step: f64) -> String {
 }
 
 /// Render `map` as a [`WIDTH`] x [`HEIGHT`] PNG at `path`, atomically (see
-/// [`crate::plot::render_png`]); errors are [`Error::Plot`] with `id`.
+/// [`crate::render::plot::render_png`]); errors are [`Error::Plot`] with `id`.
 pub fn render_png(id: &str, map: &HeatMap, path: &Path) -> Result<()> {
     let fail = |message: String| Error::Plot { id: id.to_string(), message };
-    let tmp = crate::io::temp_sibling(path, ".png").map_err(|e| fail(e.to_string()))?;
+    let tmp = crate::render::io::temp_sibling(path, ".png").map_err(|e| fail(e.to_string()))?;
     match draw_file(map, &tmp) {
-        Ok(()) => crate::io::commit_temp(&tmp, path).map_err(|e| fail(e.to_string())),
+        Ok(()) => crate::render::io::commit_temp(&tmp, path).map_err(|e| fail(e.to_string())),
         Err(message) => Err(fail(message)),
     }
 }

@@ -23,7 +23,7 @@ use plotters::prelude::*;
 use plotters::style::{register_font, FontDesc, FontFamily, FontStyle, ShapeStyle};
 
 use crate::error::{Error, Result};
-use crate::table::fmt_sig;
+use crate::render::table::fmt_sig;
 
 /// Image width in pixels.
 pub const WIDTH: u32 = 1200;
@@ -191,7 +191,7 @@ pub fn render_png(id: &str, chart: &Chart, path: &Path) -> Result<()> {
         return Err(fail("could not load the bundled DejaVu Sans font".to_string()));
     }
     let plan = Plan::new(chart).map_err(&fail)?;
-    let tmp = crate::io::temp_sibling(path, ".png").map_err(|e| fail(e.to_string()))?;
+    let tmp = crate::render::io::temp_sibling(path, ".png").map_err(|e| fail(e.to_string()))?;
 
     // `catch_unwind` is a last line of defence: plotters may panic on inputs we did not
     // foresee, and a figure must never bring down the whole run.
@@ -212,7 +212,7 @@ pub fn render_png(id: &str, chart: &Chart, path: &Path) -> Result<()> {
         Err(panic) => Err(format!("plotting backend panicked: {}", panic_text(&*panic))),
     };
     match drawn {
-        Ok(()) => crate::io::commit_temp(&tmp, path).map_err(|e| fail(e.to_string())),
+        Ok(()) => crate::render::io::commit_temp(&tmp, path).map_err(|e| fail(e.to_string())),
         Err(message) => {
             // Dropping an unsaved backend writes the file; remove whatever is there.
             let _ = std::fs::remove_file(&tmp);

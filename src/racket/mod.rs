@@ -95,7 +95,7 @@ use serde::Deserialize;
 use crate::error::{Error, Result};
 use crate::model::beam::Beam;
 use crate::params::{self, Ball, Profile, Racket, Strings};
-use crate::table::{fmt_sig, Table, Value};
+use crate::render::table::{fmt_sig, Table, Value};
 
 /// Distance of the swingweight axis from the butt, m (the usual swingweight machine's axis).
 pub const SWING_AXIS_FROM_BUTT_M: f64 = 0.10;
@@ -833,11 +833,11 @@ fn fit_ei(racket: &Racket, f_hz: f64, segments: usize) -> Result<f64> {
 }
 
 const PRESETS: [(&str, &str); 5] = [
-    ("paper-125hz", include_str!("../presets/paper-125hz.toml")),
-    ("paper-widebody-200hz", include_str!("../presets/paper-widebody-200hz.toml")),
-    ("light", include_str!("../presets/light.toml")),
-    ("tweener", include_str!("../presets/tweener.toml")),
-    ("players", include_str!("../presets/players.toml")),
+    ("paper-125hz", include_str!("../../presets/paper-125hz.toml")),
+    ("paper-widebody-200hz", include_str!("../../presets/paper-widebody-200hz.toml")),
+    ("light", include_str!("../../presets/light.toml")),
+    ("tweener", include_str!("../../presets/tweener.toml")),
+    ("players", include_str!("../../presets/players.toml")),
 ];
 
 const PRESET_NAMES: [&str; 5] = [PRESETS[0].0, PRESETS[1].0, PRESETS[2].0, PRESETS[3].0, PRESETS[4].0];
