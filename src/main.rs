@@ -480,11 +480,12 @@ fn figures(a: FiguresArgs) -> Result<()> {
     } else {
         a.only.iter().map(|id| experiments::find(id)).collect::<Result<Vec<_>>>()?
     };
+    let mut ctx = experiments::Context::paper();
     let out = match &a.racket {
         Some(arg) => {
             let spec = racket_impact::racket::load(arg)?;
             let fitted = spec.to_racket(Params::paper().numerics.segments)?;
-            experiments::use_racket(Some((fitted.racket, fitted.ball)));
+            ctx = experiments::Context::with_racket(fitted.racket, fitted.ball);
             let stem = std::path::Path::new(arg).file_stem().and_then(|s| s.to_str()).unwrap_or("custom");
             let name: String =
                 stem.chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' { c } else { '_' }).collect();
@@ -495,7 +496,7 @@ fn figures(a: FiguresArgs) -> Result<()> {
     racket_impact::render::io::ensure_dir(&out)?;
     for e in &selected {
         let start = std::time::Instant::now();
-        let table = experiments::run_and_write(e, &out)?;
+        let table = experiments::run_and_write(e, &ctx, &out)?;
         eprintln!(
             "{:<24} {:>4} rows  {:>6.2} s  -> {}/{}.{{csv,png}}",
             e.id,
