@@ -1,4 +1,4 @@
-//! A racket description in the units of a spec sheet, fitted to the model's [`Racket`].
+//! A racket description in the units of a spec sheet, fitted to the model's [`Racket`](crate::params::Racket).
 //!
 //! A [`RacketSpec`] is a TOML file (or a built-in preset, [`preset_names`]) whose keys carry
 //! their unit in the name. [`RacketSpec::to_racket`] turns it into the model's parameters for a

@@ -140,8 +140,8 @@ impl RacketSpec {
 
     /// Parse and check the contents of a racket file (`path` only names it in errors). An empty
     /// file, non-UTF-8 bytes, a TOML syntax error, a wrong type and an unknown key are
-    /// [`Error::Config`] with one line naming the key and line; a missing, doubled or
-    /// out-of-range value is [`Error::InvalidParameter`] naming the key ([`Self::validate`]).
+    /// [`Error::Config`](crate::Error::Config) with one line naming the key and line; a missing, doubled or
+    /// out-of-range value is [`Error::InvalidParameter`](crate::Error::InvalidParameter) naming the key ([`Self::validate`]).
     /// Whether a balance and swingweight can be realised is checked by [`Self::to_racket`].
     pub fn from_toml_bytes(path: &Path, bytes: &[u8]) -> Result<Self> {
         let spec: RacketSpec =
