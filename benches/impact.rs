@@ -58,8 +58,9 @@ fn sweeps(c: &mut Criterion) {
     group.bench_function("fig5_style_100_positions_parallel_modal", |b| {
         b.iter(|| experiments::sweep(std::hint::black_box(&modal)).unwrap())
     });
+    let ctx = experiments::Context::paper();
     group.bench_function("all_experiment_tables_no_png", |b| {
-        b.iter(|| experiments::registry().iter().map(|e| (e.run)().unwrap().rows.len()).sum::<usize>())
+        b.iter(|| experiments::registry().iter().map(|e| (e.run)(&ctx).unwrap().rows.len()).sum::<usize>())
     });
     group.finish();
 }
@@ -67,13 +68,15 @@ fn sweeps(c: &mut Criterion) {
 fn png(c: &mut Criterion) {
     let dir = std::env::temp_dir().join(format!("racket-impact-bench-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let charts: Vec<_> = experiments::registry().iter().map(|e| (e.id, (e.chart)(&(e.run)().unwrap()))).collect();
+    let ctx = experiments::Context::paper();
+    let charts: Vec<_> =
+        experiments::registry().iter().map(|e| (e.id, (e.chart)(&ctx, &(e.run)(&ctx).unwrap()))).collect();
     let mut group = c.benchmark_group("png");
     group.sample_size(10);
     group.bench_function("render_all_figures", |b| {
         b.iter(|| {
             for (id, chart) in &charts {
-                racket_impact::plot::render_png(id, chart, &dir.join(format!("{id}.png"))).unwrap();
+                racket_impact::render::plot::render_png(id, chart, &dir.join(format!("{id}.png"))).unwrap();
             }
         })
     });

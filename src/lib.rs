@@ -31,11 +31,13 @@
 //!   time stepping with the energy ledger (and the hand grip variant), an independent
 //!   modal-superposition solver with a contact-sized step, the closed-form rigid racket; the
 //!   result with its one field table, and the time series.
-//! - [`experiments`]: one module per result of the paper (figure -> module table there).
-//! - [`table`], [`plot`], [`io`]: result tables, the one look of every figure, atomic writes.
-//! - [`report`]: the paper's numbers beside ours.
+//! - [`experiments`]: one module per result of the paper (figure -> module table there), each
+//!   with its paper claims; they run on a racket given as an argument ([`experiments::Context`]).
+//! - [`render`]: result tables, the one look of every figure, heat maps, the text of one
+//!   impact, atomic writes.
+//! - [`report`]: the paper's numbers beside ours, collected from the experiments' claims.
 //! - [`sweep`]: parallel, streamed parameter sweeps.
-//! - [`map`], [`heatmap`]: string-face maps and their heat-map figures.
+//! - [`map`]: string-face maps (drawn by [`render::heatmap`]).
 //!
 //! ## Example
 //! The Fig 4 impact with the paper's numerics:
@@ -57,18 +59,14 @@
 
 pub mod error;
 pub mod experiments;
-pub mod heatmap;
-pub mod io;
 pub mod map;
 pub mod model;
-pub mod output;
 pub mod params;
-pub mod plot;
 pub mod racket;
+pub mod render;
 pub mod report;
 pub mod solve;
 pub mod sweep;
-pub mod table;
 
 pub use error::{Error, Result};
 pub use params::Params;

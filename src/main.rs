@@ -382,7 +382,7 @@ fn check_comparison(tensions_lb: &[f64], rackets_given: bool) -> Result<()> {
 fn simulate(a: SimulateArgs) -> Result<()> {
     let params = params_from(&a.common)?;
     if let Some(path) = &a.series {
-        racket_impact::io::check_output_dir("series", path)?;
+        racket_impact::render::io::check_output_dir("series", path)?;
     }
     if !(a.series_dt.is_finite() && a.series_dt > 0.0) {
         return Err(Error::invalid("series-dt", a.series_dt, "sample spacing must be a finite number > 0 s"));
@@ -410,11 +410,11 @@ fn simulate(a: SimulateArgs) -> Result<()> {
             v["f1_hz"] = f1_hz.into();
             format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?)
         }
-        Format::Csv => racket_impact::output::result_csv(&result),
-        Format::Text => racket_impact::output::result_text(&params, &result),
+        Format::Csv => racket_impact::render::impact::result_csv(&result),
+        Format::Text => racket_impact::render::impact::result_text(&params, &result),
     };
     if let (Some(path), Some(rows)) = (&a.series, &series) {
-        racket_impact::output::write_series(path, rows)?;
+        racket_impact::render::impact::write_series(path, rows)?;
     }
     out!("{text}");
     if result.recontact {
@@ -480,11 +480,12 @@ fn figures(a: FiguresArgs) -> Result<()> {
     } else {
         a.only.iter().map(|id| experiments::find(id)).collect::<Result<Vec<_>>>()?
     };
+    let mut ctx = experiments::Context::paper();
     let out = match &a.racket {
         Some(arg) => {
             let spec = racket_impact::racket::load(arg)?;
             let fitted = spec.to_racket(Params::paper().numerics.segments)?;
-            experiments::use_racket(Some((fitted.racket, fitted.ball)));
+            ctx = experiments::Context::with_racket(fitted.racket, fitted.ball);
             let stem = std::path::Path::new(arg).file_stem().and_then(|s| s.to_str()).unwrap_or("custom");
             let name: String =
                 stem.chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' { c } else { '_' }).collect();
@@ -492,10 +493,10 @@ fn figures(a: FiguresArgs) -> Result<()> {
         }
         None => a.out.clone().unwrap_or_else(|| PathBuf::from("figures")),
     };
-    racket_impact::io::ensure_dir(&out)?;
+    racket_impact::render::io::ensure_dir(&out)?;
     for e in &selected {
         let start = std::time::Instant::now();
-        let table = experiments::run_and_write(e, &out)?;
+        let table = experiments::run_and_write(e, &ctx, &out)?;
         eprintln!(
             "{:<24} {:>4} rows  {:>6.2} s  -> {}/{}.{{csv,png}}",
             e.id,
@@ -510,12 +511,12 @@ fn figures(a: FiguresArgs) -> Result<()> {
 
 fn report(a: ReportArgs) -> Result<()> {
     if !a.no_write {
-        racket_impact::io::check_output_dir("out", &a.out)?;
+        racket_impact::render::io::check_output_dir("out", &a.out)?;
     }
     let rows = racket_impact::report::evaluate()?;
     let md = racket_impact::report::markdown(&rows);
     if !a.no_write {
-        racket_impact::io::write_atomic(&a.out, md.as_bytes())?;
+        racket_impact::render::io::write_atomic(&a.out, md.as_bytes())?;
     }
     out!("{md}");
     Ok(())
@@ -554,11 +555,11 @@ fn sweep(a: SweepArgs) -> Result<()> {
     let sweep = Sweep { defaults, base, axes };
     sweep.validate_all()?; // a bad value anywhere fails before anything is written
     if let Some(path) = &a.out {
-        racket_impact::io::check_output_dir("out", path)?;
+        racket_impact::render::io::check_output_dir("out", path)?;
     }
     let progress = Progress::new(sweep.len());
     let mut file = match &a.out {
-        Some(path) => Some(racket_impact::io::AtomicFile::create(path)?),
+        Some(path) => Some(racket_impact::render::io::AtomicFile::create(path)?),
         None => None,
     };
     let mut emit = |bytes: &[u8]| -> Result<()> {
@@ -660,7 +661,7 @@ fn racket_cmd(a: RacketArgs) -> Result<()> {
 
 fn speed(a: SpeedArgs) -> Result<()> {
     use racket_impact::experiments::speeds::{gain_pct, outgoing_speed};
-    use racket_impact::table::{Table, Value};
+    use racket_impact::render::table::{Table, Value};
     let unit = a.unit.si();
     for (field, v) in [("swing", a.swing), ("incoming", a.incoming)] {
         if !(v.is_finite() && v >= 0.0) {

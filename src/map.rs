@@ -39,11 +39,11 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::error::{Error, Result};
-use crate::heatmap::{ColorScale, Ellipse, HeatMap, Marker, Segment};
 use crate::model::beam::Beam;
 use crate::params::{Params, Racket};
+use crate::render::heatmap::{ColorScale, Ellipse, HeatMap, Marker, Segment};
+use crate::render::table::{Table, Value};
 use crate::solve::{simulate, ImpactResult};
-use crate::table::{Table, Value};
 
 /// Length of the default face of a racket without a head outline, m (the paper's "centre of
 /// the strings" is its centre, 16 cm from the tip).
@@ -805,7 +805,7 @@ impl Outputs {
                 "the CSV file of the map (the PNG and JSON go next to it with the same stem), e.g. map.csv",
             ));
         }
-        crate::io::check_output_dir("out", path)?;
+        crate::render::io::check_output_dir("out", path)?;
         let out =
             Outputs { csv: path.to_path_buf(), png: path.with_extension("png"), json: path.with_extension("json") };
         for p in [&out.csv, &out.png, &out.json] {
@@ -819,18 +819,18 @@ impl Outputs {
     /// Write all three, all or nothing: each goes to a temporary file next to its target
     /// first, and only when all three are complete are they renamed over the targets.
     pub fn write(&self, csv: &str, map: &HeatMap, json: &str) -> Result<()> {
-        let tmp_csv = crate::io::temp_sibling(&self.csv, "")?;
-        let tmp_json = crate::io::temp_sibling(&self.json, "")?;
-        let tmp_png = crate::io::temp_sibling(&self.png, ".png")?;
+        let tmp_csv = crate::render::io::temp_sibling(&self.csv, "")?;
+        let tmp_json = crate::render::io::temp_sibling(&self.json, "")?;
+        let tmp_png = crate::render::io::temp_sibling(&self.png, ".png")?;
         let cleanup = || {
             for t in [&tmp_csv, &tmp_json, &tmp_png] {
                 let _ = std::fs::remove_file(t);
             }
         };
         let written = (|| -> Result<()> {
-            crate::io::write_synced(&tmp_csv, &self.csv, csv.as_bytes())?;
-            crate::io::write_synced(&tmp_json, &self.json, json.as_bytes())?;
-            crate::heatmap::draw_file(map, &tmp_png)
+            crate::render::io::write_synced(&tmp_csv, &self.csv, csv.as_bytes())?;
+            crate::render::io::write_synced(&tmp_json, &self.json, json.as_bytes())?;
+            crate::render::heatmap::draw_file(map, &tmp_png)
                 .map_err(|message| Error::Plot { id: self.png.display().to_string(), message })
         })();
         if let Err(e) = written {
@@ -838,7 +838,7 @@ impl Outputs {
             return Err(e);
         }
         for (tmp, path) in [(&tmp_csv, &self.csv), (&tmp_json, &self.json), (&tmp_png, &self.png)] {
-            if let Err(e) = crate::io::commit_temp(tmp, path) {
+            if let Err(e) = crate::render::io::commit_temp(tmp, path) {
                 cleanup();
                 return Err(e);
             }
@@ -912,6 +912,7 @@ mod tests {
         }
         // the heat map of it renders
         let dir = tempfile::tempdir().unwrap();
-        crate::heatmap::render_png("map", &m.heatmap(Quantity::Power, "paper"), &dir.path().join("m.png")).unwrap();
+        crate::render::heatmap::render_png("map", &m.heatmap(Quantity::Power, "paper"), &dir.path().join("m.png"))
+            .unwrap();
     }
 }

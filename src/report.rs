@@ -13,15 +13,8 @@
 use serde::Deserialize;
 
 use crate::error::{Error, Result};
-use crate::experiments::fig4_energy;
-use crate::experiments::fig6_string_stiffness::{ks_values, X_TIP};
-use crate::experiments::speeds::{centre_setup, gain_pct, tip_setup, Setup};
-use crate::experiments::{converged, impact, paper_params, read_off_curve, CENTRE_X, V1_OFF_AXIS};
-use crate::model::beam::Beam;
-use crate::model::reduced::{clamped_drop, concrete_drop};
-use crate::params::{drop_speed, ks_from_tension_lb, Ball, Racket, Strings, DROP_HEIGHT_100_IN};
-use crate::solve::ImpactResult;
-use crate::table::fmt_sig;
+use crate::experiments::{self, Context, Ours, PaperClaim};
+use crate::render::table::fmt_sig;
 
 /// The claims file, compiled in.
 pub const CLAIMS_CSV: &str = include_str!("../golden/paper_claims.csv");
@@ -137,161 +130,31 @@ pub fn claims() -> Result<Vec<Claim>> {
         .collect()
 }
 
-/// Our numbers for one claim: (as the paper computes it, nearest node, converged).
-struct Ours(f64, Option<f64>, Option<f64>);
-
-/// Theta (deg) at (x, r 4 cm, 30 m/s) for a string stiffness, N = 39 node scheme.
-fn theta_r4(x: f64, ks: f64) -> Result<f64> {
-    let mut p = paper_params(x, ks);
-    p.impact.r = 0.04;
-    p.impact.v1 = V1_OFF_AXIS;
-    Ok(impact(&p)?.theta_end_deg)
+/// Our numbers for one claim, computed by the experiment the claim names, on the paper's
+/// racket.
+fn compute(claim: &Claim, ctx: &Context) -> Result<Ours> {
+    (computation(claim)?.ours)(ctx)
 }
 
-/// A centre quantity three ways: read off the node curve, at node 9, converged.
-fn centre_three(ks: f64, q: fn(&ImpactResult) -> f64) -> Result<Ours> {
-    let p = paper_params(CENTRE_X, ks);
-    Ok(Ours(read_off_curve(&p, CENTRE_X, q)?, Some(q(&impact(&p)?)), Some(q(&impact(&converged(p))?))))
-}
-
-fn compute(id: &str) -> Result<Ours> {
-    let ball = Ball::default();
-    let v_drop = drop_speed(DROP_HEIGHT_100_IN);
-    let paper_beam = || Beam::new(&Racket::default(), 39).modes();
-    let fine_beam = || Beam::new(&Racket::default(), 320).modes();
-    let lb50 = ks_from_tension_lb(50.0);
-    let plain = |v: f64| Ok(Ours(v, None, None));
-    match id {
-        "concrete_tau" => plain(concrete_drop(&ball, v_drop).tau_s * 1e3),
-        "concrete_e" => plain(concrete_drop(&ball, v_drop).e),
-        "ball_p_for_e_0_762" => plain(2.0 / (0.745_f64 + 0.017).powi(2) - 1.0),
-        "clamped_tau_ks2e4" => plain(clamped_drop(&ball, &Strings { ks: 2.0e4 }, v_drop).tau_s * 1e3),
-        "clamped_e_ks2e4" => plain(clamped_drop(&ball, &Strings { ks: 2.0e4 }, v_drop).e),
-        "clamped_tau_ks4e4" => plain(clamped_drop(&ball, &Strings { ks: 4.0e4 }, v_drop).tau_s * 1e3),
-        "clamped_e_ks4e4" => plain(clamped_drop(&ball, &Strings { ks: 4.0e4 }, v_drop).e),
-        "modes_f1" => Ok(Ours(paper_beam().frequency_hz(1), None, Some(fine_beam().frequency_hz(1)))),
-        "modes_period" => Ok(Ours(1e3 / paper_beam().frequency_hz(1), None, Some(1e3 / fine_beam().frequency_hz(1)))),
-        "modes_f2" => Ok(Ours(paper_beam().frequency_hz(2), None, Some(fine_beam().frequency_hz(2)))),
-        "modes_node" => {
-            let beam = Beam::new(&Racket::default(), 39);
-            plain(100.0 * beam.modes().node_positions(1, &beam.x)[0])
-        }
-        "modes_f1_ei384" => plain(Beam::new(&Racket { ei: 384.0, ..Racket::default() }, 39).modes().frequency_hz(1)),
-        "fig4_tau" | "fig4_e_a" | "fig4_ke_ball" => {
-            let q: fn(&ImpactResult) -> f64 = match id {
-                "fig4_tau" => |r| r.tau_s * 1e3,
-                "fig4_e_a" => |r| r.e_a,
-                _ => |r| r.f_ke_ball,
-            };
-            let p = fig4_energy::params();
-            Ok(Ours(q(&impact(&p)?), None, Some(q(&impact(&converged(p))?))))
-        }
-        "fig5_centre_e_a_soft" => centre_three(2.0e4, |r| r.e_a),
-        "fig5_centre_e_a_stiff" => centre_three(4.0e4, |r| r.e_a),
-        "fig5_centre_tau_soft" => centre_three(2.0e4, |r| r.tau_s * 1e3),
-        "fig5_centre_tau_stiff" => centre_three(4.0e4, |r| r.tau_s * 1e3),
-        "fig5_dead_spot" => {
-            // the smallest |e_A| a reader finds on the Fig 5(b) node curve in the outer 10 cm
-            let mut best = f64::INFINITY;
-            for i in 0..=5 {
-                let p = paper_params(0.71 * i as f64 / 39.0, 4.0e4);
-                best = best.min(impact(&p)?.e_a.abs());
-            }
-            plain(best)
-        }
-        "fig5_node_f_vib" => {
-            let p = paper_params(0.16, 4.0e4);
-            let q = |r: &ImpactResult| r.f_vib_peak_pe;
-            Ok(Ours(read_off_curve(&p, 0.16, q)?, Some(q(&impact(&p)?)), Some(q(&impact(&converged(p))?))))
-        }
-        "speeds_ks_half_e_a_gain" | "speeds_ks_half_serve_gain" | "speeds_ks_half_forehand_gain" => {
-            let (a, b) = (centre_setup(4.0e4)?, centre_setup(2.0e4)?);
-            plain(speed_gain(id, &a, &b))
-        }
-        "speeds_60_50_serve_gain" | "speeds_60_50_forehand_gain" => {
-            let (a, b) = (centre_setup(4.0e4)?, centre_setup(lb50)?);
-            plain(speed_gain(id, &a, &b))
-        }
-        "speeds_60_50_tau_change" => {
-            let (a, b) = (centre_setup(4.0e4)?, centre_setup(lb50)?);
-            plain((b.tau_s - a.tau_s) * 1e3)
-        }
-        "speeds_50_60_theta_change" => {
-            let (a, b) = (centre_setup(lb50)?, centre_setup(4.0e4)?);
-            plain(gain_pct(a.theta_deg, b.theta_deg))
-        }
-        "discussion_tau_ks_half" => {
-            let (a, b) = (centre_setup(4.0e4)?, centre_setup(2.0e4)?);
-            plain((b.tau_s - a.tau_s) * 1e3)
-        }
-        "discussion_angle_30_rad_s" => {
-            let (a, b) = (centre_setup(4.0e4)?, centre_setup(lb50)?);
-            plain((30.0 * (b.tau_s - a.tau_s)).to_degrees())
-        }
-        "intro_swing_angle" => plain((30.0 * centre_setup(4.0e4)?.tau_s).to_degrees()),
-        "fig8_theta_r4_50lb" => plain(centre_setup(lb50)?.theta_deg),
-        "fig8_theta_r4_60lb" => plain(centre_setup(4.0e4)?.theta_deg),
-        "speeds_50_60_tau_change" => {
-            let (a, b) = (centre_setup(lb50)?, centre_setup(4.0e4)?);
-            plain(gain_pct(a.tau_s, b.tau_s))
-        }
-        "strings_ks_40lb" => plain(ks_from_tension_lb(40.0)),
-        "strings_ks_80lb" => plain(ks_from_tension_lb(80.0)),
-        "fig7_theta_gain_ks_half" => plain(gain_pct(theta_r4(0.10, 4.0e4)?, theta_r4(0.10, 2.0e4)?)),
-        "fig8_theta_gain_ks_half" => plain(gain_pct(theta_r4(CENTRE_X, 4.0e4)?, theta_r4(CENTRE_X, 2.0e4)?)),
-        "conclusions_theta_cut_ks_double" => {
-            let (soft, stiff) = (theta_r4(CENTRE_X, 2.0e4)?, theta_r4(CENTRE_X, 4.0e4)?);
-            plain(100.0 * (1.0 - stiff / soft))
-        }
-        "fig6_vibration_gone_at_10ms" => {
-            // the paper's f(vib) at the stiffest k_s whose impact lasts at least 10 ms
-            let mut last = f64::NAN;
-            for ks in ks_values() {
-                let r = impact(&paper_params(X_TIP, ks))?;
-                if r.tau_s >= 0.010 {
-                    last = r.f_vib_peak_pe;
-                }
-            }
-            plain(last)
-        }
-        "fig9_e_a_ei150" | "fig9_e_a_ei384" => {
-            let mut p = paper_params(X_TIP, 4.0e4);
-            p.racket.ei = if id.ends_with("150") { 150.0 } else { 384.0 };
-            Ok(Ours(impact(&p)?.e_a, None, Some(impact(&converged(p))?.e_a)))
-        }
-        "fig9_serve_gain" => {
-            let (a, b) = (tip_setup(150.0)?, tip_setup(384.0)?);
-            plain(gain_pct(1.0 + a.e_a, 1.0 + b.e_a))
-        }
-        "serve_peak_force" => {
-            // a serve sending the ball off at 60 m/s from the centre (node 9): the relative
-            // speed is 60/(1+e_A) with that impact's own e_A (the model is linear in v1)
-            let mut p = paper_params(CENTRE_X, 4.0e4);
-            p.impact.v1 = 1.0;
-            let unit = impact(&p)?;
-            plain(unit.peak_force_n * 60.0 / (1.0 + unit.e_a))
-        }
-        other => Err(Error::invalid("claim id", other, "no computation is defined for this claim")),
-    }
-}
-
-fn speed_gain(id: &str, a: &Setup, b: &Setup) -> f64 {
-    if id.ends_with("e_a_gain") {
-        gain_pct(a.e_a, b.e_a)
-    } else if id.ends_with("serve_gain") {
-        gain_pct(1.0 + a.e_a, 1.0 + b.e_a)
-    } else {
-        gain_pct(1.0 + 2.0 * a.e_a, 1.0 + 2.0 * b.e_a)
-    }
+/// The experiment's computation of a claim.
+fn computation(claim: &Claim) -> Result<PaperClaim> {
+    let experiment = experiments::find(&claim.experiment)?;
+    experiment
+        .claims
+        .iter()
+        .find(|c| c.id == claim.id)
+        .copied()
+        .ok_or_else(|| Error::invalid("claim id", &claim.id, "no computation is defined for this claim"))
 }
 
 /// Compute every claim (in parallel; the order of the claims file is kept).
 pub fn evaluate() -> Result<Vec<Row>> {
     use rayon::prelude::*;
+    let ctx = Context::paper();
     claims()?
         .into_par_iter()
         .map(|claim| {
-            let Ours(ours, nearest_node, converged) = compute(&claim.id)?;
+            let Ours { value: ours, nearest_node, converged } = compute(&claim, &ctx)?;
             let paper = claim.paper_value()?;
             let (kind, tolerance) = claim.tolerance()?;
             let error = match kind {
@@ -379,8 +242,20 @@ pub fn check_claims_file() -> Result<Vec<Claim>> {
         if !(tol.is_finite() && tol > 0.0) {
             return Err(Error::invalid("tolerance", tol, format!("claim {} needs a tolerance > 0", c.id)));
         }
-        if crate::experiments::find(&c.experiment).is_err() {
+        if experiments::find(&c.experiment).is_err() {
             return Err(Error::invalid("experiment", &c.experiment, format!("claim {} names no experiment", c.id)));
+        }
+        computation(c)?;
+    }
+    for e in experiments::registry() {
+        for pc in e.claims {
+            if !claims.iter().any(|c| c.id == pc.id && c.experiment == e.id) {
+                return Err(Error::invalid(
+                    "claim id",
+                    pc.id,
+                    format!("experiment {} computes a claim that golden/paper_claims.csv does not list for it", e.id),
+                ));
+            }
         }
     }
     Ok(claims)

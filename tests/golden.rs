@@ -5,7 +5,7 @@
 
 use std::path::PathBuf;
 
-use racket_impact::experiments::{self, find};
+use racket_impact::experiments::{self, find, Context};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -13,7 +13,7 @@ fn root() -> PathBuf {
 
 fn check(id: &str) {
     let exp = find(id).unwrap();
-    let table = (exp.run)().unwrap();
+    let table = (exp.run)(&Context::paper()).unwrap();
     let csv = table.to_csv();
     assert!(!csv.contains("NaN") && !csv.contains("inf"), "{id}: non-finite value in the table");
     insta::with_settings!({snapshot_path => "../golden", prepend_module_to_snapshot => false, omit_expression => true}, {
@@ -104,13 +104,13 @@ fn committed_pngs_are_current_and_deterministic() {
     for e in experiments::registry() {
         let committed_csv = std::fs::read_to_string(root().join("figures").join(format!("{}.csv", e.id))).unwrap();
         // draw from the committed table (the golden tests check the table itself)
-        let table = (e.run)().unwrap();
+        let table = (e.run)(&Context::paper()).unwrap();
         assert_eq!(table.to_csv(), committed_csv, "{}: table changed", e.id);
-        let chart = (e.chart)(&table);
+        let chart = (e.chart)(&Context::paper(), &table);
         let a = dir.join(format!("{}-a.png", e.id));
         let b = dir.join(format!("{}-b.png", e.id));
-        racket_impact::plot::render_png(e.id, &chart, &a).unwrap();
-        racket_impact::plot::render_png(e.id, &chart, &b).unwrap();
+        racket_impact::render::plot::render_png(e.id, &chart, &a).unwrap();
+        racket_impact::render::plot::render_png(e.id, &chart, &b).unwrap();
         let (a, b) = (std::fs::read(a).unwrap(), std::fs::read(b).unwrap());
         assert_eq!(a, b, "{}: rendering is not deterministic", e.id);
         let committed = std::fs::read(root().join("figures").join(format!("{}.png", e.id))).unwrap();

@@ -8,12 +8,12 @@
 //! return it, so e rises towards 1 and the contact lasts longer; stiff strings tend to the
 //! concrete slab (dashed).
 
-use super::{col, line, log_space, on_right, scaled, styled, Experiment};
+use super::{col, line, log_space, on_right, scaled, styled, Context, Experiment, Ours, PaperClaim};
 use crate::error::Result;
-use crate::model::reduced::{clamped_drop, concrete_drop};
+use crate::model::reduced::{clamped_drop, concrete_drop, DropResult};
 use crate::params::{drop_speed, Ball, Strings, DROP_HEIGHT_100_IN};
-use crate::plot::{Chart, LineStyle, VLine};
-use crate::table::Table;
+use crate::render::plot::{Chart, LineStyle, VLine};
+use crate::render::table::Table;
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {
@@ -22,7 +22,18 @@ pub const EXPERIMENT: Experiment = Experiment {
     paper_ref: "p. 3, Ball parameters: ks 2e4 -> 6.98 ms, e 0.908; ks 4e4 -> 5.90 ms, e 0.866",
     run,
     chart,
+    claims: &[
+        PaperClaim { id: "clamped_tau_ks2e4", ours: |_| Ours::plain(drop_100_in(2.0e4).tau_s * 1e3) },
+        PaperClaim { id: "clamped_e_ks2e4", ours: |_| Ours::plain(drop_100_in(2.0e4).e) },
+        PaperClaim { id: "clamped_tau_ks4e4", ours: |_| Ours::plain(drop_100_in(4.0e4).tau_s * 1e3) },
+        PaperClaim { id: "clamped_e_ks4e4", ours: |_| Ours::plain(drop_100_in(4.0e4).e) },
+    ],
 };
+
+/// The paper's ball dropped 100 inches on the strings (`ks`, N/m) of a clamped racket.
+fn drop_100_in(ks: f64) -> DropResult {
+    clamped_drop(&Ball::default(), &Strings { ks }, drop_speed(DROP_HEIGHT_100_IN))
+}
 
 fn ks_values() -> Vec<f64> {
     let mut ks = log_space(1.0e3, 1.0e6, 31);
@@ -31,7 +42,7 @@ fn ks_values() -> Vec<f64> {
     ks
 }
 
-fn run() -> Result<Table> {
+fn run(_: &Context) -> Result<Table> {
     let ball = Ball::default();
     let v1 = drop_speed(DROP_HEIGHT_100_IN);
     let mut t = Table::new(EXPERIMENT.id, &["ks_n_per_m", "tau_s", "e", "y0_m", "peak_force_n"]);
@@ -42,7 +53,7 @@ fn run() -> Result<Table> {
     Ok(t)
 }
 
-fn chart(t: &Table) -> Chart {
+fn chart(_: &Context, t: &Table) -> Chart {
     let ks = col(t, "ks_n_per_m");
     let c = concrete_drop(&Ball::default(), drop_speed(DROP_HEIGHT_100_IN));
     let ends = vec![1.0e3, 1.0e6];

@@ -8,12 +8,12 @@
 //! the compression and the peak force grow with it. Overrides: none (k1 3e4 N/m, p 2.55,
 //! m_b 57 g).
 
-use super::{col, line, on_right, scaled, Experiment};
+use super::{col, line, on_right, scaled, Context, Experiment, Ours, PaperClaim};
 use crate::error::Result;
-use crate::model::reduced::concrete_drop;
+use crate::model::reduced::{concrete_drop, DropResult};
 use crate::params::{drop_speed, Ball, DROP_HEIGHT_100_IN};
-use crate::plot::{Chart, VLine};
-use crate::table::{fmt_sig, Table};
+use crate::render::plot::{Chart, VLine};
+use crate::render::table::{fmt_sig, Table};
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {
@@ -22,12 +22,23 @@ pub const EXPERIMENT: Experiment = Experiment {
     paper_ref: "p. 3, Ball parameters, Eqs 11-12: 100-inch drop, tau 4.64 ms, e 0.751",
     run,
     chart,
+    claims: &[
+        PaperClaim { id: "concrete_tau", ours: |_| Ours::plain(drop_100_in().tau_s * 1e3) },
+        PaperClaim { id: "concrete_e", ours: |_| Ours::plain(drop_100_in().e) },
+        // the p that gives e = 0.762 (the rules' upper limit of 0.745 + 0.017) by Eq 12
+        PaperClaim { id: "ball_p_for_e_0_762", ours: |_| Ours::plain(2.0 / (0.745_f64 + 0.017).powi(2) - 1.0) },
+    ],
 };
+
+/// The paper's ball dropped 100 inches on concrete.
+fn drop_100_in() -> DropResult {
+    concrete_drop(&Ball::default(), drop_speed(DROP_HEIGHT_100_IN))
+}
 
 /// Drop heights, m (2.54 m is the rules' 100 inches).
 const HEIGHTS: [f64; 9] = [0.25, 0.5, 1.0, 1.5, 2.0, DROP_HEIGHT_100_IN, 3.0, 4.0, 5.0];
 
-fn run() -> Result<Table> {
+fn run(_: &Context) -> Result<Table> {
     let ball = Ball::default();
     let mut t = Table::new(EXPERIMENT.id, &["height_m", "v1_m_per_s", "tau_s", "e", "y0_m", "peak_force_n"]);
     for h in HEIGHTS {
@@ -38,7 +49,7 @@ fn run() -> Result<Table> {
     Ok(t)
 }
 
-fn chart(t: &Table) -> Chart {
+fn chart(_: &Context, t: &Table) -> Chart {
     let h = col(t, "height_m");
     let d = concrete_drop(&Ball::default(), drop_speed(DROP_HEIGHT_100_IN));
     Chart {

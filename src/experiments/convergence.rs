@@ -9,12 +9,12 @@
 //! rows repeat the paper's N = 39 impact with multiples of the default step: the default is
 //! converged far below the discretisation error.
 
-use super::{col, fig4_energy, impact, line, styled, Experiment};
+use super::{col, fig4_energy, impact, line, styled, Context, Experiment};
 use crate::error::Result;
 use crate::params::{LoadRule, Params};
-use crate::plot::{Chart, LineStyle};
+use crate::render::plot::{Chart, LineStyle};
+use crate::render::table::{fmt_sig, Table};
 use crate::solve::Model;
-use crate::table::{fmt_sig, Table};
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {
@@ -23,6 +23,7 @@ pub const EXPERIMENT: Experiment = Experiment {
     paper_ref: "p. 4: 'The beam was numerically divided into N = 39 segments' (ours: how converged that is)",
     run,
     chart,
+    claims: &[],
 };
 
 /// Segment counts of the study.
@@ -30,25 +31,25 @@ pub const SEGMENTS: [usize; 9] = [20, 30, 39, 40, 60, 80, 120, 160, 320];
 /// Multiples of the default time step.
 pub const DT_FACTORS: [f64; 5] = [4.0, 2.0, 1.0, 0.5, 0.25];
 
-fn run() -> Result<Table> {
+fn run(ctx: &Context) -> Result<Table> {
     let mut t = Table::new(
         EXPERIMENT.id,
         &["study", "load", "segments", "dt_s", "x_load_m", "e_a", "tau_s", "theta_end_deg", "e_a_rel_to_reference"],
     );
-    let mut reference = fig4_energy::params();
+    let mut reference = fig4_energy::params(ctx);
     reference.numerics.load = LoadRule::Hat;
     reference.numerics.segments = 320;
     let e_ref = impact(&reference)?.e_a;
     let mut runs: Vec<(&str, Params)> = Vec::new();
     for load in [LoadRule::Node, LoadRule::Hat] {
         for n in SEGMENTS {
-            let mut p = fig4_energy::params();
+            let mut p = fig4_energy::params(ctx);
             p.numerics.load = load;
             p.numerics.segments = n;
             runs.push(("segments", p));
         }
     }
-    let paper = fig4_energy::params();
+    let paper = fig4_energy::params(ctx);
     let dt0 = Model::new(&paper)?.dt;
     for k in DT_FACTORS {
         let mut p = paper;
@@ -72,7 +73,7 @@ fn run() -> Result<Table> {
     Ok(t)
 }
 
-fn chart(t: &Table) -> Chart {
+fn chart(_: &Context, t: &Table) -> Chart {
     let seg = t.filter("study", "segments");
     let node = seg.filter("load", "node");
     let hat = seg.filter("load", "hat");

@@ -8,12 +8,12 @@
 //! and the string PE the paper lumps into "PE ball". Expect: KE ball falls to ~0 at maximum
 //! compression and ends at e_A^2 = 0.028; PE racket oscillates at twice 125 Hz after impact.
 
-use super::{col, line, scaled, styled, Experiment};
+use super::{col, converged, impact, line, scaled, styled, Context, Experiment, Ours, PaperClaim};
 use crate::error::Result;
 use crate::params::Params;
-use crate::plot::{Chart, LineStyle, VLine};
-use crate::solve::{Model, SeriesOptions};
-use crate::table::{fmt_sig, Table};
+use crate::render::plot::{Chart, LineStyle, VLine};
+use crate::render::table::{fmt_sig, Table};
+use crate::solve::{ImpactResult, Model, SeriesOptions};
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {
@@ -22,19 +22,30 @@ pub const EXPERIMENT: Experiment = Experiment {
     paper_ref: "Fig 4 and p. 4, Energy balance: tau 4.78 ms, e_A 0.166, KE ball 0.028",
     run,
     chart,
+    claims: &[
+        PaperClaim { id: "fig4_tau", ours: |ctx| fig4_claim(ctx, |r| r.tau_s * 1e3) },
+        PaperClaim { id: "fig4_e_a", ours: |ctx| fig4_claim(ctx, |r| r.e_a) },
+        PaperClaim { id: "fig4_ke_ball", ours: |ctx| fig4_claim(ctx, |r| r.f_ke_ball) },
+    ],
 };
 
+/// A quantity of the Fig 4 impact, with its converged value.
+fn fig4_claim(ctx: &Context, q: fn(&ImpactResult) -> f64) -> Result<Ours> {
+    let p = params(ctx);
+    Ok(Ours::new(q(&impact(&p)?), None, Some(q(&impact(&converged(p))?))))
+}
+
 /// The Fig 4 impact.
-pub fn params() -> Params {
-    let mut p = super::base_params();
+pub fn params(ctx: &Context) -> Params {
+    let mut p = ctx.base_params();
     p.impact.x = 0.10;
     p.impact.r = 0.05;
     p.strings.ks = 4.0e4;
     p
 }
 
-fn run() -> Result<Table> {
-    let model = Model::new(&params())?;
+fn run(ctx: &Context) -> Result<Table> {
+    let model = Model::new(&params(ctx))?;
     let (r, rows) = model.run_with_series(SeriesOptions { sample_dt: 5.0e-5, t_end: 0.025 })?;
     let r = super::checked(&model.params, r)?;
     let mut t = Table::new(
@@ -71,7 +82,7 @@ fn run() -> Result<Table> {
     Ok(t)
 }
 
-fn chart(t: &Table) -> Chart {
+fn chart(_: &Context, t: &Table) -> Chart {
     let ms = scaled(col(t, "t_s"), 1e3);
     let tau_ms = col(t, "tau_s").first().copied().unwrap_or(f64::NAN) * 1e3;
     let e_a = col(t, "e_a").first().copied().unwrap_or(f64::NAN);

@@ -6,20 +6,33 @@
 //! essentially to zero if the stiffness is reduced sufficiently so that the impact duration
 //! exceeds about 10 ms"; e_A rises as k_s falls.
 
-use super::fig5_position::{sweep_curves, sweep_values, COLUMNS};
-use super::{col, log_space, paper_params, sweep, Experiment};
+use super::position::{sweep_curves, sweep_values, COLUMNS};
+use super::{col, impact, log_space, sweep, Context, Experiment, Ours, PaperClaim};
 use crate::error::Result;
-use crate::plot::Chart;
-use crate::table::Table;
+use crate::render::plot::Chart;
+use crate::render::table::Table;
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {
     id: "fig6_string_stiffness",
     title: "e_A, f(ball), f(vib) and tau against ks at x 6 cm, r 0 (EI 150)",
     paper_ref: "Fig 6 and p. 5-6: vibration ~0 once tau exceeds ~10 ms",
-    run: || stiffness_sweep(EXPERIMENT.id, &[super::frame_ei(150.0)]),
-    chart: |t| stiffness_chart(t, "Fig 6: string stiffness, x 6 cm, r 0, EI 150 N m^2 (125 Hz)", None),
+    run: |ctx| stiffness_sweep(ctx, EXPERIMENT.id, &[ctx.frame_ei(150.0)]),
+    chart: |_, t| stiffness_chart(t, "Fig 6: string stiffness, x 6 cm, r 0, EI 150 N m^2 (125 Hz)", None),
+    claims: &[PaperClaim { id: "fig6_vibration_gone_at_10ms", ours: vibration_gone_at_10ms }],
 };
+
+/// The paper's f(vib) at the stiffest k_s whose impact lasts at least 10 ms.
+fn vibration_gone_at_10ms(ctx: &Context) -> Result<Ours> {
+    let mut last = f64::NAN;
+    for ks in ks_values() {
+        let r = impact(&ctx.paper_params(X_TIP, ks))?;
+        if r.tau_s >= 0.010 {
+            last = r.f_vib_peak_pe;
+        }
+    }
+    Ours::plain(last)
+}
 
 /// Impact position of Figs 6 and 9, m from the tip.
 pub const X_TIP: f64 = 0.06;
@@ -30,7 +43,7 @@ pub fn ks_values() -> Vec<f64> {
 }
 
 /// Sweep k_s at x = 6 cm for each frame stiffness.
-pub fn stiffness_sweep(id: &str, eis: &[f64]) -> Result<Table> {
+pub fn stiffness_sweep(ctx: &Context, id: &str, eis: &[f64]) -> Result<Table> {
     let mut cols = vec!["ei_n_m2", "ks_n_per_m"];
     cols.extend(COLUMNS);
     let mut t = Table::new(id, &cols);
@@ -38,7 +51,7 @@ pub fn stiffness_sweep(id: &str, eis: &[f64]) -> Result<Table> {
         let params: Vec<_> = ks_values()
             .into_iter()
             .map(|ks| {
-                let mut p = paper_params(X_TIP, ks);
+                let mut p = ctx.paper_params(X_TIP, ks);
                 p.racket.ei = ei;
                 p
             })
@@ -63,7 +76,7 @@ pub fn stiffness_chart(t: &Table, title: &str, faint_ei: Option<f64>) -> Chart {
         let faint = t.filter_num("ei_n_m2", f);
         for mut c in sweep_curves(col(&faint, "ks_n_per_m"), &faint) {
             c.label = format!("{} (EI {f})", c.label);
-            c.style = crate::plot::LineStyle::Faint;
+            c.style = crate::render::plot::LineStyle::Faint;
             curves.push(c);
         }
     }

@@ -6,20 +6,40 @@
 //! larger: "at k_s = 4e4, e_A is increased from 0.10 to 0.18, which translates ... to a 7%
 //! increase in serve speed".
 
-use super::fig6_string_stiffness::{stiffness_chart, stiffness_sweep};
-use super::Experiment;
+use super::fig6_string_stiffness::{stiffness_chart, stiffness_sweep, X_TIP};
+use super::speeds::{gain_pct, tip_setup};
+use super::{converged, impact, Context, Experiment, Ours, PaperClaim};
+use crate::error::Result;
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {
     id: "fig9_stiff_frame",
     title: "Fig 6 for a wide-body frame, EI 384 N m^2 (200 Hz), with EI 150 for comparison",
     paper_ref: "Fig 9 and p. 6: at ks 4e4, e_A 0.10 -> 0.18, serve speed +7 %",
-    run: || stiffness_sweep(EXPERIMENT.id, &[super::frame_ei(384.0), super::frame_ei(150.0)]),
-    chart: |t| {
+    run: |ctx| stiffness_sweep(ctx, EXPERIMENT.id, &[ctx.frame_ei(384.0), ctx.frame_ei(150.0)]),
+    chart: |ctx, t| {
         stiffness_chart(
             t,
             "Fig 9: stiff frame EI 384 N m^2 (200 Hz), x 6 cm, r 0; faint: EI 150",
-            Some(super::frame_ei(150.0)),
+            Some(ctx.frame_ei(150.0)),
         )
     },
+    claims: &[
+        PaperClaim { id: "fig9_e_a_ei150", ours: |ctx| e_a_at_tip(ctx, 150.0) },
+        PaperClaim { id: "fig9_e_a_ei384", ours: |ctx| e_a_at_tip(ctx, 384.0) },
+        PaperClaim { id: "fig9_serve_gain", ours: serve_gain },
+    ],
 };
+
+/// e_A at 6 cm, k_s 4e4, for a frame of bending stiffness `ei` (N m^2), with its converged value.
+fn e_a_at_tip(ctx: &Context, ei: f64) -> Result<Ours> {
+    let mut p = ctx.paper_params(X_TIP, 4.0e4);
+    p.racket.ei = ei;
+    Ok(Ours::new(impact(&p)?.e_a, None, Some(impact(&converged(p))?.e_a)))
+}
+
+/// The serve speed gain of the EI 384 frame over the EI 150 one at 6 cm, %.
+fn serve_gain(ctx: &Context) -> Result<Ours> {
+    let (a, b) = (tip_setup(ctx, 150.0)?, tip_setup(ctx, 384.0)?);
+    Ours::plain(gain_pct(1.0 + a.e_a, 1.0 + b.e_a))
+}

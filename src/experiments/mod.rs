@@ -1,7 +1,8 @@
 //! One module per result of the paper. Each experiment has an id, a title and a paper
-//! reference, a function that runs the solver and returns one [`Table`], and a function that
-//! turns that table into a [`Chart`]. One experiment = one file = one id = one CSV + one PNG
-//! + one golden snapshot.
+//! reference, a function that runs the solver on a racket ([`Context`]) and returns one
+//! [`Table`], a function that turns that table into a [`Chart`], and the paper's claims it
+//! checks ([`PaperClaim`], collected by [`crate::report`]). One experiment = one file = one
+//! id = one CSV + one PNG + one golden snapshot.
 //!
 //! | id | paper | module |
 //! |---|---|---|
@@ -9,50 +10,58 @@
 //! | `clamped_drop` | p. 3: drop on the strings of a head-clamped racket | [`clamped_drop`] |
 //! | `modes` | p. 3-4: 125 Hz, 345 Hz, node 16 cm; wide body 200 Hz | [`modes`] |
 //! | `fig4_energy` | Fig 4: energy partition, x 10 cm, r 5 cm, ks 4e4 | [`fig4_energy`] |
-//! | `fig5a_position_soft`, `fig5b_position_stiff` | Fig 5 (a), (b) | [`fig5_position`] |
+//! | `fig5a_position_soft` | Fig 5 (a) | [`fig5a_position_soft`] |
+//! | `fig5b_position_stiff` | Fig 5 (b) | [`fig5b_position_stiff`] |
 //! | `fig6_string_stiffness` | Fig 6 | [`fig6_string_stiffness`] |
-//! | `fig7_off_axis_x10`, `fig8_off_axis_centre` | Figs 7, 8 | [`fig78_off_axis`] |
+//! | `fig7_off_axis_x10` | Fig 7 | [`fig7_off_axis_x10`] |
+//! | `fig8_off_axis_centre` | Fig 8 | [`fig8_off_axis_centre`] |
 //! | `fig9_stiff_frame` | Fig 9 | [`fig9_stiff_frame`] |
 //! | `speeds` | p. 5-6 and Conclusions: serve / forehand gains | [`speeds`] |
 //! | `convergence` | (ours) the paper's N = 39 node scheme against converged numerics | [`convergence`] |
-//! | `variant_rigid`, `variant_grip`, `variant_strings` | (ours) rigid frame, hand grip, stiffening strings against the paper's model | [`variants`] |
+//! | `variant_rigid` | (ours) rigid frame against the paper's beam | [`variant_rigid`] |
+//! | `variant_grip` | (ours) hand grip against the paper's free racket | [`variant_grip`] |
+//! | `variant_strings` | (ours) stiffening strings against the paper's linear strings | [`variant_strings`] |
 //!
 //! All paper experiments use the paper's numerics (`node` load, N = 39) as SPEC.md asks;
-//! `convergence` shows what that costs.
+//! `convergence` shows what that costs. Shared pieces: [`setup`] (the racket an experiment runs
+//! on and the paper's impact parameters), [`curves`] (chart helpers), [`claims`] (a claim as an
+//! experiment carries it), [`position`], [`off_axis`] and [`variants`] (what two or three
+//! experiments share).
 
 use std::path::Path;
 
 use crate::error::{Error, Result};
-use crate::params::{Ball, LoadRule, Params, Racket};
-use crate::plot::Chart;
-use crate::solve::{simulate, ImpactResult};
+use crate::render::plot::Chart;
+use crate::render::table::{Table, Value};
 
-/// One impact for an experiment: as [`simulate`], but a re-contact after separation (which the
-/// model does not follow) is an error rather than a number in a paper figure.
-pub fn impact(p: &Params) -> Result<ImpactResult> {
-    checked(p, simulate(p)?)
-}
-
-/// Refuse a result with a re-contact.
-pub fn checked(p: &Params, r: ImpactResult) -> Result<ImpactResult> {
-    if r.recontact {
-        return Err(Error::Recontact { x: p.impact.x, r: p.impact.r, ks: p.strings.ks });
-    }
-    Ok(r)
-}
-use crate::table::Table;
+pub mod claims;
+pub mod curves;
+pub mod setup;
 
 pub mod clamped_drop;
 pub mod concrete_drop;
 pub mod convergence;
 pub mod fig4_energy;
-pub mod fig5_position;
+pub mod fig5a_position_soft;
+pub mod fig5b_position_stiff;
 pub mod fig6_string_stiffness;
-pub mod fig78_off_axis;
+pub mod fig7_off_axis_x10;
+pub mod fig8_off_axis_centre;
 pub mod fig9_stiff_frame;
 pub mod modes;
+pub mod off_axis;
+pub mod position;
 pub mod speeds;
+pub mod variant_grip;
+pub mod variant_rigid;
+pub mod variant_strings;
 pub mod variants;
+
+pub use claims::{Ours, PaperClaim};
+pub use curves::{col, line, on_right, scaled, styled};
+pub use setup::{
+    checked, converged, impact, log_space, node_positions, read_off_curve, sweep, Context, CENTRE_X, V1_OFF_AXIS,
+};
 
 /// A registered experiment.
 #[derive(Clone, Copy)]
@@ -63,10 +72,13 @@ pub struct Experiment {
     pub title: &'static str,
     /// Where in the paper the result is (figure / page / sentence).
     pub paper_ref: &'static str,
-    /// Run the solver and return the table.
-    pub run: fn() -> Result<Table>,
-    /// Draw the table.
-    pub chart: fn(&Table) -> Chart,
+    /// Run the solver on the context's racket and return the table.
+    pub run: fn(&Context) -> Result<Table>,
+    /// Draw the table (made on the same context).
+    pub chart: fn(&Context, &Table) -> Chart,
+    /// The paper's claims this experiment checks (their rows in `golden/paper_claims.csv`
+    /// name this experiment).
+    pub claims: &'static [PaperClaim],
 }
 
 impl std::fmt::Debug for Experiment {
@@ -82,17 +94,17 @@ pub fn registry() -> Vec<Experiment> {
         clamped_drop::EXPERIMENT,
         modes::EXPERIMENT,
         fig4_energy::EXPERIMENT,
-        fig5_position::SOFT,
-        fig5_position::STIFF,
+        fig5a_position_soft::EXPERIMENT,
+        fig5b_position_stiff::EXPERIMENT,
         fig6_string_stiffness::EXPERIMENT,
-        fig78_off_axis::X10,
-        fig78_off_axis::CENTRE,
+        fig7_off_axis_x10::EXPERIMENT,
+        fig8_off_axis_centre::EXPERIMENT,
         fig9_stiff_frame::EXPERIMENT,
         speeds::EXPERIMENT,
         convergence::EXPERIMENT,
-        variants::RIGID,
-        variants::GRIP,
-        variants::STRINGS,
+        variant_rigid::EXPERIMENT,
+        variant_grip::EXPERIMENT,
+        variant_strings::EXPERIMENT,
     ]
 }
 
@@ -101,9 +113,9 @@ pub fn find(id: &str) -> Result<Experiment> {
     registry().into_iter().find(|e| e.id == id).ok_or_else(|| Error::UnknownExperiment(id.to_string()))
 }
 
-/// Run one experiment and write `<out>/<id>.csv` and `<out>/<id>.png` (atomically).
-pub fn run_and_write(exp: &Experiment, out: &Path) -> Result<Table> {
-    let table = (exp.run)()?;
+/// Run one experiment on `ctx` and write `<out>/<id>.csv` and `<out>/<id>.png` (atomically).
+pub fn run_and_write(exp: &Experiment, ctx: &Context, out: &Path) -> Result<Table> {
+    let table = (exp.run)(ctx)?;
     if let Some((row, col)) = first_non_finite(&table) {
         return Err(Error::invalid(
             "table",
@@ -111,140 +123,14 @@ pub fn run_and_write(exp: &Experiment, out: &Path) -> Result<Table> {
             "every number in an experiment table must be finite",
         ));
     }
-    crate::io::write_atomic(&out.join(format!("{}.csv", exp.id)), table.to_csv().as_bytes())?;
-    crate::plot::render_png(exp.id, &(exp.chart)(&table), &out.join(format!("{}.png", exp.id)))?;
+    crate::render::io::write_atomic(&out.join(format!("{}.csv", exp.id)), table.to_csv().as_bytes())?;
+    crate::render::plot::render_png(exp.id, &(exp.chart)(ctx, &table), &out.join(format!("{}.png", exp.id)))?;
     Ok(table)
 }
 
 /// The first non-finite number in a table: (row, column name).
 pub fn first_non_finite(t: &Table) -> Option<(usize, String)> {
     t.rows.iter().enumerate().find_map(|(i, row)| {
-        row.iter()
-            .position(|v| matches!(v, crate::table::Value::Num(x) if !x.is_finite()))
-            .map(|j| (i, t.columns[j].clone()))
+        row.iter().position(|v| matches!(v, Value::Num(x) if !x.is_finite())).map(|j| (i, t.columns[j].clone()))
     })
-}
-
-/// "Centre of the strings": the node of mode 1 as the paper places it, m from the tip.
-pub const CENTRE_X: f64 = 0.158;
-/// Incident speed of Figs 7-8, m/s.
-pub const V1_OFF_AXIS: f64 = 30.0;
-
-/// The racket and ball the experiments run on: the paper's, unless `figures --racket` chose
-/// another (see [`use_racket`]).
-static RACKET: std::sync::RwLock<Option<(Racket, Ball)>> = std::sync::RwLock::new(None);
-
-/// Run the experiments on another racket and ball (`None`: the paper's). The paper's figures
-/// place impacts along the whole length, as the paper does, so the racket's head outline is
-/// not applied (the face is the strip `|r| <= half-width`, at least the paper's 12.5 cm). The
-/// paper-number report always uses the paper's racket.
-pub fn use_racket(racket: Option<(Racket, Ball)>) {
-    let racket = racket.map(|(mut r, b)| {
-        r.head_length = None;
-        r.half_width = r.half_width.max(Racket::default().half_width);
-        (r, b)
-    });
-    *RACKET.write().unwrap_or_else(|e| e.into_inner()) = racket;
-}
-
-/// The paper's parameters (the Fig 4 impact, node load, N = 39) on the chosen racket.
-pub fn base_params() -> Params {
-    let mut p = Params::paper();
-    if let Some((racket, ball)) = *RACKET.read().unwrap_or_else(|e| e.into_inner()) {
-        p.racket = racket;
-        p.ball = ball;
-    }
-    p
-}
-
-/// The bending stiffness standing for the paper's `paper_ei` (N m^2) on the chosen racket: the
-/// same ratio to the racket's own EI as `paper_ei` has to the paper's 150 N m^2 (exactly
-/// `paper_ei` for the paper's racket), so the frame comparisons of Figs 6 and 9 become "your
-/// frame, and your frame 2.56 times stiffer".
-pub fn frame_ei(paper_ei: f64) -> f64 {
-    base_params().racket.ei * paper_ei / Racket::default().ei
-}
-
-/// The paper's racket, ball and numerics (node load, N = 39) with an impact on the long axis.
-pub fn paper_params(x: f64, ks: f64) -> Params {
-    let mut p = base_params();
-    p.impact.x = x;
-    p.impact.r = 0.0;
-    p.strings.ks = ks;
-    p
-}
-
-/// The same racket with converged numerics: `hat` load on N = 320 segments.
-pub fn converged(mut p: Params) -> Params {
-    p.numerics.load = LoadRule::Hat;
-    p.numerics.segments = 320;
-    p
-}
-
-/// Positions of the N+1 nodes of the paper's beam, m from the tip.
-pub fn node_positions(p: &Params) -> Vec<f64> {
-    let n = p.numerics.segments;
-    (0..=n).map(|i| p.racket.length * i as f64 / n as f64).collect()
-}
-
-/// A quantity of the node-scheme curve read off at `x` the way a reader of the printed figure
-/// would: by linear interpolation between the two nodes around `x` (SPEC.md section 4).
-pub fn read_off_curve(p: &Params, x: f64, quantity: impl Fn(&ImpactResult) -> f64) -> Result<f64> {
-    let s = p.racket.length / p.numerics.segments as f64;
-    let j = ((x / s).floor() as usize).min(p.numerics.segments - 1);
-    let w = x / s - j as f64;
-    let at = |i: usize| -> Result<f64> {
-        let mut q = *p;
-        q.numerics.load = LoadRule::Node;
-        q.impact.x = i as f64 * s;
-        impact(&q).map(|r| quantity(&r))
-    };
-    Ok((1.0 - w) * at(j)? + w * at(j + 1)?)
-}
-
-/// Run [`impact`] for each parameter set, in parallel, results in the order given.
-pub fn sweep(params: &[Params]) -> Result<Vec<ImpactResult>> {
-    use rayon::prelude::*;
-    params.par_iter().map(impact).collect()
-}
-
-/// `n` log-spaced values from `a` to `b` inclusive.
-pub fn log_space(a: f64, b: f64, n: usize) -> Vec<f64> {
-    let (la, lb) = (a.log10(), b.log10());
-    (0..n).map(|i| 10f64.powf(la + (lb - la) * i as f64 / (n - 1) as f64)).collect()
-}
-
-/// A solid curve on the left axis.
-pub fn line(label: impl Into<String>, x: Vec<f64>, y: Vec<f64>, color: usize) -> crate::plot::Curve {
-    crate::plot::Curve {
-        label: label.into(),
-        x,
-        y,
-        axis: crate::plot::Axis::Left,
-        style: crate::plot::LineStyle::Solid,
-        color,
-    }
-}
-
-/// The same curve on the right axis.
-pub fn on_right(mut c: crate::plot::Curve) -> crate::plot::Curve {
-    c.axis = crate::plot::Axis::Right;
-    c
-}
-
-/// The same curve in another style.
-pub fn styled(mut c: crate::plot::Curve, style: crate::plot::LineStyle) -> crate::plot::Curve {
-    c.style = style;
-    c
-}
-
-/// A column of a table produced by this crate (the experiments name their own columns, so a
-/// missing one is a programming error caught by the snapshot tests).
-pub fn col(t: &Table, name: &str) -> Vec<f64> {
-    t.column(name).unwrap_or_else(|| vec![f64::NAN; t.rows.len()])
-}
-
-/// Multiply every value by `k` (unit changes for plotting, e.g. s -> ms).
-pub fn scaled(v: Vec<f64>, k: f64) -> Vec<f64> {
-    v.into_iter().map(|x| x * k).collect()
 }

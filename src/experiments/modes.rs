@@ -8,12 +8,12 @@
 //! `K phi = omega^2 M phi`. A uniform beam's mode shapes do not depend on EI (all frequencies
 //! scale with sqrt(EI)), so the shapes are drawn once with both frequencies in the legend.
 
-use super::{col, line, Experiment};
+use super::{col, line, Context, Experiment, Ours, PaperClaim};
 use crate::error::Result;
-use crate::model::beam::Beam;
+use crate::model::beam::{Beam, Modes};
 use crate::params::Racket;
-use crate::plot::{Chart, VLine};
-use crate::table::{fmt_sig, Table};
+use crate::render::plot::{Chart, VLine};
+use crate::render::table::{fmt_sig, Table};
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {
@@ -22,16 +22,51 @@ pub const EXPERIMENT: Experiment = Experiment {
     paper_ref: "p. 3-4, Racket parameters: 125 Hz (EI 150), 345 Hz, node 16 cm; Fig 9: 200 Hz (EI 384)",
     run,
     chart,
+    claims: &[
+        PaperClaim {
+            id: "modes_f1",
+            ours: |_| Ok(Ours::new(paper_beam().frequency_hz(1), None, Some(fine_beam().frequency_hz(1)))),
+        },
+        PaperClaim {
+            id: "modes_period",
+            ours: |_| Ok(Ours::new(1e3 / paper_beam().frequency_hz(1), None, Some(1e3 / fine_beam().frequency_hz(1)))),
+        },
+        PaperClaim {
+            id: "modes_f2",
+            ours: |_| Ok(Ours::new(paper_beam().frequency_hz(2), None, Some(fine_beam().frequency_hz(2)))),
+        },
+        PaperClaim { id: "modes_node", ours: node_cm },
+        PaperClaim {
+            id: "modes_f1_ei384",
+            ours: |_| Ours::plain(Beam::new(&Racket { ei: 384.0, ..Racket::default() }, 39).modes().frequency_hz(1)),
+        },
+    ],
 };
+
+/// The paper's beam (N = 39) and its modes.
+fn paper_beam() -> Modes {
+    Beam::new(&Racket::default(), 39).modes()
+}
+
+/// The paper's racket on a converged beam (N = 320) and its modes.
+fn fine_beam() -> Modes {
+    Beam::new(&Racket::default(), 320).modes()
+}
+
+/// The node of the fundamental mode, cm from the tip.
+fn node_cm(_: &Context) -> Result<Ours> {
+    let beam = Beam::new(&Racket::default(), 39);
+    Ours::plain(100.0 * beam.modes().node_positions(1, &beam.x)[0])
+}
 
 /// Bending stiffnesses of the paper's two frames, N m^2.
 pub const EI_VALUES: [f64; 2] = [150.0, 384.0];
 const MODES: usize = 4;
 
-fn run() -> Result<Table> {
-    let base = super::base_params().racket;
+fn run(ctx: &Context) -> Result<Table> {
+    let base = ctx.base_params().racket;
     let beams: Vec<Beam> =
-        EI_VALUES.iter().map(|&ei| Beam::new(&Racket { ei: super::frame_ei(ei), ..base }, 39)).collect();
+        EI_VALUES.iter().map(|&ei| Beam::new(&Racket { ei: ctx.frame_ei(ei), ..base }, 39)).collect();
     let modes: Vec<_> = beams.iter().map(Beam::modes).collect();
     let mut t = Table::new(EXPERIMENT.id, &["mode", "x_m", "shape", "frequency_ei150_hz", "frequency_ei384_hz"]);
     for k in 1..=MODES {
@@ -48,7 +83,7 @@ fn run() -> Result<Table> {
     Ok(t)
 }
 
-fn chart(t: &Table) -> Chart {
+fn chart(_: &Context, t: &Table) -> Chart {
     let mode = col(t, "mode");
     let mut curves = Vec::new();
     let mut vlines = Vec::new();

@@ -15,12 +15,13 @@
 //! node 9). The `frame` rows compare EI 150 and 384 at x = 6 cm, k_s 4e4 (Figs 6, 9).
 
 use super::{
-    fig6_string_stiffness::X_TIP, impact, line, paper_params, read_off_curve, Experiment, CENTRE_X, V1_OFF_AXIS,
+    fig6_string_stiffness::X_TIP, impact, line, read_off_curve, Context, Experiment, Ours, PaperClaim, CENTRE_X,
+    V1_OFF_AXIS,
 };
 use crate::error::Result;
 use crate::params::{ks_from_tension_lb, Params};
-use crate::plot::{Chart, LineStyle, VLine};
-use crate::table::{fmt_sig, Table};
+use crate::render::plot::{Chart, LineStyle, VLine};
+use crate::render::table::{fmt_sig, Table};
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {
@@ -29,7 +30,70 @@ pub const EXPERIMENT: Experiment = Experiment {
     paper_ref: "p. 5-6 and Conclusions: ks x2 -> e_A +7 %, serve +2 %, forehand +3.3 %; 60 -> 50 lb: +0.7 %, +1.1 %",
     run,
     chart,
+    claims: &[
+        PaperClaim { id: "speeds_ks_half_e_a_gain", ours: |c| compare(c, 4.0e4, 2.0e4, |a, b| gain_pct(a.e_a, b.e_a)) },
+        PaperClaim { id: "speeds_ks_half_serve_gain", ours: |c| compare(c, 4.0e4, 2.0e4, serve_gain) },
+        PaperClaim { id: "speeds_ks_half_forehand_gain", ours: |c| compare(c, 4.0e4, 2.0e4, forehand_gain) },
+        PaperClaim { id: "speeds_60_50_serve_gain", ours: |c| compare(c, 4.0e4, lb(50.0), serve_gain) },
+        PaperClaim { id: "speeds_60_50_forehand_gain", ours: |c| compare(c, 4.0e4, lb(50.0), forehand_gain) },
+        PaperClaim { id: "speeds_60_50_tau_change", ours: |c| compare(c, 4.0e4, lb(50.0), tau_change_ms) },
+        PaperClaim {
+            id: "speeds_50_60_theta_change",
+            ours: |c| compare(c, lb(50.0), 4.0e4, |a, b| gain_pct(a.theta_deg, b.theta_deg)),
+        },
+        PaperClaim {
+            id: "speeds_50_60_tau_change",
+            ours: |c| compare(c, lb(50.0), 4.0e4, |a, b| gain_pct(a.tau_s, b.tau_s)),
+        },
+        PaperClaim { id: "discussion_tau_ks_half", ours: |c| compare(c, 4.0e4, 2.0e4, tau_change_ms) },
+        PaperClaim {
+            id: "discussion_angle_30_rad_s",
+            ours: |c| compare(c, 4.0e4, lb(50.0), |a, b| (30.0 * (b.tau_s - a.tau_s)).to_degrees()),
+        },
+        PaperClaim {
+            id: "intro_swing_angle",
+            ours: |c| Ours::plain((30.0 * centre_setup(c, 4.0e4)?.tau_s).to_degrees()),
+        },
+        PaperClaim { id: "serve_peak_force", ours: serve_peak_force },
+        PaperClaim { id: "strings_ks_40lb", ours: |_| Ours::plain(lb(40.0)) },
+        PaperClaim { id: "strings_ks_80lb", ours: |_| Ours::plain(lb(80.0)) },
+    ],
 };
+
+/// k_s for a string tension in lb.
+fn lb(tension_lb: f64) -> f64 {
+    ks_from_tension_lb(tension_lb)
+}
+
+/// A comparison of the centre setups of two string stiffnesses (N/m): `f(a, b)`.
+fn compare(ctx: &Context, ks_a: f64, ks_b: f64, f: fn(&Setup, &Setup) -> f64) -> Result<Ours> {
+    let (a, b) = (centre_setup(ctx, ks_a)?, centre_setup(ctx, ks_b)?);
+    Ours::plain(f(&a, &b))
+}
+
+/// Serve speed gain of `b` over `a`, %.
+fn serve_gain(a: &Setup, b: &Setup) -> f64 {
+    gain_pct(1.0 + a.e_a, 1.0 + b.e_a)
+}
+
+/// Forehand speed gain of `b` over `a`, %.
+fn forehand_gain(a: &Setup, b: &Setup) -> f64 {
+    gain_pct(1.0 + 2.0 * a.e_a, 1.0 + 2.0 * b.e_a)
+}
+
+/// Impact duration of `b` less that of `a`, ms.
+fn tau_change_ms(a: &Setup, b: &Setup) -> f64 {
+    (b.tau_s - a.tau_s) * 1e3
+}
+
+/// The peak force of a serve sending the ball off at 60 m/s from the centre (node 9): the
+/// relative speed is 60/(1+e_A) with that impact's own e_A (the model is linear in v1).
+fn serve_peak_force(ctx: &Context) -> Result<Ours> {
+    let mut p = ctx.paper_params(CENTRE_X, 4.0e4);
+    p.impact.v1 = 1.0;
+    let unit = impact(&p)?;
+    Ours::plain(unit.peak_force_n * 60.0 / (1.0 + unit.e_a))
+}
 
 /// Reference tension, lb.
 pub const REF_TENSION_LB: f64 = 60.0;
@@ -49,8 +113,8 @@ pub struct Setup {
 
 /// e_A, tau (read off the node-scheme curve at the centre) and theta (r 4 cm, 30 m/s, Fig 8)
 /// for a string stiffness.
-pub fn centre_setup(ks: f64) -> Result<Setup> {
-    let p = paper_params(CENTRE_X, ks);
+pub fn centre_setup(ctx: &Context, ks: f64) -> Result<Setup> {
+    let p = ctx.paper_params(CENTRE_X, ks);
     let mut q = p;
     q.impact.r = 0.04;
     q.impact.v1 = V1_OFF_AXIS;
@@ -63,8 +127,8 @@ pub fn centre_setup(ks: f64) -> Result<Setup> {
 
 /// e_A and tau at 6 cm (Figs 6, 9) for a frame stiffness, k_s 4e4, and theta there for
 /// r = 4 cm at 30 m/s.
-pub fn tip_setup(ei: f64) -> Result<Setup> {
-    let mut p: Params = paper_params(X_TIP, 4.0e4);
+pub fn tip_setup(ctx: &Context, ei: f64) -> Result<Setup> {
+    let mut p: Params = ctx.paper_params(X_TIP, 4.0e4);
     p.racket.ei = ei;
     let r = impact(&p)?;
     p.impact.r = 0.04;
@@ -85,7 +149,7 @@ pub fn gain_pct(a: f64, b: f64) -> f64 {
     100.0 * (b / a - 1.0)
 }
 
-fn run() -> Result<Table> {
+fn run(ctx: &Context) -> Result<Table> {
     let mut t = Table::new(
         EXPERIMENT.id,
         &[
@@ -104,15 +168,15 @@ fn run() -> Result<Table> {
             "theta_change_pct",
         ],
     );
-    let reference = centre_setup(ks_from_tension_lb(REF_TENSION_LB))?;
+    let reference = centre_setup(ctx, ks_from_tension_lb(REF_TENSION_LB))?;
     for lb in TENSIONS_LB {
         let ks = ks_from_tension_lb(lb);
-        let s = centre_setup(ks)?;
-        push(&mut t, "tension", lb, ks, super::frame_ei(150.0), CENTRE_X, &reference, &s)?;
+        let s = centre_setup(ctx, ks)?;
+        push(&mut t, "tension", lb, ks, ctx.frame_ei(150.0), CENTRE_X, &reference, &s)?;
     }
-    let flexible = tip_setup(super::frame_ei(150.0))?;
-    for ei in [150.0, 384.0].map(super::frame_ei) {
-        let s = tip_setup(ei)?;
+    let flexible = tip_setup(ctx, ctx.frame_ei(150.0))?;
+    for ei in [150.0, 384.0].map(|e| ctx.frame_ei(e)) {
+        let s = tip_setup(ctx, ei)?;
         push(&mut t, "frame", REF_TENSION_LB, 4.0e4, ei, X_TIP, &flexible, &s)?;
     }
     Ok(t)
@@ -137,7 +201,7 @@ fn push(t: &mut Table, group: &str, lb: f64, ks: f64, ei: f64, x: f64, a: &Setup
     ])
 }
 
-fn chart(t: &Table) -> Chart {
+fn chart(_: &Context, t: &Table) -> Chart {
     let tension = t.filter("group", "tension");
     let frame = t.filter("group", "frame");
     let lb = super::col(&tension, "tension_lb");

@@ -4,8 +4,8 @@ use std::path::Path;
 
 use crate::error::Result;
 use crate::params::Params;
+use crate::render::table::{fmt_sig, Table, Value};
 use crate::solve::{ImpactResult, SeriesRow};
-use crate::table::{fmt_sig, Table, Value};
 
 /// The result as `name value unit` lines, with the impact it describes on top.
 pub fn result_text(params: &Params, r: &ImpactResult) -> String {
@@ -125,5 +125,5 @@ pub fn series_table(rows: &[SeriesRow]) -> Table {
 
 /// Write the time series CSV atomically.
 pub fn write_series(path: &Path, rows: &[SeriesRow]) -> Result<()> {
-    crate::io::write_atomic(path, series_table(rows).to_csv().as_bytes())
+    crate::render::io::write_atomic(path, series_table(rows).to_csv().as_bytes())
 }

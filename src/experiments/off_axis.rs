@@ -1,0 +1,72 @@
+//! What Figs 7 and 8 share ([`super::fig7_off_axis_x10`], [`super::fig8_off_axis_centre`]):
+//! an off-axis impact at one position x, with v1 = 30 m/s and k_s = 2e4 or 4e4 N/m, r from 0
+//! to 10 cm; theta is the rotation about the long axis at the end of the impact (Eq 7). The
+//! full impact with the N = 39 node scheme.
+
+use super::{col, impact, line, on_right, scaled, sweep, Context, V1_OFF_AXIS};
+use crate::error::Result;
+use crate::render::plot::{Chart, LineStyle};
+use crate::render::table::Table;
+
+/// The two string stiffnesses of Figs 7-8, N/m.
+pub const KS_VALUES: [f64; 2] = [2.0e4, 4.0e4];
+
+/// Theta, e_A, tau and f(spin) against r at `x` for both string stiffnesses.
+pub fn run(ctx: &Context, id: &str, x: f64) -> Result<Table> {
+    let mut t = Table::new(id, &["ks_n_per_m", "r_m", "theta_end_deg", "e_a", "tau_s", "f_spin"]);
+    for ks in KS_VALUES {
+        let params: Vec<_> = (0..=20)
+            .map(|i| {
+                let mut p = ctx.paper_params(x, ks);
+                p.impact.r = 0.005 * i as f64;
+                p.impact.v1 = V1_OFF_AXIS;
+                p
+            })
+            .collect();
+        for (p, r) in params.iter().zip(sweep(&params)?) {
+            t.push(vec![
+                ks.into(),
+                p.impact.r.into(),
+                r.theta_end_deg.into(),
+                r.e_a.into(),
+                r.tau_s.into(),
+                r.f_spin.into(),
+            ])?;
+        }
+    }
+    Ok(t)
+}
+
+/// Theta (solid, left) and e_A (dashed, right) against r for both string stiffnesses.
+pub fn chart(t: &Table, title: &str) -> Chart {
+    let mut curves = Vec::new();
+    for (i, ks) in KS_VALUES.iter().enumerate() {
+        let s = t.filter_num("ks_n_per_m", *ks);
+        let r_cm = scaled(col(&s, "r_m"), 100.0);
+        let name = if i == 0 { "ks 2e4" } else { "ks 4e4" };
+        curves.push(line(format!("theta, {name}"), r_cm.clone(), col(&s, "theta_end_deg"), 2 * i + 1));
+        let mut e = on_right(line(format!("e_A, {name}"), r_cm, col(&s, "e_a"), 2 * i + 1));
+        e.style = LineStyle::Dashed;
+        curves.push(e);
+    }
+    Chart {
+        title: title.into(),
+        x_label: "distance from the long axis r (cm)".into(),
+        y_label: "rotation at the end of the impact theta (deg)".into(),
+        y2_label: Some("e_A (dashed)".into()),
+        x_log: false,
+        x_range: Some((0.0, 10.0)),
+        y_range: Some((0.0, 30.0)),
+        y2_range: Some((0.0, 0.6)),
+        curves,
+        vlines: vec![],
+    }
+}
+
+/// Theta (deg) at (x, r 4 cm, 30 m/s) for a string stiffness, N = 39 node scheme.
+pub fn theta_r4(ctx: &Context, x: f64, ks: f64) -> Result<f64> {
+    let mut p = ctx.paper_params(x, ks);
+    p.impact.r = 0.04;
+    p.impact.v1 = V1_OFF_AXIS;
+    Ok(impact(&p)?.theta_end_deg)
+}

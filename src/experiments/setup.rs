@@ -1,0 +1,125 @@
+//! What every experiment runs on: the racket and ball ([`Context`]), the paper's impact
+//! parameters on them, and the helpers that run impacts the way the paper's figures do.
+
+use crate::error::{Error, Result};
+use crate::params::{Ball, LoadRule, Params, Racket};
+use crate::solve::{simulate, ImpactResult};
+
+/// "Centre of the strings": the node of mode 1 as the paper places it, m from the tip.
+pub const CENTRE_X: f64 = 0.158;
+/// Incident speed of Figs 7-8, m/s.
+pub const V1_OFF_AXIS: f64 = 30.0;
+
+/// The racket and ball an experiment runs on: the paper's ([`Context::paper`]) unless
+/// `figures --racket` chose another ([`Context::with_racket`]). The paper-number report always
+/// uses the paper's.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Context {
+    /// The racket.
+    pub racket: Racket,
+    /// The ball.
+    pub ball: Ball,
+}
+
+impl Default for Context {
+    fn default() -> Self {
+        Context::paper()
+    }
+}
+
+impl Context {
+    /// The paper's racket and ball.
+    pub fn paper() -> Self {
+        let p = Params::paper();
+        Context { racket: p.racket, ball: p.ball }
+    }
+
+    /// Another racket and ball. The paper's figures place impacts along the whole length, as
+    /// the paper does, so the racket's head outline is not applied (the face is the strip
+    /// `|r| <= half-width`, at least the paper's 12.5 cm).
+    pub fn with_racket(mut racket: Racket, ball: Ball) -> Self {
+        racket.head_length = None;
+        racket.half_width = racket.half_width.max(Racket::default().half_width);
+        Context { racket, ball }
+    }
+
+    /// The paper's parameters (the Fig 4 impact, node load, N = 39) on this racket and ball.
+    pub fn base_params(&self) -> Params {
+        let mut p = Params::paper();
+        p.racket = self.racket;
+        p.ball = self.ball;
+        p
+    }
+
+    /// The bending stiffness standing for the paper's `paper_ei` (N m^2) on this racket: the
+    /// same ratio to the racket's own EI as `paper_ei` has to the paper's 150 N m^2 (exactly
+    /// `paper_ei` for the paper's racket), so the frame comparisons of Figs 6 and 9 become
+    /// "your frame, and your frame 2.56 times stiffer".
+    pub fn frame_ei(&self, paper_ei: f64) -> f64 {
+        self.racket.ei * paper_ei / Racket::default().ei
+    }
+
+    /// This racket, ball and the paper's numerics (node load, N = 39) with an impact on the
+    /// long axis.
+    pub fn paper_params(&self, x: f64, ks: f64) -> Params {
+        let mut p = self.base_params();
+        p.impact.x = x;
+        p.impact.r = 0.0;
+        p.strings.ks = ks;
+        p
+    }
+}
+
+/// One impact for an experiment: as [`simulate`], but a re-contact after separation (which the
+/// model does not follow) is an error rather than a number in a paper figure.
+pub fn impact(p: &Params) -> Result<ImpactResult> {
+    checked(p, simulate(p)?)
+}
+
+/// Refuse a result with a re-contact.
+pub fn checked(p: &Params, r: ImpactResult) -> Result<ImpactResult> {
+    if r.recontact {
+        return Err(Error::Recontact { x: p.impact.x, r: p.impact.r, ks: p.strings.ks });
+    }
+    Ok(r)
+}
+
+/// The same racket with converged numerics: `hat` load on N = 320 segments.
+pub fn converged(mut p: Params) -> Params {
+    p.numerics.load = LoadRule::Hat;
+    p.numerics.segments = 320;
+    p
+}
+
+/// Positions of the N+1 nodes of the paper's beam, m from the tip.
+pub fn node_positions(p: &Params) -> Vec<f64> {
+    let n = p.numerics.segments;
+    (0..=n).map(|i| p.racket.length * i as f64 / n as f64).collect()
+}
+
+/// A quantity of the node-scheme curve read off at `x` the way a reader of the printed figure
+/// would: by linear interpolation between the two nodes around `x` (SPEC.md section 4).
+pub fn read_off_curve(p: &Params, x: f64, quantity: impl Fn(&ImpactResult) -> f64) -> Result<f64> {
+    let s = p.racket.length / p.numerics.segments as f64;
+    let j = ((x / s).floor() as usize).min(p.numerics.segments - 1);
+    let w = x / s - j as f64;
+    let at = |i: usize| -> Result<f64> {
+        let mut q = *p;
+        q.numerics.load = LoadRule::Node;
+        q.impact.x = i as f64 * s;
+        impact(&q).map(|r| quantity(&r))
+    };
+    Ok((1.0 - w) * at(j)? + w * at(j + 1)?)
+}
+
+/// Run [`impact`] for each parameter set, in parallel, results in the order given.
+pub fn sweep(params: &[Params]) -> Result<Vec<ImpactResult>> {
+    use rayon::prelude::*;
+    params.par_iter().map(impact).collect()
+}
+
+/// `n` log-spaced values from `a` to `b` inclusive.
+pub fn log_space(a: f64, b: f64, n: usize) -> Vec<f64> {
+    let (la, lb) = (a.log10(), b.log10());
+    (0..n).map(|i| 10f64.powf(la + (lb - la) * i as f64 / (n - 1) as f64)).collect()
+}

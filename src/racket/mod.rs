@@ -1,0 +1,113 @@
+//! A racket description in the units of a spec sheet, fitted to the model's [`Racket`](crate::params::Racket).
+//!
+//! A [`RacketSpec`] is a TOML file (or a built-in preset, [`preset_names`]) whose keys carry
+//! their unit in the name. [`RacketSpec::to_racket`] turns it into the model's parameters for a
+//! beam of `N` segments and reports how well the discrete model reproduces each stated number
+//! ([`FitReport`]).
+//!
+//! ```toml
+//! name = "my frame"
+//! length_in = 27                 # or length_cm
+//! mass_g = 305                   # strung
+//! balance_cm = 33.0              # from the butt; or balance_pts_hl = 4
+//! swingweight_kg_cm2 = 305       # about the axis 10 cm from the butt
+//! twistweight_kg_cm2 = 14.5      # about the long axis
+//! frequency_hz = 150             # free-free first bending; or ei_n_m2 = 150
+//! stiffness_ratio = [1.0, 1.4, 1.4, 1.2]    # optional EI shape at tip, head end, handle start, butt
+//! head_size_sq_in = 100          # with head_aspect; or head_length_cm + head_width_cm
+//! head_aspect = 1.30
+//! handle_length_cm = 19          # optional
+//! tension_lb = 55                # or tension_kg, string_bed_n_per_m, dt_kp_cm; default 4e4 N/m
+//! [ball]                         # optional; defaults are the paper's ball
+//! mass_g = 57
+//! k1_n_per_m = 3e4
+//! p = 2.55
+//! ```
+//!
+//! ## Conversions and the assumptions behind them
+//! ```text
+//! length      L = length_cm / 100 m,  or  L = 0.0254 length_in m
+//! mass        M = mass_g / 1000 kg, the STRUNG mass: the model's strings are massless
+//!             (Eq 2), so the strings, grip and bumper are lumped into the frame's density
+//! balance     b = balance_cm (from the butt),  or  b = L/2 - balance_pts_hl * 1/8 in
+//!             (1 point = 3.175 mm head-light; negative = head-heavy); x_cm = L - b from the tip
+//! swingweight SW = sum_i m_i (x_a - x_i)^2 on the discrete beam, x_a = L - 10 cm (the usual
+//!             swingweight machine axis); kg cm^2 / 1e4 = kg m^2
+//! twistweight I_x = twistweight_kg_cm2 / 1e4 kg m^2 (Eq 7's rigid twist about the long axis)
+//! stiffness   EI(x) = ei * stiffness_ratio(x/L); with frequency_hz, ei is scaled so that the
+//!             discrete beam's first free-free bending frequency equals it at N (omega^2 is
+//!             proportional to ei at fixed masses; exact to the eigen solver's rounding, about
+//!             1e-9 relative at N = 160); with ei_n_m2, ei is taken as is
+//! head        string face = ellipse from the tip, length l along and width w across the
+//!             racket; from head_size_sq_in = A and head_aspect = a = l/w:
+//!             A = pi/4 l w  =>  w = sqrt(4 A / (pi a)), l = a w   (1 sq in = 6.4516 cm^2).
+//!             The quoted head size is the strung area; its ellipse is placed at the tip,
+//!             ignoring the frame's thickness there. No head keys: the paper's strip over the
+//!             whole length with half-width 0.125 m.
+//! strings     k_s = 4e4 N/m * T / 60 lb (SPEC.md section 3: k_s proportional to tension);
+//!             tension_kg is kilograms-force, T = tension_kg / 0.45359237 lb;
+//!             string_bed_n_per_m is k_s directly; dt_kp_cm (a stringing-shop "dynamic
+//!             tension" meter, 1 kp/cm = 980.665 N/m) is TAKEN AS k_s DIRECTLY. That is an
+//!             assumption: DT is measured on a clamped frame with the meter's own load, not the
+//!             model's string-plane constant; typical DT values of 30-40 kp/cm (2.9-3.9e4 N/m)
+//!             are at least of the paper's order (4e4 N/m at 60 lb).
+//!             None of them: the paper's k_s = 4e4 N/m.
+//! frame flex  RA ratings (a clamped-handle static deflection index) have no published
+//!             conversion to EI, so they are not accepted: give frequency_hz (measure it by
+//!             tapping a loosely hung racket) or ei_n_m2.
+//! ```
+//!
+//! ## Mass distribution
+//! Without balance and swingweight the racket is the paper's uniform beam (no profile). With
+//! them the linear density is piecewise linear over the knots `[0, head end, handle start, L]`
+//! (head end = the head length, or 48 % of L without head keys, as a 100 sq in head is 33 cm of
+//! a 68.6 cm frame; handle start = L - handle_length_cm, default [`DEFAULT_HANDLE_LENGTH_CM`])
+//! and constant along the handle. Its three knot values are the unique solution of the 3x3
+//! linear system that makes the DISCRETE beam's mass, first moment (balance) and swingweight
+//! equal the targets; the node masses are linear in the knot values, so this is exact. A
+//! solution with a density <= 0 means the combination cannot be realised by such a profile,
+//! and is an error that gives the realisable range.
+//!
+//! The fit is for the `N` it is given: the same racket on another `N` reproduces the targets
+//! only to the discretisation error (O(N^-2)).
+//!
+//! ## Sources of the presets' typical values
+//! The modern presets (`light`, `tweener`, `players`) are round typical numbers, not any
+//! frame's data, chosen inside commonly quoted ranges: strung mass about 255-340 g, lighter
+//! frames balanced head-heavy and heavier ones head-light, 1 balance point = 1/8 in (retailers'
+//! guides, e.g. Tennis Warehouse University, C. Lindsey, "Weight, balance and swingweight";
+//! Tennis Express, "Racquet information"); swingweights of about 300-340 kg cm^2 for adult
+//! frames and twistweights of about 13-16 kg cm^2 (racket guides; H. Brody, "A new twist on the
+//! twistweight", Tennis Industry, 2005, explains the quantity); head sizes of 95-110 sq in on
+//! 27 in frames; free-free frequencies of composite frames above the < 120 Hz of wooden ones
+//! (L. Taraborrelli et al., "Materials have driven the historical development of the tennis
+//! racket", Appl. Sci. 9 (2019) 4352), taken here as 135-160 Hz. The three-knot density cannot
+//! realise every measured frame: at a given balance it reaches a limited swingweight range
+//! (the error says which), and the presets' swingweights sit inside it. Each preset file
+//! states its values.
+//!
+//! ## Files
+//! | file | job |
+//! |---|---|
+//! | [`spec`] | the racket file: keys in player units, their ranges, parsing |
+//! | [`convert`] | a spec checked and converted to SI units (every validation message) |
+//! | [`fit`] | the fit to the discrete beam (density profile, EI) and command parameters |
+//! | [`report`] | how well the fitted model reproduces each stated number |
+//! | [`presets`] | the built-in presets and loading a racket by name or path |
+
+pub mod convert;
+pub mod fit;
+pub mod presets;
+pub mod report;
+pub mod spec;
+
+#[cfg(test)]
+mod tests;
+
+pub use fit::{resolve, Fitted};
+pub use presets::{load, preset, preset_names};
+pub use report::{Check, FitReport};
+pub use spec::{
+    ranges, BallSpec, RacketSpec, BALANCE_POINT_CM, DEFAULT_HANDLE_LENGTH_CM, DEFAULT_HEAD_END_FRACTION, KP_PER_CM,
+    LB_KG, SQ_IN_CM2, SWING_AXIS_FROM_BUTT_M,
+};

@@ -1,0 +1,45 @@
+//! The built-in racket presets (files `presets/<name>.toml`) and loading a racket by preset
+//! name or file path.
+
+use std::path::Path;
+
+use super::spec::RacketSpec;
+use crate::error::{Error, Result};
+
+/// The presets: (name, file contents).
+pub(super) const PRESETS: [(&str, &str); 5] = [
+    ("paper-125hz", include_str!("../../presets/paper-125hz.toml")),
+    ("paper-widebody-200hz", include_str!("../../presets/paper-widebody-200hz.toml")),
+    ("light", include_str!("../../presets/light.toml")),
+    ("tweener", include_str!("../../presets/tweener.toml")),
+    ("players", include_str!("../../presets/players.toml")),
+];
+
+const PRESET_NAMES: [&str; 5] = [PRESETS[0].0, PRESETS[1].0, PRESETS[2].0, PRESETS[3].0, PRESETS[4].0];
+
+/// Names of the built-in racket presets (files `presets/<name>.toml`).
+pub fn preset_names() -> &'static [&'static str] {
+    &PRESET_NAMES
+}
+
+/// A built-in preset by name.
+pub fn preset(name: &str) -> Option<RacketSpec> {
+    let (_, text) = PRESETS.iter().find(|(n, _)| *n == name)?;
+    toml::from_str(text).ok()
+}
+
+/// A preset by name, else a racket file at the path `arg`. Neither gives an error listing the
+/// presets.
+pub fn load(arg: &str) -> Result<RacketSpec> {
+    if let Some(spec) = preset(arg) {
+        return Ok(spec);
+    }
+    let path = Path::new(arg);
+    if path.is_file() {
+        return RacketSpec::from_toml_file(path);
+    }
+    Err(Error::Config {
+        path: path.into(),
+        message: format!("is neither a racket preset ({}) nor a file", PRESET_NAMES.join(", ")),
+    })
+}

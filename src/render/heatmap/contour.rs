@@ -1,0 +1,179 @@
+//! Contour levels at round values, marching squares, bilinear sampling of the grid, and the
+//! field extended for the shading.
+
+/// Contour lines aimed at (the actual count is 4 to 9, at round values).
+pub const CONTOUR_TARGET: usize = 8;
+
+/// Round contour levels strictly inside the data range `(lo, hi)`: the multiples of a nice
+/// step (1, 2, 2.5 or 5 times a power of ten) whose count is nearest `target` (the larger step
+/// on a tie). Returns the levels and the step (empty for an empty, constant or non-finite
+/// range).
+pub fn contour_levels(lo: f64, hi: f64, target: usize) -> (Vec<f64>, f64) {
+    let span = hi - lo;
+    if !(lo.is_finite() && hi.is_finite() && span > 0.0 && target > 0) {
+        return (Vec::new(), 0.0);
+    }
+    let eps = span * 1e-9;
+    let levels_for = |step: f64| -> Vec<f64> {
+        let first = (lo / step).ceil() as i64;
+        let last = (hi / step).floor() as i64;
+        (first..=last)
+            .map(|k| {
+                let v = k as f64 * step;
+                if v.abs() < eps {
+                    0.0
+                } else {
+                    v
+                }
+            })
+            .filter(|&v| v > lo + eps && v < hi - eps)
+            .collect()
+    };
+    let p = 10f64.powf((span / target as f64).log10().floor());
+    let mut best: Option<(usize, f64, Vec<f64>)> = None;
+    for step in [0.5, 1.0, 2.0, 2.5, 5.0, 10.0, 20.0].map(|m| m * p) {
+        if !(step.is_finite() && step > 0.0) {
+            continue;
+        }
+        let levels = levels_for(step);
+        let miss = levels.len().abs_diff(target);
+        if best.as_ref().is_none_or(|b| miss <= b.0) {
+            best = Some((miss, step, levels));
+        }
+    }
+    match best {
+        Some((_, step, levels)) => (levels, step),
+        None => (Vec::new(), 0.0),
+    }
+}
+
+/// A contour segment: two points.
+pub type Seg = [(f64, f64); 2];
+
+/// Marching squares: the segments of the contour `z = level` on the grid (bilinear cells,
+/// crossings interpolated linearly along the cell edges; saddles resolved by the cell's mean).
+/// Cells with a non-finite corner are skipped. A corner counts as above the level when
+/// `z > level`.
+pub fn contour_segments(xs: &[f64], ys: &[f64], z: &[f64], level: f64) -> Vec<Seg> {
+    let (nx, ny) = (xs.len(), ys.len());
+    let mut out = Vec::new();
+    if nx < 2 || ny < 2 || z.len() != nx * ny || !level.is_finite() {
+        return out;
+    }
+    for i in 0..nx - 1 {
+        for j in 0..ny - 1 {
+            // corners: 0 bottom-left, 1 bottom-right, 2 top-right, 3 top-left
+            let p = [(xs[i], ys[j]), (xs[i + 1], ys[j]), (xs[i + 1], ys[j + 1]), (xs[i], ys[j + 1])];
+            let v = [z[i * ny + j], z[(i + 1) * ny + j], z[(i + 1) * ny + j + 1], z[i * ny + j + 1]];
+            if v.iter().any(|c| !c.is_finite()) {
+                continue;
+            }
+            let case = v.iter().enumerate().fold(0usize, |acc, (k, &c)| acc | (usize::from(c > level) << k));
+            // the crossing on edge e (between corners e and e+1)
+            let edge = |e: usize| {
+                let (a, b) = (e, (e + 1) % 4);
+                let t = (level - v[a]) / (v[b] - v[a]);
+                let t = if t.is_finite() { t.clamp(0.0, 1.0) } else { 0.5 };
+                (p[a].0 + t * (p[b].0 - p[a].0), p[a].1 + t * (p[b].1 - p[a].1))
+            };
+            let centre_above = 0.25 * (v[0] + v[1] + v[2] + v[3]) > level;
+            let pairs: &[(usize, usize)] = match case {
+                1 | 14 => &[(3, 0)],
+                2 | 13 => &[(0, 1)],
+                3 | 12 => &[(3, 1)],
+                4 | 11 => &[(1, 2)],
+                6 | 9 => &[(0, 2)],
+                7 | 8 => &[(2, 3)],
+                5 if centre_above => &[(0, 1), (2, 3)],
+                5 => &[(3, 0), (1, 2)],
+                10 if centre_above => &[(3, 0), (1, 2)],
+                10 => &[(0, 1), (2, 3)],
+                _ => &[],
+            };
+            out.extend(pairs.iter().map(|&(a, b)| [edge(a), edge(b)]));
+        }
+    }
+    out
+}
+
+/// The value at `(x, y)`: bilinear in a cell whose four corners are finite, else the nearest
+/// finite corner of the cell; `None` outside the grid or in a cell without data.
+pub fn sample(xs: &[f64], ys: &[f64], z: &[f64], x: f64, y: f64) -> Option<f64> {
+    let (nx, ny) = (xs.len(), ys.len());
+    if nx < 2 || ny < 2 || z.len() != nx * ny {
+        return None;
+    }
+    if !(x >= xs[0] && x <= xs[nx - 1] && y >= ys[0] && y <= ys[ny - 1]) {
+        return None;
+    }
+    let i = xs.partition_point(|&v| v <= x).clamp(1, nx - 1) - 1;
+    let j = ys.partition_point(|&v| v <= y).clamp(1, ny - 1) - 1;
+    let t = (x - xs[i]) / (xs[i + 1] - xs[i]);
+    let u = (y - ys[j]) / (ys[j + 1] - ys[j]);
+    let c = [
+        (0.0, 0.0, z[i * ny + j]),
+        (1.0, 0.0, z[(i + 1) * ny + j]),
+        (1.0, 1.0, z[(i + 1) * ny + j + 1]),
+        (0.0, 1.0, z[i * ny + j + 1]),
+    ];
+    if c.iter().all(|k| k.2.is_finite()) {
+        let bottom = c[0].2 + t * (c[1].2 - c[0].2);
+        let top = c[3].2 + t * (c[2].2 - c[3].2);
+        return Some(bottom + u * (top - bottom));
+    }
+    c.iter()
+        .filter(|k| k.2.is_finite())
+        .map(|k| ((k.0 - t).powi(2) + (k.1 - u).powi(2), k.2))
+        .fold(None, |best: Option<(f64, f64)>, cand| match best {
+            Some(b) if b.0 <= cand.0 => Some(b),
+            _ => Some(cand),
+        })
+        .map(|b| b.1)
+}
+
+/// The field for the shading only: each missing grid point next to data gets a value
+/// extrapolated linearly (in the grid index) from its neighbours along x and y (the mean over
+/// the directions that have data; the diagonal neighbours' mean if none), `passes` times, so
+/// the shading reaches an outline that runs between grid points. Contours use the data only.
+pub fn extend_for_shading(nx: usize, ny: usize, z: &[f64], passes: usize) -> Vec<f64> {
+    let mut cur = z.to_vec();
+    if z.len() != nx * ny {
+        return cur;
+    }
+    for _ in 0..passes {
+        let prev = cur.clone();
+        let at = |i: i64, j: i64| -> Option<f64> {
+            if i < 0 || j < 0 || i >= nx as i64 || j >= ny as i64 {
+                return None;
+            }
+            let v = prev[i as usize * ny + j as usize];
+            v.is_finite().then_some(v)
+        };
+        for i in 0..nx as i64 {
+            for j in 0..ny as i64 {
+                if at(i, j).is_some() {
+                    continue;
+                }
+                let (mut sum, mut n) = (0.0, 0u32);
+                for (di, dj) in [(1, 0), (-1, 0), (0, 1), (0, -1)] {
+                    match (at(i + di, j + dj), at(i + 2 * di, j + 2 * dj)) {
+                        (Some(a), Some(b)) => (sum, n) = (sum + 2.0 * a - b, n + 1),
+                        (Some(a), None) => (sum, n) = (sum + a, n + 1),
+                        _ => {}
+                    }
+                }
+                if n == 0 {
+                    for (di, dj) in [(1, 1), (1, -1), (-1, 1), (-1, -1)] {
+                        if let Some(a) = at(i + di, j + dj) {
+                            (sum, n) = (sum + a, n + 1);
+                        }
+                    }
+                }
+                if n > 0 {
+                    cur[i as usize * ny + j as usize] = sum / f64::from(n);
+                }
+            }
+        }
+    }
+    cur
+}

@@ -1,0 +1,377 @@
+//! Drawing a heat map with `plotters`: title block, equal-aspect axes, shading, contour
+//! lines, outlines, labelled segments and markers placed where they fit, and the colour bar.
+
+use plotters::coord::types::RangedCoordf64;
+use plotters::coord::Shift;
+use plotters::element::DashedPathElement;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+use plotters::style::FontStyle;
+
+use super::{color_range, contour_levels, contour_segments, diverging, extend_for_shading, sample, viridis};
+use super::{ColorScale, HeatMap, CONTOUR_TARGET};
+use crate::render::plot::{self, AXIS_DESC_SIZE, HEIGHT, TICK_SIZE, WIDTH};
+use crate::render::table::fmt_sig;
+
+/// Height of the title block (title and subtitle), pixels.
+const TITLE_AREA: u32 = 92;
+/// Width of the colour-bar block on the right, pixels.
+const BAR_AREA: u32 = 190;
+/// Margin around the plotting area inside the main block, pixels.
+const MARGIN: u32 = 10;
+/// Space for the x tick labels and description, pixels.
+const X_LABEL_AREA: u32 = 62;
+/// Space for the y tick labels and description, pixels.
+const Y_LABEL_AREA: u32 = 82;
+/// Width of the colour bar itself, pixels.
+const BAR_WIDTH: i32 = 30;
+/// Colour of outlines.
+const OUTLINE_COLOR: RGBColor = RGBColor(40, 40, 40);
+
+/// A tick label on the colour bar: as many decimals as the step needs.
+pub(super) fn level_label(v: f64, step: f64) -> String {
+    if step.is_nan() || step <= 0.0 || v.abs() >= 1e6 || (v != 0.0 && v.abs() < 1e-4) {
+        return fmt_sig(v, 4);
+    }
+    let decimals = (0..=8).find(|&d| {
+        let s = step * 10f64.powi(d);
+        (s - s.round()).abs() <= 1e-6 * s
+    });
+    let d = decimals.unwrap_or(8) as usize;
+    let v = if v.abs() < step * 1e-9 { 0.0 } else { v };
+    format!("{v:.d$}")
+}
+
+/// Axis ranges with equal scales on both axes for a `w` x `h` pixel plotting area.
+fn equal_aspect_ranges(map: &HeatMap, w: f64, h: f64) -> ((f64, f64), (f64, f64)) {
+    let mut xs: Vec<f64> = map.xs.clone();
+    let mut ys: Vec<f64> = map.ys.clone();
+    for e in map.outlines.iter().chain(&map.clip) {
+        xs.extend([e.x0, e.x1]);
+        ys.extend([-e.half_height, e.half_height]);
+    }
+    for s in &map.segments {
+        xs.extend([s.from.0, s.to.0]);
+        ys.extend([s.from.1, s.to.1]);
+    }
+    for m in &map.markers {
+        xs.push(m.at.0);
+        ys.push(m.at.1);
+    }
+    let ext = |v: &[f64]| {
+        v.iter().fold(None, |acc: Option<(f64, f64)>, &c| match acc {
+            None => Some((c, c)),
+            Some((lo, hi)) => Some((lo.min(c), hi.max(c))),
+        })
+    };
+    let (x0, x1) = ext(&xs).unwrap_or((0.0, 1.0));
+    let (y0, y1) = ext(&ys).unwrap_or((0.0, 1.0));
+    let nominal = |lo: f64, hi: f64| if hi > lo { hi - lo } else { lo.abs().max(1.0) };
+    let (dx, dy) = (nominal(x0, x1), nominal(y0, y1));
+    // room for labels above and below the face
+    let (px, py) = (0.04 * dx, 0.16 * dy);
+    let scale = (w / (dx + 2.0 * px)).min(h / (dy + 2.0 * py));
+    let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
+    let (hx, hy) = (0.5 * w / scale, 0.5 * h / scale);
+    ((cx - hx, cx + hx), (cy - hy, cy + hy))
+}
+
+/// A pixel rectangle: (left, top, right, bottom).
+type Rect = (i32, i32, i32, i32);
+
+fn overlaps(a: Rect, b: Rect) -> bool {
+    a.0 < b.2 && b.0 < a.2 && a.1 < b.3 && b.1 < a.3
+}
+
+fn inside(a: Rect, area: Rect) -> bool {
+    a.0 >= area.0 && a.1 >= area.1 && a.2 <= area.2 && a.3 <= area.3
+}
+
+/// Draw a label with a translucent white box whose top-left corner is `(x, y)`.
+fn boxed_text(
+    root: &DrawingArea<BitMapBackend<'_>, Shift>,
+    text: &str,
+    rect: Rect,
+    style: &TextStyle<'_>,
+) -> std::result::Result<(), String> {
+    root.draw(&Rectangle::new([(rect.0, rect.1), (rect.2, rect.3)], WHITE.mix(0.85).filled())).map_err(plot::msg)?;
+    root.draw(&Rectangle::new([(rect.0, rect.1), (rect.2, rect.3)], RGBColor(120, 120, 120).stroke_width(1)))
+        .map_err(plot::msg)?;
+    root.draw_text(text, style, (rect.0 + 5, rect.1 + 3)).map_err(plot::msg)
+}
+
+pub(super) fn draw(root: &DrawingArea<BitMapBackend<'_>, Shift>, map: &HeatMap) -> std::result::Result<(), String> {
+    draw_titles(root, map)?;
+
+    let (_, body) = root.split_vertically(TITLE_AREA);
+    let (main, _) = body.split_horizontally(WIDTH - BAR_AREA);
+    let plot_w = f64::from(WIDTH - BAR_AREA - 2 * MARGIN - Y_LABEL_AREA);
+    let plot_h = f64::from(HEIGHT - TITLE_AREA - 2 * MARGIN - X_LABEL_AREA);
+    let ((x0, x1), (y0, y1)) = equal_aspect_ranges(map, plot_w, plot_h);
+
+    let mut cc = ChartBuilder::on(&main)
+        .margin(MARGIN)
+        .x_label_area_size(X_LABEL_AREA)
+        .y_label_area_size(Y_LABEL_AREA)
+        .build_cartesian_2d(x0..x1, y0..y1)
+        .map_err(plot::msg)?;
+    let x_fmt = |v: &f64| plot::tick_label(*v, (x0, x1));
+    let y_fmt = |v: &f64| plot::tick_label(*v, (y0, y1));
+    cc.configure_mesh()
+        .disable_mesh()
+        .x_desc(map.x_label.as_str())
+        .y_desc(map.y_label.as_str())
+        .label_style(plot::font(TICK_SIZE, FontStyle::Normal))
+        .axis_desc_style(plot::font(AXIS_DESC_SIZE, FontStyle::Normal))
+        .x_labels(12)
+        .y_labels(10)
+        .x_label_formatter(&x_fmt)
+        .y_label_formatter(&y_fmt)
+        .draw()
+        .map_err(plot::msg)?;
+
+    let ((lo, hi), data) = color_range(&map.z, map.scale);
+    let color = |v: f64| {
+        let t = (v - lo) / (hi - lo);
+        match map.scale {
+            ColorScale::Sequential => viridis(t),
+            ColorScale::Diverging => diverging(t),
+        }
+    };
+
+    let plot_rect = draw_shading(root, &cc, map, ((x0, x1), (y0, y1)), &color)?;
+
+    // contour lines
+    let (levels, step) = match data {
+        Some((dlo, dhi)) => contour_levels(dlo, dhi, CONTOUR_TARGET),
+        None => (Vec::new(), 0.0),
+    };
+    draw_lines(&mut cc, map, &levels)?;
+
+    let label_style = plot::font(TICK_SIZE, FontStyle::Normal);
+    let mut taken: Vec<Rect> = Vec::new();
+
+    draw_segments(root, &mut cc, map, plot_rect, &label_style, &mut taken)?;
+    draw_markers(root, &mut cc, map, plot_rect, &label_style, &mut taken)?;
+
+    if data.is_none() {
+        let style = plot::font(AXIS_DESC_SIZE, FontStyle::Normal).pos(Pos::new(HPos::Center, VPos::Center));
+        let c = ((plot_rect.0 + plot_rect.2) / 2, (plot_rect.1 + plot_rect.3) / 2);
+        root.draw_text("no data", &style, c).map_err(plot::msg)?;
+    }
+
+    draw_color_bar(root, map, plot_rect, (lo, hi), &levels, step, &color)
+}
+
+/// The chart's coordinates (data x and y, both linear).
+type Coords<'a, 'b> = ChartContext<'a, BitMapBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// The title and, below it, the subtitle (shrunk to fit the width).
+fn draw_titles(root: &DrawingArea<BitMapBackend<'_>, Shift>, map: &HeatMap) -> std::result::Result<(), String> {
+    let title_style = plot::title_font(root, &map.title)?.pos(Pos::new(HPos::Center, VPos::Top));
+    root.draw_text(&map.title, &title_style, (WIDTH as i32 / 2, 12)).map_err(plot::msg)?;
+    if !map.subtitle.is_empty() {
+        let mut size = TICK_SIZE;
+        let sub = loop {
+            let s = plot::font(size, FontStyle::Normal);
+            let (w, _) = root.estimate_text_size(&map.subtitle, &s).map_err(plot::msg)?;
+            if w <= WIDTH - 40 || size <= 11.0 {
+                break s;
+            }
+            size -= 1.0;
+        };
+        let sub = sub.color(&RGBColor(60, 60, 60)).pos(Pos::new(HPos::Center, VPos::Top));
+        root.draw_text(&map.subtitle, &sub, (WIDTH as i32 / 2, 56)).map_err(plot::msg)?;
+    }
+    Ok(())
+}
+
+/// Shade the plotting area pixel by pixel (inside every clip ellipse); returns the plotting
+/// area's pixel rectangle.
+fn draw_shading(
+    root: &DrawingArea<BitMapBackend<'_>, Shift>,
+    cc: &Coords<'_, '_>,
+    map: &HeatMap,
+    ((x0, x1), (y0, y1)): ((f64, f64), (f64, f64)),
+    color: &dyn Fn(f64) -> RGBColor,
+) -> std::result::Result<Rect, String> {
+    let shade = extend_for_shading(map.xs.len(), map.ys.len(), &map.z, 2);
+    let (px_range, py_range) = cc.plotting_area().get_pixel_range();
+    let (pw, ph) = (f64::from(px_range.end - px_range.start), f64::from(py_range.end - py_range.start));
+    let plot_rect: Rect = (px_range.start, py_range.start, px_range.end, py_range.end);
+    for py in py_range.clone() {
+        let y = y1 - (f64::from(py - py_range.start) + 0.5) / ph * (y1 - y0);
+        for px in px_range.clone() {
+            let x = x0 + (f64::from(px - px_range.start) + 0.5) / pw * (x1 - x0);
+            if !map.clip.iter().all(|e| e.contains(x, y)) {
+                continue;
+            }
+            if let Some(v) = sample(&map.xs, &map.ys, &shade, x, y) {
+                root.draw_pixel((px, py), &color(v)).map_err(plot::msg)?;
+            }
+        }
+    }
+    Ok(plot_rect)
+}
+
+/// The contour lines at `levels`, then the outlines (the first solid, the others dashed).
+fn draw_lines(cc: &mut Coords<'_, '_>, map: &HeatMap, levels: &[f64]) -> std::result::Result<(), String> {
+    let contour_style = RGBColor(20, 20, 20).mix(0.55).stroke_width(1);
+    for &level in levels {
+        let segs = contour_segments(&map.xs, &map.ys, &map.z, level);
+        cc.draw_series(segs.into_iter().map(|s| PathElement::new(vec![s[0], s[1]], contour_style)))
+            .map_err(plot::msg)?;
+    }
+
+    // outlines
+    for (k, e) in map.outlines.iter().enumerate() {
+        let pts = e.polyline(360);
+        let style = OUTLINE_COLOR.stroke_width(2);
+        if k == 0 {
+            cc.draw_series(std::iter::once(PathElement::new(pts, style))).map_err(plot::msg)?;
+        } else {
+            cc.draw_series(std::iter::once(DashedPathElement::new(pts, 8, 5, style))).map_err(plot::msg)?;
+        }
+    }
+    Ok(())
+}
+
+/// The dashed segments with their labels at the upper end, placed clear of what is `taken`.
+fn draw_segments(
+    root: &DrawingArea<BitMapBackend<'_>, Shift>,
+    cc: &mut Coords<'_, '_>,
+    map: &HeatMap,
+    plot_rect: Rect,
+    label_style: &TextStyle<'_>,
+    taken: &mut Vec<Rect>,
+) -> std::result::Result<(), String> {
+    for s in &map.segments {
+        let style = BLACK.stroke_width(2);
+        cc.draw_series(std::iter::once(DashedPathElement::new(vec![s.from, s.to], 10, 6, style))).map_err(plot::msg)?;
+        let (a, b) = (cc.backend_coord(&s.from), cc.backend_coord(&s.to));
+        taken.push((a.0.min(b.0) - 3, a.1.min(b.1) - 3, a.0.max(b.0) + 3, a.1.max(b.1) + 3));
+        if s.label.is_empty() {
+            continue;
+        }
+        let (w, h) = root.estimate_text_size(&s.label, label_style).map_err(plot::msg)?;
+        let (w, h) = (w as i32 + 10, h as i32 + 6);
+        let (top, bottom) = if s.from.1 >= s.to.1 { (s.from, s.to) } else { (s.to, s.from) };
+        let pt = cc.backend_coord(&top);
+        let pb = cc.backend_coord(&bottom);
+        let candidates =
+            [(pt.0 - w / 2, pt.1 - 6 - h), (pb.0 - w / 2, pb.1 + 6), (pt.0 + 8, pt.1), (pt.0 - 8 - w, pt.1)];
+        let rects: Vec<Rect> = candidates.iter().map(|&(l, t)| (l, t, l + w, t + h)).collect();
+        let rect = rects
+            .iter()
+            .copied()
+            .find(|&r| inside(r, plot_rect) && !taken.iter().any(|&o| overlaps(r, o)))
+            .unwrap_or(rects[0]);
+        boxed_text(root, &s.label, rect, label_style)?;
+        taken.push(rect);
+    }
+    Ok(())
+}
+
+/// The markers (ringed dots) with their labels where they fit, clear of what is `taken`.
+fn draw_markers(
+    root: &DrawingArea<BitMapBackend<'_>, Shift>,
+    cc: &mut Coords<'_, '_>,
+    map: &HeatMap,
+    plot_rect: Rect,
+    label_style: &TextStyle<'_>,
+    taken: &mut Vec<Rect>,
+) -> std::result::Result<(), String> {
+    for m in &map.markers {
+        let ring = [
+            Circle::new(m.at, 9, WHITE.filled()),
+            Circle::new(m.at, 9, BLACK.stroke_width(2)),
+            Circle::new(m.at, 3, BLACK.filled()),
+        ];
+        cc.draw_series(ring).map_err(plot::msg)?;
+        if m.label.is_empty() {
+            continue;
+        }
+        let p = cc.backend_coord(&m.at);
+        let (w, h) = root.estimate_text_size(&m.label, label_style).map_err(plot::msg)?;
+        let (w, h) = (w as i32 + 10, h as i32 + 6);
+        let candidates = [
+            (p.0 + 14, p.1 - h / 2),
+            (p.0 - 14 - w, p.1 - h / 2),
+            (p.0 - w / 2, p.1 - 14 - h),
+            (p.0 - w / 2, p.1 + 14),
+            (p.0 + 10, p.1 - 10 - h),
+            (p.0 - 10 - w, p.1 - 10 - h),
+            (p.0 + 10, p.1 + 10),
+            (p.0 - 10 - w, p.1 + 10),
+        ];
+        let rects: Vec<Rect> = candidates.iter().map(|&(l, t)| (l, t, l + w, t + h)).collect();
+        let rect = rects
+            .iter()
+            .copied()
+            .find(|&r| inside(r, plot_rect) && !taken.iter().any(|&o| overlaps(r, o)))
+            .or_else(|| rects.iter().copied().find(|&r| inside(r, plot_rect)))
+            .unwrap_or(rects[0]);
+        boxed_text(root, &m.label, rect, label_style)?;
+        taken.push(rect);
+    }
+    Ok(())
+}
+
+/// The colour bar right of the plot, as tall as the plotting area, with the contour levels
+/// marked and labelled.
+fn draw_color_bar(
+    root: &DrawingArea<BitMapBackend<'_>, Shift>,
+    map: &HeatMap,
+    plot_rect: Rect,
+    (lo, hi): (f64, f64),
+    levels: &[f64],
+    step: f64,
+    color: &dyn Fn(f64) -> RGBColor,
+) -> std::result::Result<(), String> {
+    let left = (WIDTH - BAR_AREA) as i32 + 22;
+    let right = left + BAR_WIDTH;
+    let (top, bottom) = (plot_rect.1, plot_rect.3 - 1);
+    if bottom <= top {
+        return Ok(());
+    }
+    let y_of = |v: f64| bottom - ((v - lo) / (hi - lo) * f64::from(bottom - top)).round() as i32;
+    for py in top..=bottom {
+        let v = lo + f64::from(bottom - py) / f64::from(bottom - top) * (hi - lo);
+        let c = color(v);
+        for px in left..=right {
+            root.draw_pixel((px, py), &c).map_err(plot::msg)?;
+        }
+    }
+    root.draw(&Rectangle::new([(left, top), (right, bottom)], BLACK.stroke_width(1))).map_err(plot::msg)?;
+
+    let style = plot::font(TICK_SIZE, FontStyle::Normal).pos(Pos::new(HPos::Left, VPos::Center));
+    // the ticks: the contour levels (labelled as densely as the height allows), else the ends
+    let (ticks, tick_step): (Vec<f64>, f64) =
+        if levels.is_empty() { (vec![lo, hi], 0.0) } else { (levels.to_vec(), step) };
+    let spacing = if ticks.len() > 1 {
+        (f64::from(bottom - top) * (ticks[1] - ticks[0]) / (hi - lo)).abs()
+    } else {
+        f64::INFINITY
+    };
+    let every = ((TICK_SIZE + 6.0) / spacing).ceil().max(1.0) as usize;
+    for (k, &v) in ticks.iter().enumerate() {
+        let py = y_of(v);
+        let line = if levels.is_empty() { BLACK.stroke_width(1) } else { RGBColor(20, 20, 20).stroke_width(1) };
+        if !levels.is_empty() {
+            root.draw(&PathElement::new(vec![(left, py), (right, py)], line)).map_err(plot::msg)?;
+        }
+        root.draw(&PathElement::new(vec![(right, py), (right + 6, py)], line)).map_err(plot::msg)?;
+        if k % every == 0 {
+            let text = if tick_step > 0.0 { level_label(v, tick_step) } else { fmt_sig(v, 4) };
+            root.draw_text(&text, &style, (right + 10, py)).map_err(plot::msg)?;
+        }
+    }
+    if !map.bar_label.is_empty() {
+        let style = plot::font(AXIS_DESC_SIZE, FontStyle::Normal)
+            .transform(FontTransform::Rotate270)
+            .pos(Pos::new(HPos::Center, VPos::Center));
+        let x = WIDTH as i32 - 22;
+        root.draw_text(&map.bar_label, &style, (x, (top + bottom) / 2)).map_err(plot::msg)?;
+    }
+    Ok(())
+}

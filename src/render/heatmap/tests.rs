@@ -1,0 +1,163 @@
+//! Tests of the heat maps: contours, levels, sampling, colour maps, degenerate and bad input.
+
+use super::draw::level_label;
+use super::*;
+
+fn grid(nx: usize, ny: usize, f: impl Fn(f64, f64) -> f64) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    let xs: Vec<f64> = (0..nx).map(|i| i as f64).collect();
+    let ys: Vec<f64> = (0..ny).map(|j| j as f64).collect();
+    let z = xs.iter().flat_map(|&x| ys.iter().map(move |&y| (x, y))).map(|(x, y)| f(x, y)).collect();
+    (xs, ys, z)
+}
+
+#[test]
+fn linear_field_gives_straight_contours_at_the_level() {
+    // z = x: the contour z = 1.5 is the vertical line x = 1.5
+    let (xs, ys, z) = grid(4, 5, |x, _| x);
+    let segs = contour_segments(&xs, &ys, &z, 1.5);
+    assert_eq!(segs.len(), 4, "one segment per cell row");
+    for s in &segs {
+        assert_eq!((s[0].0, s[1].0), (1.5, 1.5));
+        assert_eq!((s[0].1 - s[1].1).abs(), 1.0);
+    }
+    // z = 2x + y: the contour z = 3 is the line y = 3 - 2x; every segment lies on it
+    let (xs, ys, z) = grid(5, 5, |x, y| 2.0 * x + y);
+    let segs = contour_segments(&xs, &ys, &z, 3.0);
+    assert!(!segs.is_empty());
+    for s in &segs {
+        for p in s {
+            assert!((p.1 - (3.0 - 2.0 * p.0)).abs() < 1e-12, "{p:?}");
+        }
+    }
+    // total length: the line from (0, 3) to (1.5, 0) inside the grid
+    let len: f64 = segs.iter().map(|s| ((s[1].0 - s[0].0).powi(2) + (s[1].1 - s[0].1).powi(2)).sqrt()).sum();
+    assert!((len - (1.5f64.powi(2) + 9.0).sqrt()).abs() < 1e-12, "{len}");
+}
+
+#[test]
+fn contours_skip_missing_cells_and_constant_fields() {
+    let (xs, ys, mut z) = grid(3, 3, |x, _| x);
+    z[4] = f64::NAN; // the centre point: every cell touches it
+    assert!(contour_segments(&xs, &ys, &z, 0.5).is_empty());
+    let (xs, ys, z) = grid(3, 3, |_, _| 2.0);
+    assert!(contour_segments(&xs, &ys, &z, 2.0).is_empty());
+    assert!(contour_segments(&[0.0], &[0.0], &[1.0], 0.5).is_empty());
+}
+
+#[test]
+fn saddles_give_two_segments() {
+    // corners 1 0 / 0 1 around a cell
+    let xs = [0.0, 1.0];
+    let ys = [0.0, 1.0];
+    let z = [1.0, 0.0, 0.0, 1.0]; // (0,0)=1, (0,1)=0, (1,0)=0, (1,1)=1
+    assert_eq!(contour_segments(&xs, &ys, &z, 0.5).len(), 2);
+}
+
+#[test]
+fn levels_are_round_and_inside() {
+    let (l, step) = contour_levels(0.112, 0.418, 8);
+    assert_eq!(step, 0.05);
+    assert_eq!(l.len(), 6);
+    assert!((l[0] - 0.15).abs() < 1e-12 && (l[5] - 0.4).abs() < 1e-12);
+    let (l, _) = contour_levels(-2.3, 1.1, 8);
+    assert!(l.contains(&0.0));
+    assert!(contour_levels(1.0, 1.0, 8).0.is_empty());
+    assert!(contour_levels(f64::NAN, 1.0, 8).0.is_empty());
+    assert_eq!(level_label(0.15000000000000002, 0.05), "0.15");
+    assert_eq!(level_label(-0.0, 0.25), "0.00");
+    assert_eq!(level_label(40.0, 5.0), "40");
+}
+
+#[test]
+fn sampling_is_bilinear_inside_and_nearest_at_the_edge() {
+    let (xs, ys, mut z) = grid(3, 3, |x, y| x + 10.0 * y);
+    assert!((sample(&xs, &ys, &z, 0.5, 0.25).unwrap() - 3.0).abs() < 1e-12);
+    assert_eq!(sample(&xs, &ys, &z, 2.0, 2.0), Some(22.0));
+    assert_eq!(sample(&xs, &ys, &z, -0.1, 0.0), None);
+    z[0] = f64::NAN;
+    // cell (0,0) now has three corners: the nearest one
+    assert_eq!(sample(&xs, &ys, &z, 0.2, 0.9), Some(10.0));
+    assert_eq!(sample(&xs, &ys, &z, 0.9, 0.1), Some(1.0));
+}
+
+#[test]
+fn colour_maps_run_from_end_to_end() {
+    assert_eq!(viridis(0.0), RGBColor(68, 1, 84));
+    assert_eq!(viridis(1.0), RGBColor(253, 231, 37));
+    assert_eq!(viridis(2.0), viridis(1.0));
+    assert_eq!(diverging(0.5), RGBColor(247, 247, 247));
+    let ((lo, hi), _) = color_range(&[-1.0, 3.0, f64::NAN], ColorScale::Diverging);
+    assert_eq!((lo, hi), (-3.0, 3.0));
+    let ((lo, hi), d) = color_range(&[f64::NAN], ColorScale::Sequential);
+    assert_eq!(((lo, hi), d), ((0.0, 1.0), None));
+    let ((lo, hi), _) = color_range(&[5.0, 5.0], ColorScale::Sequential);
+    assert!(lo < 5.0 && hi > 5.0);
+}
+
+fn face_map(nx: usize, ny: usize, f: impl Fn(f64, f64) -> f64) -> HeatMap {
+    let e = Ellipse { x0: 0.0, x1: 32.0, half_height: 12.5 };
+    let xs: Vec<f64> = (0..nx).map(|i| 32.0 * i as f64 / (nx - 1).max(1) as f64).collect();
+    let ys: Vec<f64> = (0..ny).map(|j| -12.5 + 25.0 * j as f64 / (ny - 1).max(1) as f64).collect();
+    let z = xs
+        .iter()
+        .flat_map(|&x| ys.iter().map(move |&y| (x, y)))
+        .map(|(x, y)| if e.contains(x, y) { f(x, y) } else { f64::NAN })
+        .collect();
+    HeatMap {
+        title: "test map".into(),
+        subtitle: "a subtitle".into(),
+        x_label: "x (cm)".into(),
+        y_label: "r (cm)".into(),
+        bar_label: "e_A".into(),
+        xs,
+        ys,
+        z,
+        clip: vec![e],
+        outlines: vec![e],
+        segments: vec![Segment { from: (16.0, -12.5), to: (16.0, 12.5), label: "node".into() }],
+        markers: vec![Marker { at: (30.0, 0.0), label: "max".into() }],
+        ..HeatMap::default()
+    }
+}
+
+#[test]
+fn degenerate_maps_render_without_panic_and_deterministically() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = [
+        face_map(25, 13, |x, y| 0.3 + 0.01 * x - 0.001 * y * y),
+        face_map(25, 13, |_, _| f64::NAN),
+        face_map(25, 13, |_, _| 0.4),
+        face_map(2, 2, |x, _| x),
+        face_map(1, 1, |x, _| x),
+        HeatMap::default(),
+    ];
+    for (k, m) in cases.iter().enumerate() {
+        let a = dir.path().join(format!("m{k}.png"));
+        let b = dir.path().join(format!("m{k}b.png"));
+        render_png("t", m, &a).unwrap_or_else(|e| panic!("case {k}: {e}"));
+        render_png("t", m, &b).unwrap();
+        let (a, b) = (std::fs::read(a).unwrap(), std::fs::read(b).unwrap());
+        assert_eq!(&a[1..4], b"PNG");
+        assert!(a == b, "case {k} not deterministic");
+    }
+    let mut diff = face_map(9, 7, |x, y| x - 16.0 + y);
+    diff.scale = ColorScale::Diverging;
+    render_png("t", &diff, &dir.path().join("d.png")).unwrap();
+    if let Ok(keep) = std::env::var("RACKET_IMPACT_KEEP_TEST_PNG") {
+        for f in ["m0.png", "m1.png", "m2.png", "m3.png", "d.png"] {
+            let _ = std::fs::copy(dir.path().join(f), Path::new(&keep).join(format!("heatmap_{f}")));
+        }
+    }
+}
+
+#[test]
+fn bad_grids_are_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut m = face_map(5, 5, |x, _| x);
+    m.z.pop();
+    assert!(render_png("t", &m, &dir.path().join("a.png")).is_err());
+    let mut m = face_map(5, 5, |x, _| x);
+    m.xs[2] = m.xs[1];
+    assert!(render_png("t", &m, &dir.path().join("a.png")).is_err());
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+}

@@ -1,0 +1,19 @@
+//! Everything that turns numbers into files and text: result tables and their CSV, the one
+//! look of every figure, heat maps of the string face, the text and CSV of one impact, and
+//! atomic file output.
+//!
+//! | module | job |
+//! |---|---|
+//! | [`table`] | named-column tables: CSV, column access, snapshot text |
+//! | [`plot`] | line charts ([`plot::Chart`]) drawn to PNG |
+//! | [`heatmap`] | heat maps with contours ([`heatmap::HeatMap`]) drawn to PNG |
+//! | [`impact`] | one impact as text, CSV and a time-series file |
+//! | [`io`] | atomic, deterministic file writes |
+//!
+//! Nothing here runs a solver: the layers above compute, and hand tables and charts down.
+
+pub mod heatmap;
+pub mod impact;
+pub mod io;
+pub mod plot;
+pub mod table;

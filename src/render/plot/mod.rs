@@ -1,0 +1,302 @@
+//! One look for every figure: a small declarative layer over `plotters`.
+//!
+//! An experiment describes its figure as a [`Chart`] (title, axis labels, [`Curve`]s, optional
+//! right-hand axis, optional log-scaled x axis, vertical marker lines) and calls
+//! [`render_png`]. All figures share the same size ([`WIDTH`] x [`HEIGHT`]), fonts (DejaVu Sans,
+//! bundled, so no system fonts are needed), colour-blind-friendly [`PALETTE`], mesh and legend
+//! style.
+//!
+//! Rendering is deterministic (identical bytes for identical charts) and atomic: the PNG is
+//! written to a hidden temporary file next to the target and renamed over it only when
+//! complete. Non-finite points (and, on a log axis, non-positive x) are skipped, breaking the
+//! line there; lines are clipped to the plotting area.
+
+mod clip;
+mod draw;
+mod plan;
+#[cfg(test)]
+mod tests;
+
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::path::Path;
+use std::sync::OnceLock;
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::{register_font, FontDesc, FontFamily, FontStyle};
+
+use crate::error::{Error, Result};
+use crate::render::table::fmt_sig;
+use draw::draw_chart;
+use plan::Plan;
+
+/// Image width in pixels.
+pub const WIDTH: u32 = 1200;
+/// Image height in pixels.
+pub const HEIGHT: u32 = 800;
+
+/// The curve colours (Okabe–Ito colour-blind-friendly palette), as RGB triples:
+/// black, orange, sky blue, bluish green, vermillion, blue, reddish purple, yellow.
+/// [`Curve::color`] indexes this list (modulo its length).
+pub const PALETTE: [(u8, u8, u8); 8] = [
+    (0, 0, 0),
+    (230, 159, 0),
+    (86, 180, 233),
+    (0, 158, 115),
+    (213, 94, 0),
+    (0, 114, 178),
+    (204, 121, 167),
+    (240, 228, 66),
+];
+
+/// Title font size, pixels.
+const TITLE_SIZE: f64 = 30.0;
+/// Axis description font size, pixels.
+pub(crate) const AXIS_DESC_SIZE: f64 = 22.0;
+/// Tick label and legend font size, pixels.
+pub(crate) const TICK_SIZE: f64 = 18.0;
+/// Relative padding added to data-derived ranges.
+const PAD: f64 = 0.05;
+/// Colour of vertical marker lines.
+const VLINE_COLOR: RGBColor = RGBColor(80, 80, 80);
+/// Dash (length, gap) patterns, pixels, for successive vertical marker lines.
+const VLINE_DASHES: [(i32, i32); 3] = [(12, 6), (4, 4), (20, 5)];
+/// Width of the legend glyph area, pixels.
+const LEGEND_GLYPH: i32 = 36;
+
+/// Which y axis a curve is plotted against.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Axis {
+    /// The left (primary) axis.
+    #[default]
+    Left,
+    /// The right (secondary) axis; only used when [`Chart::y2_label`] is set, otherwise the
+    /// curve goes on the left axis.
+    Right,
+}
+
+/// How a curve is drawn.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LineStyle {
+    /// Solid line, 2 px.
+    #[default]
+    Solid,
+    /// Dashed line, 2 px.
+    Dashed,
+    /// Thin (1 px) solid line in a light tint of the curve colour, for background curves.
+    Faint,
+    /// Markers only (filled circles), no connecting line.
+    Points,
+}
+
+/// One data series.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Curve {
+    /// Legend text; curves with an empty label get no legend entry.
+    pub label: String,
+    /// x values.
+    pub x: Vec<f64>,
+    /// y values (same length as `x`).
+    pub y: Vec<f64>,
+    /// Which y axis the curve uses.
+    pub axis: Axis,
+    /// How it is drawn.
+    pub style: LineStyle,
+    /// Index into [`PALETTE`] (taken modulo its length).
+    pub color: usize,
+}
+
+impl Curve {
+    /// A solid curve on the left axis in palette colour 0.
+    pub fn new(label: impl Into<String>, x: Vec<f64>, y: Vec<f64>) -> Self {
+        Curve { label: label.into(), x, y, ..Curve::default() }
+    }
+
+    /// The same curve with another line style.
+    pub fn with_style(mut self, style: LineStyle) -> Self {
+        self.style = style;
+        self
+    }
+
+    /// The same curve with another palette colour.
+    pub fn with_color(mut self, color: usize) -> Self {
+        self.color = color;
+        self
+    }
+
+    /// The same curve on another axis.
+    pub fn on_axis(mut self, axis: Axis) -> Self {
+        self.axis = axis;
+        self
+    }
+}
+
+/// A vertical marker line across the whole plotting area (e.g. "concrete limit").
+///
+/// Drawn dashed in dark grey (successive lines use different dash patterns). A line outside
+/// the x range (or at x <= 0 on a log axis) is not drawn and gets no legend entry.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct VLine {
+    /// Position on the x axis.
+    pub x: f64,
+    /// Legend text (empty: no legend entry).
+    pub label: String,
+}
+
+impl VLine {
+    /// A marker line at `x`.
+    pub fn new(x: f64, label: impl Into<String>) -> Self {
+        VLine { x, label: label.into() }
+    }
+}
+
+/// A complete figure description.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Chart {
+    /// Title at the top of the figure.
+    pub title: String,
+    /// x axis label, with units.
+    pub x_label: String,
+    /// Left y axis label, with units.
+    pub y_label: String,
+    /// Right y axis label; when `Some`, curves with [`Axis::Right`] are drawn against a
+    /// secondary axis on the right.
+    pub y2_label: Option<String>,
+    /// Logarithmic (base 10) x axis.
+    pub x_log: bool,
+    /// x range; `None`: from the data (and vertical lines) with ~5% padding.
+    pub x_range: Option<(f64, f64)>,
+    /// Left y range; `None`: from the data with ~5% padding.
+    pub y_range: Option<(f64, f64)>,
+    /// Right y range; `None`: from the data with ~5% padding.
+    pub y2_range: Option<(f64, f64)>,
+    /// The data series, drawn in order (later on top).
+    pub curves: Vec<Curve>,
+    /// Vertical marker lines.
+    pub vlines: Vec<VLine>,
+}
+
+impl Chart {
+    /// A chart with the given title and axis labels and nothing else.
+    pub fn new(title: impl Into<String>, x_label: impl Into<String>, y_label: impl Into<String>) -> Self {
+        Chart { title: title.into(), x_label: x_label.into(), y_label: y_label.into(), ..Chart::default() }
+    }
+}
+
+/// Render `chart` as a [`WIDTH`] x [`HEIGHT`] PNG at `path`.
+///
+/// The directory of `path` must exist. The image is drawn into a temporary file
+/// `.<file>.tmp.<pid>.<n>.png` in the same directory and renamed over `path` when complete, so
+/// `path` is either the old file or the complete new one. Any failure (invalid ranges,
+/// mismatched curve lengths, no finite point in any curve, missing directory, backend or
+/// encoder errors) removes the temporary file and returns [`Error::Plot`] with `id`.
+pub fn render_png(id: &str, chart: &Chart, path: &Path) -> Result<()> {
+    let fail = |message: String| Error::Plot { id: id.to_string(), message };
+    if !fonts_registered() {
+        return Err(fail("could not load the bundled DejaVu Sans font".to_string()));
+    }
+    let plan = Plan::new(chart).map_err(&fail)?;
+    let tmp = crate::render::io::temp_sibling(path, ".png").map_err(|e| fail(e.to_string()))?;
+
+    // `catch_unwind` is a last line of defence: plotters may panic on inputs we did not
+    // foresee, and a figure must never bring down the whole run.
+    let drawn = catch_unwind(AssertUnwindSafe(|| -> std::result::Result<(), String> {
+        let root = BitMapBackend::new(&tmp, (WIDTH, HEIGHT)).into_drawing_area();
+        root.fill(&WHITE).map_err(msg)?;
+        let (x0, x1) = plan.x;
+        if plan.x_log {
+            draw_chart(&root, chart, &plan, (x0..x1).log_scale())?;
+        } else {
+            draw_chart(&root, chart, &plan, x0..x1)?;
+        }
+        root.present().map_err(|e| format!("cannot write {}: {e}", tmp.display()))
+        // `root` (and the backend) is dropped here, before the rename.
+    }));
+    let drawn = match drawn {
+        Ok(r) => r,
+        Err(panic) => Err(format!("plotting backend panicked: {}", panic_text(&*panic))),
+    };
+    match drawn {
+        Ok(()) => crate::render::io::commit_temp(&tmp, path).map_err(|e| fail(e.to_string())),
+        Err(message) => {
+            // Dropping an unsaved backend writes the file; remove whatever is there.
+            let _ = std::fs::remove_file(&tmp);
+            Err(fail(message))
+        }
+    }
+}
+
+/// Register the bundled DejaVu Sans as "sans-serif" (once per process); `false` on failure.
+pub(crate) fn fonts_registered() -> bool {
+    static REGISTERED: OnceLock<bool> = OnceLock::new();
+    *REGISTERED.get_or_init(|| {
+        let normal = register_font("sans-serif", FontStyle::Normal, dejavu::sans::regular());
+        let bold = register_font("sans-serif", FontStyle::Bold, dejavu::sans::bold());
+        normal.is_ok() && bold.is_ok()
+    })
+}
+
+/// Display any error as a `String` (for `map_err`).
+pub(crate) fn msg<E: std::fmt::Display>(e: E) -> String {
+    e.to_string()
+}
+
+/// The message of a caught panic.
+pub(crate) fn panic_text(panic: &(dyn std::any::Any + Send)) -> String {
+    if let Some(s) = panic.downcast_ref::<&str>() {
+        (*s).to_string()
+    } else if let Some(s) = panic.downcast_ref::<String>() {
+        s.clone()
+    } else {
+        "unknown panic".to_string()
+    }
+}
+
+/// Tick label for `v` on a linear axis spanning `range`.
+///
+/// Enough significant digits (at least 6) to tell ticks apart, trailing zeros trimmed, and
+/// floating-point noise around zero (e.g. `1e-17` for a tick meant to be 0) shown as `0`.
+pub(crate) fn tick_label(v: f64, (lo, hi): (f64, f64)) -> String {
+    let span = (hi - lo).abs();
+    if v.abs() <= span * 1e-9 {
+        return "0".to_string();
+    }
+    let magnitude = lo.abs().max(hi.abs());
+    let digits = if span > 0.0 { ((magnitude / span).log10().ceil() + 3.0).clamp(6.0, 15.0) as usize } else { 6 };
+    fmt_sig(v, digits)
+}
+
+/// Text style in the bundled sans-serif font.
+pub(crate) fn font(size: f64, style: FontStyle) -> TextStyle<'static> {
+    TextStyle::from(FontDesc::new(FontFamily::SansSerif, size, style))
+}
+
+/// The title font: [`TITLE_SIZE`] bold, shrunk (down to [`TICK_SIZE`]) until `title` fits the
+/// image width with a margin.
+pub(crate) fn title_font(
+    root: &DrawingArea<BitMapBackend<'_>, Shift>,
+    title: &str,
+) -> std::result::Result<TextStyle<'static>, String> {
+    let max_width = WIDTH.saturating_sub(60);
+    let mut size = TITLE_SIZE;
+    loop {
+        let style = font(size, FontStyle::Bold);
+        let (w, _) = root.estimate_text_size(title, &style).map_err(msg)?;
+        if w <= max_width || size <= TICK_SIZE {
+            return Ok(style);
+        }
+        size -= 1.0;
+    }
+}
+
+/// Palette colour `i` (modulo the palette length).
+fn palette(i: usize) -> RGBColor {
+    let (r, g, b) = PALETTE[i % PALETTE.len()];
+    RGBColor(r, g, b)
+}
+
+/// `c` mixed with `frac` white (0 = unchanged, 1 = white).
+fn tint(c: RGBColor, frac: f64) -> RGBColor {
+    let mix = |v: u8| (f64::from(v) + (255.0 - f64::from(v)) * frac).round().clamp(0.0, 255.0) as u8;
+    RGBColor(mix(c.0), mix(c.1), mix(c.2))
+}
