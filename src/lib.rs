@@ -20,7 +20,8 @@
 //! `e_A = v2/v1`, the impact duration, the twist angle and where the ball's energy went.
 //!
 //! ## Layout
-//! - [`params`]: parameter structs (defaults = the paper), validation, `--config` overrides.
+//! - [`params`]: parameter structs (defaults = the paper), each flag parameter declared once
+//!   (key, unit, range, doc), validation, `--config` overrides.
 //! - [`racket`]: a racket file or preset in spec-sheet units (mass, balance, swingweight, Hz),
 //!   fitted exactly to the discrete beam.
 //! - [`model`]: the contact law (linear or stiffening strings), the discrete beam and its modes,
@@ -31,8 +32,8 @@
 //! - [`experiments`]: one module per result of the paper (figure -> module table there).
 //! - [`table`], [`plot`], [`io`]: result tables, the one look of every figure, atomic writes.
 //! - [`report`]: the paper's numbers beside ours.
-//! - [`sweep`]: parallel, streamed parameter sweeps.
-//! - [`map`], [`heatmap`]: string-face maps and their heat-map figures.
+//! - [`study`]: parallel, streamed parameter sweeps, string-face maps, swing-speed comparisons.
+//! - [`heatmap`], [`render`]: heat-map figures and the files of a map.
 //!
 //! ## Example
 //! The Fig 4 impact with the paper's numerics:
@@ -56,16 +57,16 @@ pub mod error;
 pub mod experiments;
 pub mod heatmap;
 pub mod io;
-pub mod map;
 pub mod modal;
 pub mod model;
 pub mod output;
 pub mod params;
 pub mod plot;
 pub mod racket;
+pub mod render;
 pub mod report;
 pub mod solver;
-pub mod sweep;
+pub mod study;
 pub mod table;
 
 pub use error::{Error, Result};

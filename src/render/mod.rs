@@ -1,0 +1,3 @@
+//! Output: the files of a map ([`map_files`]).
+
+pub mod map_files;
