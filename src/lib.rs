@@ -20,7 +20,8 @@
 //! `e_A = v2/v1`, the impact duration, the twist angle and where the ball's energy went.
 //!
 //! ## Layout
-//! - [`params`]: parameter structs (defaults = the paper), validation, `--config` overrides.
+//! - [`params`]: parameter structs (defaults = the paper), each flag parameter declared once
+//!   (key, unit, range, doc), validation, `--config` overrides.
 //! - [`racket`]: a racket file or preset in spec-sheet units (mass, balance, swingweight, Hz),
 //!   fitted exactly to the discrete beam.
 //! - [`model`]: physics only: the ball + strings contact law behind one trait (linear or
@@ -33,11 +34,10 @@
 //!   result with its one field table, and the time series.
 //! - [`experiments`]: one module per result of the paper (figure -> module table there), each
 //!   with its paper claims; they run on a racket given as an argument ([`experiments::Context`]).
+//! - [`study`]: parallel, streamed parameter sweeps, string-face maps, swing-speed comparisons.
 //! - [`render`]: result tables, the one look of every figure, heat maps, the text of one
-//!   impact, atomic writes.
+//!   impact, the files of a map, atomic writes.
 //! - [`report`]: the paper's numbers beside ours, collected from the experiments' claims.
-//! - [`sweep`]: parallel, streamed parameter sweeps.
-//! - [`map`]: string-face maps (drawn by [`render::heatmap`]).
 //!
 //! ## Example
 //! The Fig 4 impact with the paper's numerics:
@@ -59,14 +59,13 @@
 
 pub mod error;
 pub mod experiments;
-pub mod map;
 pub mod model;
 pub mod params;
 pub mod racket;
 pub mod render;
 pub mod report;
 pub mod solve;
-pub mod sweep;
+pub mod study;
 
 pub use error::{Error, Result};
 pub use params::Params;

@@ -6,9 +6,9 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use racket_impact::map::{params_at, DiffMap, Face, FaceMap, Quantity};
 use racket_impact::params::{ks_from_tension_lb, LoadRule, Overrides, Params};
 use racket_impact::render::heatmap::{self, contour_segments, HeatMap};
+use racket_impact::study::map::{params_at, DiffMap, Face, FaceMap, Quantity};
 use racket_impact::{racket, simulate};
 
 fn bin() -> Command {

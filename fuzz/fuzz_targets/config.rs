@@ -4,7 +4,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use racket_impact::params::{Overrides, Params};
-use racket_impact::solver::Model;
+use racket_impact::solve::Model;
 
 fuzz_target!(|data: &[u8]| {
     let path = std::path::Path::new("fuzz.toml");

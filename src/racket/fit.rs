@@ -188,7 +188,7 @@ fn fit_ei(racket: &Racket, f_hz: f64, segments: usize) -> Result<f64> {
         }
         trial.ei *= (f_hz / f).powi(2);
     }
-    let (lo, hi) = params::ranges::EI;
+    let (lo, hi) = const { params::keys::EI.range() };
     if trial.ei.is_finite() && (lo..=hi).contains(&trial.ei) {
         Ok(trial.ei)
     } else {

@@ -1,6 +1,6 @@
 //! Everything that turns numbers into files and text: result tables and their CSV, the one
-//! look of every figure, heat maps of the string face, the text and CSV of one impact, and
-//! atomic file output.
+//! look of every figure, heat maps of the string face, the text and CSV of one impact, the files
+//! of a string-face map, and atomic file output.
 //!
 //! | module | job |
 //! |---|---|
@@ -8,6 +8,7 @@
 //! | [`plot`] | line charts ([`plot::Chart`]) drawn to PNG |
 //! | [`heatmap`] | heat maps with contours ([`heatmap::HeatMap`]) drawn to PNG |
 //! | [`impact`] | one impact as text, CSV and a time-series file |
+//! | [`map_files`] | the three files of a string-face map, written together |
 //! | [`io`] | atomic, deterministic file writes |
 //!
 //! Nothing here runs a solver: the layers above compute, and hand tables and charts down.
@@ -15,5 +16,6 @@
 pub mod heatmap;
 pub mod impact;
 pub mod io;
+pub mod map_files;
 pub mod plot;
 pub mod table;

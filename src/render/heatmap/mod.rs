@@ -1,5 +1,5 @@
 //! Heat maps of a field sampled on a rectangular grid, with contour lines: the look of the
-//! string-face maps ([`crate::map`]).
+//! string-face maps ([`crate::study::map`]).
 //!
 //! A [`HeatMap`] is a grid `xs` x `ys` with one value per grid point (`z`, row-major: x slowest,
 //! NaN = no data), shaded by a perceptually ordered colour map ([`viridis`]) or, for signed

@@ -7,8 +7,10 @@
 
 use rayon::prelude::*;
 
+use std::path::Path;
+
 use crate::error::{Error, Result};
-use crate::params::{Overrides, Params};
+use crate::params::{keys, Overrides, Params};
 use crate::solve::{simulate, ImpactResult};
 
 /// Impacts computed per parallel chunk (bounded memory, deterministic order).
@@ -98,36 +100,9 @@ pub struct Sweep {
     pub axes: Vec<Axis>,
 }
 
-/// Column name of a parameter, with its SI unit.
+/// Column name of a parameter, with its SI unit (`unknown` for a key that is not a parameter).
 pub fn column_name(key: &str) -> &'static str {
-    match key {
-        "x" => "x_m",
-        "r" => "r_m",
-        "ks" => "ks_n_per_m",
-        "ei" => "ei_n_m2",
-        "mass" => "mass_kg",
-        "length" => "length_m",
-        "ix" => "ix_kg_m2",
-        "half-width" => "half_width_m",
-        "mb" => "mb_kg",
-        "k1" => "k1_n_per_m",
-        "p" => "p",
-        "v1" => "v1_m_per_s",
-        "segments" => "segments",
-        "load" => "load",
-        "solver" => "solver",
-        "dt" => "dt_s",
-        "frame" => "frame",
-        "grip" => "grip",
-        "strings" => "strings",
-        "string-stiffening" => "string_stiffening",
-        "stiffening-deflection" => "stiffening_deflection_m",
-        "hand-stiffness" => "hand_stiffness_n_per_m",
-        "hand-damping" => "hand_damping_n_s_per_m",
-        "grip-length" => "grip_length_m",
-        // parse_spec accepts only Overrides::KEYS, all named above
-        _ => "unknown",
-    }
+    keys::find(key).map_or("unknown", |spec| spec.column)
 }
 
 /// Result columns written for every impact.
@@ -174,6 +149,43 @@ fn result_fields(r: &ImpactResult, p: &Params) -> [String; 14] {
 }
 
 impl Sweep {
+    /// The sweep the command line asks for: the varied parameters as `--KEY SPEC` pairs over
+    /// the defaults (the paper's, or those of `racket`, a file or preset, fitted at the config
+    /// file's segment count) and the fixed values of the `config` file. The solver is the
+    /// [`default_solver`] unless given. Every point is validated before anything runs.
+    pub fn from_pairs(racket: Option<&str>, config: Option<&Path>, pairs: &[String]) -> Result<Sweep> {
+        let mut base = crate::study::config_file(config)?;
+        if pairs.len() % 2 != 0 || pairs.is_empty() {
+            return Err(Error::invalid(
+                "sweep",
+                pairs.join(" "),
+                "give parameters as --KEY SPEC pairs, e.g. --ks 2e4,4e4",
+            ));
+        }
+        let mut axes: Vec<Axis> = Vec::new();
+        for pair in pairs.chunks(2) {
+            let key = pair[0].strip_prefix("--").ok_or_else(|| {
+                Error::invalid("sweep", &pair[0], "expected --KEY before each SPEC (e.g. --x 0.02:0.60:50)")
+            })?;
+            if axes.iter().any(|ax| ax.key == key) {
+                return Err(Error::invalid("sweep", key, "each parameter may be given once"));
+            }
+            axes.push(parse_spec(key, &pair[1])?);
+        }
+        let defaults = match racket {
+            Some(arg) => {
+                let spec = crate::racket::load(arg)?;
+                let only_n = Overrides { segments: base.segments, ..Overrides::default() };
+                crate::racket::resolve(Some(&spec), &only_n)?.0
+            }
+            None => Params::default(),
+        };
+        base.solver = default_solver(&base, &axes);
+        let sweep = Sweep { defaults, base, axes };
+        sweep.validate_all()?; // a bad value anywhere fails before anything is written
+        Ok(sweep)
+    }
+
     /// Number of impacts.
     pub fn len(&self) -> u64 {
         self.axes.iter().map(|a| a.values.len() as u64).product()

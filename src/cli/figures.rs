@@ -1,0 +1,69 @@
+//! `figures`: regenerate the paper's experiments, a CSV table and a PNG figure each.
+
+use std::path::PathBuf;
+
+use clap::Args;
+use racket_impact::params::Params;
+use racket_impact::Result;
+
+use super::common::outln;
+
+#[derive(Args, Debug)]
+pub struct FiguresArgs {
+    /// Only this experiment (repeatable); see --list
+    #[arg(long = "only", value_name = "ID")]
+    pub only: Vec<String>,
+    /// Output directory (created if missing); default figures/, or figures/racket-NAME with --racket
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Run the experiments on this racket (file or preset) instead of the paper's; the impacts
+    /// stay where the paper puts them, along the whole length
+    #[arg(long)]
+    pub racket: Option<String>,
+    /// List the experiment ids with their titles and paper references, and exit
+    #[arg(long)]
+    pub list: bool,
+}
+
+/// Run the selected experiments, writing a CSV table and a PNG figure each.
+pub fn run(a: FiguresArgs) -> Result<()> {
+    use racket_impact::experiments;
+    if a.list {
+        for e in experiments::registry() {
+            outln!("{:<24} {}\n{:<24} ({})", e.id, e.title, "", e.paper_ref);
+        }
+        return Ok(());
+    }
+    let selected = if a.only.is_empty() {
+        experiments::registry()
+    } else {
+        a.only.iter().map(|id| experiments::find(id)).collect::<Result<Vec<_>>>()?
+    };
+    let mut ctx = experiments::Context::paper();
+    let out = match &a.racket {
+        Some(arg) => {
+            let spec = racket_impact::racket::load(arg)?;
+            let fitted = spec.to_racket(Params::paper().numerics.segments)?;
+            ctx = experiments::Context::with_racket(fitted.racket, fitted.ball);
+            let stem = std::path::Path::new(arg).file_stem().and_then(|s| s.to_str()).unwrap_or("custom");
+            let name: String =
+                stem.chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' { c } else { '_' }).collect();
+            a.out.clone().unwrap_or_else(|| PathBuf::from("figures").join(format!("racket-{name}")))
+        }
+        None => a.out.clone().unwrap_or_else(|| PathBuf::from("figures")),
+    };
+    racket_impact::render::io::ensure_dir(&out)?;
+    for e in &selected {
+        let start = std::time::Instant::now();
+        let table = experiments::run_and_write(e, &ctx, &out)?;
+        eprintln!(
+            "{:<24} {:>4} rows  {:>6.2} s  -> {}/{}.{{csv,png}}",
+            e.id,
+            table.rows.len(),
+            start.elapsed().as_secs_f64(),
+            out.display(),
+            e.id
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,70 @@
+//! `speed`: the outgoing ball speed for a swing and an incoming ball, compared across string
+//! tensions or rackets.
+
+use clap::{Args, ValueEnum};
+use racket_impact::study::speed::{SpeedRequest, SpeedUnit};
+use racket_impact::Result;
+
+use super::common::{out, Common, Format};
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+pub enum UnitArg {
+    /// kilometres per hour
+    Kmh,
+    /// miles per hour
+    Mph,
+    /// metres per second
+    Ms,
+}
+
+impl UnitArg {
+    /// The unit it names.
+    fn unit(self) -> SpeedUnit {
+        match self {
+            UnitArg::Kmh => SpeedUnit::KMH,
+            UnitArg::Mph => SpeedUnit::MPH,
+            UnitArg::Ms => SpeedUnit::MS,
+        }
+    }
+}
+
+#[derive(Args, Debug)]
+pub struct SpeedArgs {
+    #[command(flatten)]
+    pub common: Common,
+    /// Racket speed at the impact point, towards the ball (in --unit)
+    #[arg(long, allow_hyphen_values = true)]
+    pub swing: f64,
+    /// Incoming ball speed, towards the racket (in --unit); 0 for a serve
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub incoming: f64,
+    /// Unit of the speeds
+    #[arg(long, value_enum, default_value_t = UnitArg::Kmh)]
+    pub unit: UnitArg,
+    /// Compare these string tensions, lb (e.g. 50,60); the first is the reference
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub compare_tension_lb: Vec<f64>,
+    /// Compare these rackets (files or presets, e.g. light,players); the first is the reference
+    #[arg(long, value_delimiter = ',')]
+    pub compare_racket: Vec<String>,
+}
+
+/// Run the comparison and print it in the chosen format.
+pub fn run(a: SpeedArgs) -> Result<()> {
+    let request = SpeedRequest {
+        sources: a.common.sources(),
+        swing: a.swing,
+        incoming: a.incoming,
+        unit: a.unit.unit(),
+        compare_tension_lb: a.compare_tension_lb,
+        compare_racket: a.compare_racket,
+    };
+    let comparison = request.run()?;
+    let text = match a.common.format {
+        Format::Csv => comparison.table()?.to_csv(),
+        Format::Json => comparison.json()?,
+        Format::Text => comparison.text(),
+    };
+    out!("{text}");
+    Ok(())
+}

@@ -1,0 +1,122 @@
+//! The impact parameters, each declared once: its flag and config key, help, unit, range (or
+//! the rule that checks it), sweep column and its place in [`Params`]. The specs
+//! ([`ALL`], one constant each), [`Overrides`] with its key list, setter, merge and apply, and
+//! the validation messages all come from this table.
+
+use serde::{Deserialize, Serialize};
+
+use super::spec::{declare_params, Check, FlagValue, ParamSpec};
+use super::{Frame, Grip, LoadRule, Params, SolverKind, StringLaw};
+use crate::error::{Error, Result};
+
+declare_params! {
+    /// Impact distance from the tip, m (0 <= x <= length)
+    X x: f64 = "x" at impact.x,
+        what "impact point", unit "m", column "x_m", rule;
+    /// Impact distance from the long axis, m (|r| <= half-width)
+    R r: f64 = "r" at impact.r,
+        what "off-axis distance", unit "m", column "r_m", rule;
+    /// String-plane stiffness, N/m (1 ..= 1e12)
+    KS ks: f64 = "ks" at strings.ks,
+        what "string-plane stiffness", unit "N/m", column "ks_n_per_m", within(1.0, 1.0e12);
+    /// Frame bending stiffness EI, N m^2 (1e-2 ..= 1e9)
+    EI ei: f64 = "ei" at racket.ei,
+        what "bending stiffness EI", unit "N m^2", column "ei_n_m2", within(1.0e-2, 1.0e9);
+    /// Racket mass, kg (1e-3 ..= 1e6)
+    MASS mass: f64 = "mass" at racket.mass,
+        what "racket mass", unit "kg", column "mass_kg", within(1.0e-3, 1.0e6);
+    /// Racket length, m (0.05 ..= 5)
+    LENGTH length: f64 = "length" at racket.length,
+        what "racket length", unit "m", column "length_m", within(0.05, 5.0);
+    /// Moment of inertia about the long axis, kg m^2 (1e-7 ..= 1e4)
+    IX ix: f64 = "ix" at racket.ix,
+        what "moment of inertia about the long axis", unit "kg m^2", column "ix_kg_m2", within(1.0e-7, 1.0e4);
+    /// Half-width of the string face, m (1e-3 ..= 1): the largest |r|
+    HALF_WIDTH half_width: f64 = "half-width" at racket.half_width,
+        what "string-face half-width", unit "m", column "half_width_m", within(1.0e-3, 1.0);
+    /// Ball mass, kg (1e-4 ..= 10)
+    MB mb: f64 = "mb" at ball.mass,
+        what "ball mass", unit "kg", column "mb_kg", within(1.0e-4, 10.0);
+    /// Ball compression stiffness k1, N/m (1 ..= 1e9)
+    K1 k1: f64 = "k1" at ball.k1,
+        what "ball compression stiffness", unit "N/m", column "k1_n_per_m", within(1.0, 1.0e9);
+    /// Ball hysteresis exponent p (1 < p <= 10)
+    P p: f64 = "p" at ball.p,
+        what "hysteresis exponent", unit "", column "p", rule;
+    /// Incident ball speed, m/s (1e-3 ..= 1e3)
+    V1 v1: f64 = "v1" at impact.v1,
+        what "incident ball speed", unit "m/s", column "v1_m_per_s", within(1.0e-3, 1.0e3);
+    /// Number of beam segments N (4..=400)
+    SEGMENTS segments: usize = "segments" at numerics.segments,
+        what "number of beam segments", unit "", column "segments", rule;
+    /// Load rule: node (the paper's) or hat
+    LOAD load: LoadRule = "load" at numerics.load,
+        what "load rule", unit "", column "load", choice;
+    /// Time step, s (default: converged automatic step; must be below the stability limit)
+    DT dt: f64 = "dt" at numerics.dt,
+        what "time step", unit "s", column "dt_s", rule;
+    /// Solver: fd (explicit time stepping, the reference) or modal (modal superposition)
+    SOLVER solver: SolverKind = "solver" at numerics.solver,
+        what "solver", unit "", column "solver", choice;
+    /// Frame model: beam (the paper's flexible beam) or rigid (closed-form rigid racket)
+    FRAME frame: Frame = "frame" at variants.frame,
+        what "frame model", unit "", column "frame", choice;
+    /// Grip: free (the paper's) or hand (springs and dampers over the grip length)
+    GRIP grip: Grip = "grip" at variants.grip,
+        what "grip", unit "", column "grip", choice;
+    /// String law: linear (the paper's) or stiffening
+    STRINGS strings: StringLaw = "strings" at variants.strings,
+        what "string law", unit "", column "strings", choice;
+    /// Stiffening fraction s at the stiffening deflection (0 ..= 10; default 0.10)
+    STRING_STIFFENING string_stiffening: f64 = "string-stiffening" at variants.string_stiffening,
+        what "string stiffening fraction", unit "", column "string_stiffening", within(0.0, 10.0);
+    /// Deflection at which the strings are stiffer by s, m (1e-4 ..= 1; default 0.04)
+    STIFFENING_DEFLECTION stiffening_deflection: f64 = "stiffening-deflection" at variants.stiffening_deflection,
+        what "stiffening deflection", unit "m", column "stiffening_deflection_m", within(1.0e-4, 1.0);
+    /// Total hand stiffness, N/m (0 ..= 1e7; default 5e3)
+    HAND_STIFFNESS hand_stiffness: f64 = "hand-stiffness" at variants.hand_stiffness,
+        what "hand stiffness", unit "N/m", column "hand_stiffness_n_per_m", within(0.0, 1.0e7);
+    /// Total hand damping, N s/m (0 ..= 1e4; default 10)
+    HAND_DAMPING hand_damping: f64 = "hand-damping" at variants.hand_damping,
+        what "hand damping", unit "N s/m", column "hand_damping_n_s_per_m", within(0.0, 1.0e4);
+    /// Grip length from the butt, m (up to half the racket; default 0.15)
+    GRIP_LENGTH grip_length: f64 = "grip-length" at variants.grip_length,
+        what "grip length", unit "m", column "grip_length_m", rule;
+}
+
+/// The declaration of `key`, if it is a parameter.
+pub fn find(key: &str) -> Option<&'static ParamSpec> {
+    ALL.iter().find(|s| s.key == key)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::params::spec::Values;
+
+    #[test]
+    fn every_declared_key_is_a_config_key_with_its_flags_value() {
+        for spec in &ALL {
+            let (flag, toml_value) = match spec.values {
+                Values::Number => ("0.5".to_string(), "0.5".to_string()),
+                Values::Count => ("10".to_string(), "10".to_string()),
+                Values::Choice(choices) => (choices[1].name.to_string(), format!("\"{}\"", choices[1].name)),
+            };
+            let mut from_flag = Overrides::default();
+            from_flag.set(spec.key, &flag).unwrap();
+            let from_config: Overrides = toml::from_str(&format!("{} = {toml_value}", spec.key)).unwrap();
+            assert_eq!(from_flag, from_config, "{}", spec.key);
+            assert_ne!(from_flag, Overrides::default(), "{}", spec.key);
+            assert_eq!(find(spec.key), Some(spec));
+        }
+        assert_eq!(Overrides::KEYS.to_vec(), ALL.iter().map(|s| s.key).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn range_messages_name_the_key_the_range_and_the_unit() {
+        let msg = KS.check(0.5).unwrap_err().to_string();
+        assert_eq!(msg, "invalid ks = 0.5: string-plane stiffness must satisfy 1e0 <= ks <= 1e12 N/m");
+        assert_eq!(EI.range(), (1.0e-2, 1.0e9));
+        assert!(X.check(1e9).is_ok(), "x is checked by the impact's own rule");
+    }
+}

@@ -1,0 +1,124 @@
+//! Parameters of one impact: plain serde structs whose defaults are the paper's values
+//! (SPEC.md section 3), each validated once at the boundary.
+//!
+//! Every field's doc gives its unit and allowed range; [`Params::validate`] returns the same
+//! sentence as an [`Error::InvalidParameter`](crate::Error::InvalidParameter) naming the field
+//! by its flag / config key.
+//!
+//! Each parameter a flag or a config file can set is declared once, in [`keys`]: its key,
+//! help, unit, range and place in [`Params`]. [`Overrides`] (the flags and the config file),
+//! its key list and the validation messages come from that declaration.
+//!
+//! - [`physical`]: the ball, the strings, the racket and the impact.
+//! - [`numerics`]: segments, load rule, time step, solver.
+//! - [`variants`]: frame model, grip, string law.
+//! - [`spec`] and [`keys`]: what a declaration is, and the declarations.
+//! - [`overrides`]: the `--config` file.
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::Result;
+
+pub mod keys;
+pub mod numerics;
+pub mod overrides;
+pub mod physical;
+pub mod spec;
+pub mod variants;
+
+pub use keys::Overrides;
+pub use numerics::{check_segments, LoadRule, Numerics, SolverKind, MAX_SEGMENTS, MIN_SEGMENTS};
+pub(crate) use overrides::{parse_toml, read_file};
+pub use physical::{ellipse_half_width, Ball, Impact, Profile, Racket, Strings, STIFFNESS_REL};
+pub use variants::{Frame, Grip, StringLaw, Variants};
+
+/// Acceleration of gravity used for drop tests, m/s^2.
+pub const G: f64 = 9.81;
+/// 100 inches in metres (the ITF drop height).
+pub const DROP_HEIGHT_100_IN: f64 = 2.54;
+
+/// Speed of a ball dropped from `height` (m) at impact, `sqrt(2 g h)`, m/s.
+pub fn drop_speed(height: f64) -> f64 {
+    (2.0 * G * height).sqrt()
+}
+
+/// Calibration of SPEC.md section 3: `k_s` is proportional to the tension, 60 lb = 4e4 N/m.
+pub fn ks_from_tension_lb(tension_lb: f64) -> f64 {
+    4.0e4 * tension_lb / 60.0
+}
+
+/// Everything one impact needs.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct Params {
+    /// The ball.
+    pub ball: Ball,
+    /// The string bed.
+    pub strings: Strings,
+    /// The racket.
+    pub racket: Racket,
+    /// The impact point and speed.
+    pub impact: Impact,
+    /// Discretisation.
+    pub numerics: Numerics,
+    /// Model variants (the paper's model by default).
+    #[serde(default)]
+    pub variants: Variants,
+}
+
+impl Params {
+    /// The paper's racket, ball and strings at the Fig 4 impact, with the paper's numerics.
+    pub fn paper() -> Self {
+        Params { numerics: Numerics::paper(), ..Params::default() }
+    }
+
+    /// Validate every part; the first violation is returned.
+    pub fn validate(&self) -> Result<()> {
+        self.ball.validate()?;
+        self.strings.validate()?;
+        self.racket.validate()?;
+        self.impact.validate(&self.racket)?;
+        self.numerics.validate()?;
+        self.variants.validate(&self.racket, self.numerics.solver)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn paper_parameters_are_valid() {
+        Params::paper().validate().unwrap();
+        Params::default().validate().unwrap();
+    }
+
+    #[test]
+    fn hysteresis_exponent_of_one_is_rejected() {
+        let mut p = Params::default();
+        p.ball.p = 1.0;
+        let msg = p.validate().unwrap_err().to_string();
+        assert!(msg.starts_with("invalid p = 1:"), "{msg}");
+    }
+
+    #[test]
+    fn impact_beyond_the_butt_is_rejected() {
+        let mut p = Params::default();
+        p.impact.x = 0.72;
+        let msg = p.validate().unwrap_err().to_string();
+        assert!(msg.contains("invalid x = 0.72") && msg.contains("0 <= x <= L"), "{msg}");
+    }
+
+    #[test]
+    fn nan_stiffness_is_rejected() {
+        let mut p = Params::default();
+        p.strings.ks = f64::NAN;
+        assert!(p.validate().unwrap_err().to_string().contains("invalid ks = NaN"));
+    }
+
+    #[test]
+    fn tension_calibration_is_sixty_pounds_for_4e4() {
+        assert_eq!(ks_from_tension_lb(60.0), 4.0e4);
+        assert!((ks_from_tension_lb(50.0) - 4.0e4 * 5.0 / 6.0).abs() < 1e-9);
+    }
+}

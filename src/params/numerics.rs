@@ -1,0 +1,141 @@
+//! Discretisation and time stepping: the segment count, the load rule, the time step and the
+//! solver.
+
+use serde::{Deserialize, Serialize};
+
+use super::keys;
+use super::spec::{Choice, FlagValue, Values};
+use crate::error::{Error, Result};
+
+/// Largest allowed number of segments.
+pub const MAX_SEGMENTS: usize = 400;
+/// Smallest allowed number of segments (a free-free beam needs interior curvature points).
+pub const MIN_SEGMENTS: usize = 4;
+
+/// How the contact force is applied to the discrete beam (SPEC.md section 1, Contact).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum LoadRule {
+    /// The paper's scheme: the whole force on the node nearest `x` (ties go to the higher index).
+    Node,
+    /// Linear (hat) sharing between the two nodes around `x`; converges as O(N^-2).
+    #[default]
+    Hat,
+}
+
+impl LoadRule {
+    /// The name used on the command line and in configs.
+    pub fn name(self) -> &'static str {
+        match self {
+            LoadRule::Node => "node",
+            LoadRule::Hat => "hat",
+        }
+    }
+}
+
+impl std::str::FromStr for LoadRule {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self> {
+        match s {
+            "node" => Ok(LoadRule::Node),
+            "hat" => Ok(LoadRule::Hat),
+            other => Err(Error::invalid("load", other, "must be 'node' or 'hat'")),
+        }
+    }
+}
+
+impl FlagValue for LoadRule {
+    const VALUES: Values = Values::Choice(&[Choice { name: "node", help: None }, Choice { name: "hat", help: None }]);
+    fn parse_flag(_key: &'static str, text: &str) -> Result<Self> {
+        text.trim().parse()
+    }
+}
+
+/// Which solver integrates the impact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum SolverKind {
+    /// Explicit finite differences in time (velocity Verlet), the reference.
+    #[default]
+    Fd,
+    /// Modal superposition with exact modal propagation and a contact-sized step.
+    Modal,
+}
+
+impl SolverKind {
+    /// The name used on the command line and in configs.
+    pub fn name(self) -> &'static str {
+        match self {
+            SolverKind::Fd => "fd",
+            SolverKind::Modal => "modal",
+        }
+    }
+}
+
+impl std::str::FromStr for SolverKind {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self> {
+        match s {
+            "fd" => Ok(SolverKind::Fd),
+            "modal" => Ok(SolverKind::Modal),
+            other => Err(Error::invalid("solver", other, "must be 'fd' or 'modal'")),
+        }
+    }
+}
+
+impl FlagValue for SolverKind {
+    const VALUES: Values = Values::Choice(&[Choice { name: "fd", help: None }, Choice { name: "modal", help: None }]);
+    fn parse_flag(_key: &'static str, text: &str) -> Result<Self> {
+        text.trim().parse()
+    }
+}
+
+/// Discretisation and time stepping.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Numerics {
+    /// Number of beam segments `N` (N+1 nodes); 4 <= N <= 400. Paper: 39.
+    pub segments: usize,
+    /// Load rule; `node` is the paper's, `hat` the default for users' impacts.
+    pub load: LoadRule,
+    /// Time step, s; `None` picks a converged default. Must be finite, > 0 and below the
+    /// stability limit `2 / omega_max` (checked when the beam is built).
+    pub dt: Option<f64>,
+    /// The solver: `fd` (explicit, the reference) or `modal`.
+    #[serde(default)]
+    pub solver: SolverKind,
+}
+
+impl Default for Numerics {
+    fn default() -> Self {
+        Numerics { segments: 39, load: LoadRule::Hat, dt: None, solver: SolverKind::Fd }
+    }
+}
+
+impl Numerics {
+    /// The paper's numerics: N = 39 with the force on the nearest node.
+    pub fn paper() -> Self {
+        Numerics { segments: 39, load: LoadRule::Node, dt: None, solver: SolverKind::Fd }
+    }
+
+    /// Check the discretisation (the dt stability limit is checked when the beam is built).
+    pub fn validate(&self) -> Result<()> {
+        check_segments(self.segments)?;
+        if let Some(dt) = self.dt {
+            keys::DT.positive(dt)?;
+        }
+        Ok(())
+    }
+}
+
+/// Check a number of beam segments.
+pub fn check_segments(segments: usize) -> Result<()> {
+    if !(MIN_SEGMENTS..=MAX_SEGMENTS).contains(&segments) {
+        return Err(Error::invalid(
+            keys::SEGMENTS.key,
+            segments,
+            format!("{} must satisfy {MIN_SEGMENTS} <= N <= {MAX_SEGMENTS}", keys::SEGMENTS.what),
+        ));
+    }
+    Ok(())
+}

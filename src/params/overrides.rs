@@ -1,0 +1,74 @@
+//! The `--config` files: [`Overrides`] read from TOML (the flag names as keys), and the TOML
+//! reading the racket files share.
+
+use super::Overrides;
+use crate::error::{Error, Result};
+
+impl Overrides {
+    /// Read a TOML config file with the flag names as keys.
+    pub fn from_toml_file(path: &std::path::Path) -> Result<Self> {
+        Self::from_toml_bytes(path, &read_file(path)?)
+    }
+
+    /// Parse the contents of a config file (`path` only names it in errors). An empty file, a
+    /// file that is not UTF-8 text, a TOML syntax error, a wrong type and an unknown key are all
+    /// errors with one line naming the file and, where TOML knows it, the key and line.
+    pub fn from_toml_bytes(path: &std::path::Path, bytes: &[u8]) -> Result<Self> {
+        parse_toml(path, bytes, "give at least one key, e.g. ks = 4e4")
+    }
+}
+
+/// The bytes of a TOML file; a file that cannot be read is an [`Error::Config`] naming it.
+pub(crate) fn read_file(path: &std::path::Path) -> Result<Vec<u8>> {
+    std::fs::read(path).map_err(|e| Error::Config { path: path.into(), message: e.to_string() })
+}
+
+/// Parse a TOML file's contents (`path` only names it in errors): an empty file (told what to
+/// give: `empty_hint`), bytes that are not UTF-8, a syntax error, a wrong type and an unknown
+/// key are all [`Error::Config`] with one line naming the file and, where TOML knows it, the
+/// key and line.
+pub(crate) fn parse_toml<T: serde::de::DeserializeOwned>(
+    path: &std::path::Path,
+    bytes: &[u8],
+    empty_hint: &str,
+) -> Result<T> {
+    let err = |message: String| Error::Config { path: path.into(), message };
+    let text = std::str::from_utf8(bytes).map_err(|_| err("not a UTF-8 text file".into()))?;
+    if text.trim().is_empty() {
+        return Err(err(format!("is empty ({empty_hint})")));
+    }
+    toml::from_str(text).map_err(|e| err(one_line(&e.to_string())))
+}
+
+/// Fold a multi-line message (e.g. a TOML parse error with a source excerpt) into one line.
+fn one_line(msg: &str) -> String {
+    msg.lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.chars().all(|c| "|^ ".contains(c)))
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{LoadRule, Params};
+    use super::*;
+
+    #[test]
+    fn config_keys_are_the_flag_names_and_unknown_keys_are_rejected() {
+        let o: Overrides = toml::from_str("x = 0.2\nhalf-width = 0.1\nload = \"node\"").unwrap();
+        assert_eq!(o.x, Some(0.2));
+        assert_eq!(o.half_width, Some(0.1));
+        assert_eq!(o.load, Some(LoadRule::Node));
+        assert!(toml::from_str::<Overrides>("xx = 0.2").is_err());
+    }
+
+    #[test]
+    fn flags_override_the_config() {
+        let flags = Overrides { ks: Some(2.0e4), ..Default::default() };
+        let config = Overrides { ks: Some(3.0e4), x: Some(0.3), ..Default::default() };
+        let mut p = Params::default();
+        flags.or(config).apply(&mut p);
+        assert_eq!((p.strings.ks, p.impact.x), (2.0e4, 0.3));
+    }
+}

@@ -1,0 +1,218 @@
+//! Model variants beyond the paper (issue 6): the frame model, the grip and the string law.
+
+use serde::{Deserialize, Serialize};
+
+use super::keys;
+use super::spec::{one_of, within, Choice, FlagValue, Values};
+use super::{Racket, SolverKind};
+use crate::error::{Error, Result};
+
+/// How the frame is modelled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum Frame {
+    /// The paper's flexible beam.
+    #[default]
+    Beam,
+    /// The textbook rigid racket (effective mass at the impact point, plus twist), in closed form.
+    Rigid,
+}
+
+impl Frame {
+    /// Every value, in the order of [`Frame::CHOICES`].
+    pub const ALL: [Frame; 2] = [Frame::Beam, Frame::Rigid];
+    /// The names on the command line and in configs, with what they mean.
+    pub const CHOICES: &'static [Choice] = &[
+        Choice { name: "beam", help: Some("The paper's flexible beam") },
+        Choice {
+            name: "rigid",
+            help: Some("The textbook rigid racket (effective mass at the impact point, plus twist), in closed form"),
+        },
+    ];
+
+    /// The name used on the command line and in configs.
+    pub fn name(self) -> &'static str {
+        Self::CHOICES[self as usize].name
+    }
+}
+
+impl FlagValue for Frame {
+    const VALUES: Values = Values::Choice(Frame::CHOICES);
+    fn parse_flag(key: &'static str, text: &str) -> Result<Self> {
+        let names: Vec<(Frame, &str)> = Frame::ALL.into_iter().map(|v| (v, v.name())).collect();
+        one_of(key, text, &names)
+    }
+}
+
+/// How the racket is held.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum Grip {
+    /// The paper's freely suspended racket.
+    #[default]
+    Free,
+    /// A hand: springs and dampers spread over the grip length from the butt.
+    Hand,
+}
+
+impl Grip {
+    /// Every value, in the order of [`Grip::CHOICES`].
+    pub const ALL: [Grip; 2] = [Grip::Free, Grip::Hand];
+    /// The names on the command line and in configs, with what they mean.
+    pub const CHOICES: &'static [Choice] = &[
+        Choice { name: "free", help: Some("The paper's freely suspended racket") },
+        Choice { name: "hand", help: Some("A hand: springs and dampers spread over the grip length from the butt") },
+    ];
+
+    /// The name used on the command line and in configs.
+    pub fn name(self) -> &'static str {
+        Self::CHOICES[self as usize].name
+    }
+}
+
+impl FlagValue for Grip {
+    const VALUES: Values = Values::Choice(Grip::CHOICES);
+    fn parse_flag(key: &'static str, text: &str) -> Result<Self> {
+        let names: Vec<(Grip, &str)> = Grip::ALL.into_iter().map(|v| (v, v.name())).collect();
+        one_of(key, text, &names)
+    }
+}
+
+/// The string bed's force law.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum StringLaw {
+    /// The paper's constant `k_s`.
+    #[default]
+    Linear,
+    /// `F = k_s Y_s (1 + s (Y_s / d)^2)`: the secant stiffness grows by the fraction `s` at the
+    /// deflection `d` (the paper quotes about 10 % for large deflections).
+    Stiffening,
+}
+
+impl StringLaw {
+    /// Every value, in the order of [`StringLaw::CHOICES`].
+    pub const ALL: [StringLaw; 2] = [StringLaw::Linear, StringLaw::Stiffening];
+    /// The names on the command line and in configs, with what they mean.
+    pub const CHOICES: &'static [Choice] = &[
+        Choice { name: "linear", help: Some("The paper's constant `k_s`") },
+        Choice { name: "stiffening", help: Some("`F = k_s Y_s (1 + s (Y_s / d)^2)`: the secant stiffness grows by the fraction `s` at the deflection `d` (the paper quotes about 10 % for large deflections)") },
+    ];
+
+    /// The name used on the command line and in configs.
+    pub fn name(self) -> &'static str {
+        Self::CHOICES[self as usize].name
+    }
+}
+
+impl FlagValue for StringLaw {
+    const VALUES: Values = Values::Choice(StringLaw::CHOICES);
+    fn parse_flag(key: &'static str, text: &str) -> Result<Self> {
+        let names: Vec<(StringLaw, &str)> = StringLaw::ALL.into_iter().map(|v| (v, v.name())).collect();
+        one_of(key, text, &names)
+    }
+}
+
+/// Model variants beyond the paper (issue 6); the defaults are the paper's model.
+///
+/// The hand defaults are assumptions, not measurements: a 15 cm grip holding the racket with
+/// 5e3 N/m and 10 N s/m in all. The damping gives the 125 Hz mode of the paper's racket a
+/// damping ratio of 2.6 % ([`crate::solve::hand_damping_ratio`]; a test pins it), the order at
+/// which a hand-held frame's vibration dies away in a few tens of milliseconds; the stiffness makes the whole
+/// racket bounce on the hand at a few hertz, far below any frame mode. H. Hatze (Med. Sci.
+/// Sports 8, 1976) modelled the racket-hand system the same way; D. Chadefaux et al. (2017)
+/// fitted such distributed springs and dampers to measured hand-held rackets. The hand resists
+/// bending and translation only, not the twist about the long axis (Eq 7 stays free), so for
+/// off-axis impacts near the handle it overstates the twist.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Variants {
+    /// `beam` (the paper) or `rigid`.
+    pub frame: Frame,
+    /// `free` (the paper) or `hand`.
+    pub grip: Grip,
+    /// `linear` (the paper) or `stiffening`.
+    pub strings: StringLaw,
+    /// Stiffening fraction `s` (with `strings = stiffening`); 0..=10. Default 0.10.
+    pub string_stiffening: f64,
+    /// Deflection `d` at which the secant stiffness has grown by `s`, m; 1e-4..=1. Default 0.04:
+    /// the string-plane deflection of a 60 m/s serve on 4e4 N/m strings (peak force about 1.7 kN,
+    /// the paper's p. 4 estimate), where the paper puts the rise at about 10 %.
+    pub stiffening_deflection: f64,
+    /// Total hand stiffness (with `grip = hand`), N/m; 0..=1e7.
+    pub hand_stiffness: f64,
+    /// Total hand damping, N s/m; 0..=1e4.
+    pub hand_damping: f64,
+    /// Grip length from the butt, m; > 0 and at most half the racket.
+    pub grip_length: f64,
+}
+
+impl Default for Variants {
+    fn default() -> Self {
+        Variants {
+            frame: Frame::Beam,
+            grip: Grip::Free,
+            strings: StringLaw::Linear,
+            string_stiffening: 0.10,
+            stiffening_deflection: 0.04,
+            hand_stiffness: 5.0e3,
+            hand_damping: 10.0,
+            grip_length: 0.15,
+        }
+    }
+}
+
+impl Variants {
+    /// Check the values and the combinations the solvers support.
+    pub fn validate(&self, racket: &Racket, solver: SolverKind) -> Result<()> {
+        for (spec, v) in [
+            (keys::STRING_STIFFENING, self.string_stiffening),
+            (keys::STIFFENING_DEFLECTION, self.stiffening_deflection),
+            (keys::HAND_STIFFNESS, self.hand_stiffness),
+            (keys::HAND_DAMPING, self.hand_damping),
+        ] {
+            spec.check(v)?;
+        }
+        // only a hand needs a grip that fits on the racket
+        let longest = if self.grip == Grip::Hand { 0.5 * racket.length } else { keys::LENGTH.range().1 };
+        let g = keys::GRIP_LENGTH;
+        within(g.key, self.grip_length, g.what, g.unit, (1e-3, longest))?;
+        let nonlinear = self.strings == StringLaw::Stiffening || self.grip == Grip::Hand;
+        if nonlinear && self.frame == Frame::Rigid {
+            return Err(Error::invalid(
+                "frame",
+                "rigid",
+                "must be beam with stiffening strings or a hand grip (the rigid frame is the closed-form limit for linear strings and a free racket)",
+            ));
+        }
+        if nonlinear && solver == SolverKind::Modal {
+            return Err(Error::invalid(
+                "solver",
+                "modal",
+                "must be fd with stiffening strings or a hand grip (the modal solver needs a linear, undamped system)",
+            ));
+        }
+        Ok(())
+    }
+
+    /// Short description for titles and metadata, e.g. `beam, free, linear strings`.
+    pub fn label(&self) -> String {
+        let frame = match self.frame {
+            Frame::Beam => "beam".to_string(),
+            Frame::Rigid => "rigid frame".to_string(),
+        };
+        let grip = match self.grip {
+            Grip::Free => "free".to_string(),
+            Grip::Hand => format!("hand ({:.0} N/m, {:.0} N s/m)", self.hand_stiffness, self.hand_damping),
+        };
+        let strings = match self.strings {
+            StringLaw::Linear => "linear strings".to_string(),
+            StringLaw::Stiffening => format!(
+                "strings +{:.0} % at {:.0} mm",
+                100.0 * self.string_stiffening,
+                1e3 * self.stiffening_deflection
+            ),
+        };
+        format!("{frame}, {grip}, {strings}")
+    }
+}

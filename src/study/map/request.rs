@@ -1,0 +1,179 @@
+//! The `map` command's request: its checks, its configurations (one, or two to compare) and
+//! running them into a table, a heat map, metadata and a summary.
+
+use std::path::PathBuf;
+
+use super::summary::{diff_summary, map_summary};
+use super::{check_count, DiffMap, FaceMap, Quantity};
+use crate::error::{Error, Result};
+use crate::params::{ks_from_tension_lb, Params};
+use crate::render::heatmap::HeatMap;
+use crate::render::table::Table;
+use crate::study::{check_comparison, config_file, Sources};
+
+/// A map of one configuration, or the difference of two.
+#[derive(Debug, Clone)]
+pub struct MapRequest {
+    /// The configuration (A): racket, config file and flags; the flags may not set the impact
+    /// position and the config file's is ignored (the grid sets it).
+    pub sources: Sources,
+    /// The quantity shown in the heat map (the table has every one).
+    pub quantity: Quantity,
+    /// Grid points along the racket.
+    pub nx: usize,
+    /// Grid points across the face.
+    pub nr: usize,
+    /// Compare against this racket (file or preset): B - A with A = [`Sources::racket`].
+    pub compare_racket: Option<String>,
+    /// Compare string tensions, lb: T (A as given, B at T) or T1,T2 (A at T1, B at T2).
+    pub compare_tension_lb: Vec<f64>,
+}
+
+/// What a map produced.
+#[derive(Debug, Clone)]
+pub struct MapOutcome {
+    /// The CSV table.
+    pub table: Table,
+    /// The heat map.
+    pub heatmap: HeatMap,
+    /// The JSON metadata.
+    pub metadata: serde_json::Value,
+    /// The text summary.
+    pub summary: String,
+}
+
+impl MapOutcome {
+    /// The metadata as pretty JSON with a final newline.
+    pub fn json(&self) -> Result<String> {
+        Ok(format!("{}\n", serde_json::to_string_pretty(&self.metadata).map_err(|e| Error::io("<json>", e))?))
+    }
+
+    /// Number of points with a re-contact after separation (in either configuration).
+    pub fn recontacts(&self) -> usize {
+        let flags = self.table.column("recontact").or_else(|| self.table.column("recontact_b")).unwrap_or_default();
+        flags.iter().filter(|&&v| v != 0.0).count()
+    }
+}
+
+impl MapRequest {
+    /// Check the grid counts and the comparison options, before anything is read.
+    pub fn check(&self) -> Result<()> {
+        check_count("nx", self.nx)?;
+        check_count("nr", self.nr)?;
+        check_comparison(&self.compare_tension_lb, self.compare_racket.is_some())?;
+        if self.compare_tension_lb.len() > 2 {
+            return Err(Error::invalid(
+                "compare-tension-lb",
+                self.compare_tension_lb.iter().map(f64::to_string).collect::<Vec<_>>().join(","),
+                "give one tension T (the configuration against T) or two, T1,T2",
+            ));
+        }
+        Ok(())
+    }
+
+    /// `true` for a difference map.
+    pub fn is_difference(&self) -> bool {
+        self.compare_racket.is_some() || !self.compare_tension_lb.is_empty()
+    }
+
+    /// The CSV file when none is given: `map_<quantity>.csv` or `map_<quantity>_diff.csv`.
+    pub fn default_csv(&self) -> PathBuf {
+        PathBuf::from(format!("map_{}{}.csv", self.quantity.name(), if self.is_difference() { "_diff" } else { "" }))
+    }
+
+    /// The configurations, (label, params) each, validated, and the number of impacts they run.
+    pub fn configurations(&self) -> Result<(Vec<(String, Params)>, usize)> {
+        let name_a = racket_label(self.sources.racket.as_deref());
+        let base = self.params(self.sources.racket.as_deref())?;
+        let mut configs: Vec<(String, Params)> = Vec::new();
+        if let Some(b) = &self.compare_racket {
+            configs.push((name_a.clone(), base));
+            configs.push((racket_label(Some(b)), self.params(Some(b))?));
+        } else if !self.compare_tension_lb.is_empty() {
+            let at = |t: f64| {
+                let mut p = base;
+                p.strings.ks = ks_from_tension_lb(t);
+                (format!("{name_a} at {t} lb"), p)
+            };
+            match self.compare_tension_lb[..] {
+                [t] => {
+                    configs.push((format!("{name_a} as given"), base));
+                    configs.push(at(t));
+                }
+                [t1, t2] => {
+                    configs.push(at(t1));
+                    configs.push(at(t2));
+                }
+                _ => {}
+            }
+        } else {
+            configs.push((name_a.clone(), base));
+        }
+        for (_, p) in &configs {
+            p.validate()?;
+        }
+        let total = match &configs[..] {
+            [(_, p)] => FaceMap::count(p, self.nx, self.nr)?,
+            [(_, pa), (_, pb)] => DiffMap::count(pa, pb, self.nx, self.nr)?,
+            _ => 0,
+        };
+        if total == 0 {
+            return Err(Error::invalid(
+                "nx",
+                format!("{} (with nr = {})", self.nx, self.nr),
+                "no grid point lies inside the string face; use more points (e.g. --nx 5 --nr 5)",
+            ));
+        }
+        Ok((configs, total))
+    }
+
+    /// Run the map of `configs` (from [`MapRequest::configurations`]); `progress(done)` after
+    /// each chunk of impacts.
+    pub fn run(&self, configs: &[(String, Params)], progress: &mut dyn FnMut(u64)) -> Result<MapOutcome> {
+        let (q, counts) = (self.quantity, (self.nx, self.nr));
+        let (table, heatmap, metadata, summary) = match configs {
+            [(la, pa), (lb, pb)] => {
+                let d = DiffMap::compute(pa, pb, self.nx, self.nr, progress)?;
+                let meta = d.metadata((la, lb), q, counts)?;
+                let summary = diff_summary(&d, q, la, lb);
+                (d.table(q), d.heatmap(q, la, lb), meta, summary)
+            }
+            [(la, pa)] => {
+                let m = FaceMap::compute(pa, self.nx, self.nr, progress)?;
+                let meta = m.metadata(la, q, counts)?;
+                let summary = map_summary(&m, q, la)?;
+                (m.table(), m.heatmap(q, la), meta, summary)
+            }
+            _ => return Err(Error::invalid("map", configs.len(), "one or two configurations")),
+        };
+        Ok(MapOutcome { table, heatmap, metadata, summary })
+    }
+
+    /// The configuration with the racket `racket`: as [`Sources::resolve`], with the impact
+    /// position taken out of the flags (rejected) and the config file (ignored); the grid sets
+    /// it.
+    fn params(&self, racket: Option<&str>) -> Result<Params> {
+        let flags = &self.sources.flags;
+        if let Some(x) = flags.x {
+            return Err(Error::invalid("x", x, "a map chooses the impact points itself: give --nx/--nr, not --x"));
+        }
+        if let Some(r) = flags.r {
+            return Err(Error::invalid("r", r, "a map chooses the impact points itself: give --nx/--nr, not --r"));
+        }
+        let mut config = config_file(self.sources.config.as_deref())?;
+        // an on-axis point at the tip is valid on every face; the grid replaces it
+        config.x = Some(0.0);
+        config.r = Some(0.0);
+        let spec = racket.map(crate::racket::load).transpose()?;
+        Ok(crate::racket::resolve(spec.as_ref(), &flags.clone().or(config))?.0)
+    }
+}
+
+/// A racket argument as a short name: a preset as is, a file by its stem.
+pub fn racket_label(arg: Option<&str>) -> String {
+    match arg {
+        None => "paper racket".to_string(),
+        Some(a) if crate::racket::preset_names().contains(&a) => a.to_string(),
+        Some(a) => std::path::Path::new(a).file_stem().and_then(|s| s.to_str()).unwrap_or(a).to_string(),
+    }
+}

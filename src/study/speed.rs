@@ -1,0 +1,206 @@
+//! Outgoing ball speeds for a swing and an incoming ball (the `speed` command): one impact per
+//! variant (string tensions or rackets), compared with the first.
+//!
+//! `v_out = e_A v_in + (1 + e_A) v_racket` (the paper's frame transformation), with `e_A`
+//! computed at the relative speed `v_in + v_racket` and the racket's swing speed taken at the
+//! impact point.
+
+use crate::error::{Error, Result};
+use crate::experiments::speeds::{gain_pct, outgoing_speed};
+use crate::params::{ks_from_tension_lb, Params};
+use crate::render::table::{Table, Value};
+use crate::solve::ImpactResult;
+use crate::study::{check_comparison, Sources};
+
+/// A unit of speed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpeedUnit {
+    /// Metres per second per unit.
+    pub si: f64,
+    /// Its symbol.
+    pub label: &'static str,
+}
+
+impl SpeedUnit {
+    /// Kilometres per hour.
+    pub const KMH: SpeedUnit = SpeedUnit { si: 1.0 / 3.6, label: "km/h" };
+    /// Miles per hour.
+    pub const MPH: SpeedUnit = SpeedUnit { si: 0.44704, label: "mph" };
+    /// Metres per second.
+    pub const MS: SpeedUnit = SpeedUnit { si: 1.0, label: "m/s" };
+}
+
+/// A swing, an incoming ball and the variants to compare.
+#[derive(Debug, Clone)]
+pub struct SpeedRequest {
+    /// The configuration: racket, config file and flags.
+    pub sources: Sources,
+    /// Racket speed at the impact point, towards the ball, in `unit`.
+    pub swing: f64,
+    /// Incoming ball speed, towards the racket, in `unit` (0 for a serve).
+    pub incoming: f64,
+    /// The unit of the speeds.
+    pub unit: SpeedUnit,
+    /// Compare these string tensions, lb; the first is the reference.
+    pub compare_tension_lb: Vec<f64>,
+    /// Compare these rackets (files or presets); the first is the reference.
+    pub compare_racket: Vec<String>,
+}
+
+/// One variant's impact and outgoing ball speed.
+#[derive(Debug, Clone)]
+pub struct SpeedRow {
+    /// The variant's name.
+    pub label: String,
+    /// Its parameters (the impact at the relative speed).
+    pub params: Params,
+    /// The impact.
+    pub result: ImpactResult,
+    /// Outgoing ball speed, m/s.
+    pub v_out: f64,
+}
+
+/// The compared variants, the first being the reference.
+#[derive(Debug, Clone)]
+pub struct SpeedComparison {
+    /// What was asked.
+    pub request: SpeedRequest,
+    /// One row per variant.
+    pub rows: Vec<SpeedRow>,
+}
+
+impl SpeedRequest {
+    /// Check the speeds and the comparison, then run one impact per variant.
+    pub fn run(&self) -> Result<SpeedComparison> {
+        for (field, v) in [("swing", self.swing), ("incoming", self.incoming)] {
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(Error::invalid(
+                    field,
+                    v,
+                    format!("speed must be a finite number >= 0 {}", self.unit.label),
+                ));
+            }
+        }
+        let (v_racket, v_in) = (self.swing * self.unit.si, self.incoming * self.unit.si);
+        check_comparison(&self.compare_tension_lb, !self.compare_racket.is_empty())?;
+        let mut rows = Vec::new();
+        for (label, racket, tension) in self.variants() {
+            let (mut p, _) = self.sources.resolve(racket.as_deref())?;
+            if let Some(t) = tension {
+                p.strings.ks = ks_from_tension_lb(t);
+            }
+            // e_A is computed at the relative speed (it does not depend on it; theta scales with it)
+            p.impact.v1 = v_in + v_racket;
+            p.validate()?;
+            let r = crate::simulate(&p)?;
+            let v_out = outgoing_speed(r.e_a, v_in, v_racket);
+            rows.push(SpeedRow { label, params: p, result: r, v_out });
+        }
+        Ok(SpeedComparison { request: self.clone(), rows })
+    }
+
+    /// The variants: (label, racket argument, tension).
+    fn variants(&self) -> Vec<(String, Option<String>, Option<f64>)> {
+        let racket = &self.sources.racket;
+        let mut variants = Vec::new();
+        for &t in &self.compare_tension_lb {
+            variants.push((format!("{t} lb"), racket.clone(), Some(t)));
+        }
+        for r in &self.compare_racket {
+            variants.push((r.clone(), Some(r.clone()), None));
+        }
+        if variants.is_empty() {
+            variants.push((racket.clone().unwrap_or_else(|| "paper".into()), racket.clone(), None));
+        }
+        variants
+    }
+}
+
+impl SpeedComparison {
+    /// The reference's outgoing speed, m/s.
+    fn v_ref(&self) -> f64 {
+        self.rows[0].v_out
+    }
+
+    /// The comparison as a table (speeds in the request's unit).
+    pub fn table(&self) -> Result<Table> {
+        let unit = self.request.unit;
+        let mut t = Table::new(
+            "speed",
+            &[
+                "variant",
+                "x_m",
+                "r_m",
+                "ks_n_per_m",
+                "e_a",
+                "tau_ms",
+                "theta_deg",
+                "ball_speed_out",
+                "change_pct",
+                "unit",
+            ],
+        );
+        for SpeedRow { label, params: p, result: r, v_out } in &self.rows {
+            t.push(vec![
+                Value::Text(label.clone()),
+                p.impact.x.into(),
+                p.impact.r.into(),
+                p.strings.ks.into(),
+                r.e_a.into(),
+                (1e3 * r.tau_s).into(),
+                r.theta_end_deg.into(),
+                (v_out / unit.si).into(),
+                gain_pct(self.v_ref(), *v_out).into(),
+                Value::Text(unit.label.into()),
+            ])?;
+        }
+        Ok(t)
+    }
+
+    /// The comparison as pretty JSON (one object per variant) with a final newline.
+    pub fn json(&self) -> Result<String> {
+        let unit = self.request.unit;
+        let v: Vec<serde_json::Value> = self
+            .rows
+            .iter()
+            .map(|SpeedRow { label, params: p, result: r, v_out }| {
+                serde_json::json!({
+                    "variant": label, "params": p, "result": r,
+                    "ball_speed_out": v_out / unit.si, "change_pct": gain_pct(self.v_ref(), *v_out), "unit": unit.label,
+                })
+            })
+            .collect();
+        Ok(format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?))
+    }
+
+    /// The comparison as text: the swing, then one line per variant.
+    pub fn text(&self) -> String {
+        let (req, unit) = (&self.request, self.request.unit);
+        let mut s = format!(
+            "swing {} {u} at the impact point, incoming ball {} {u}: v_out = e_A v_in + (1 + e_A) v_racket\n",
+            req.swing,
+            req.incoming,
+            u = unit.label
+        );
+        s.push_str(&format!(
+            "{:<22} {:>7} {:>6} {:>9} {:>8} {:>8} {:>9} {:>12} {:>9}\n",
+            "variant", "x cm", "r cm", "ks N/m", "e_A", "tau ms", "theta deg", "ball out", "change"
+        ));
+        for SpeedRow { label, params: p, result: r, v_out } in &self.rows {
+            s.push_str(&format!(
+                "{:<22} {:>7.1} {:>6.1} {:>9.0} {:>8.4} {:>8.3} {:>9.2} {:>7.1} {:<4} {:>+8.2} %\n",
+                label,
+                100.0 * p.impact.x,
+                100.0 * p.impact.r,
+                p.strings.ks,
+                r.e_a,
+                1e3 * r.tau_s,
+                r.theta_end_deg,
+                v_out / unit.si,
+                unit.label,
+                gain_pct(self.v_ref(), *v_out)
+            ));
+        }
+        s
+    }
+}
