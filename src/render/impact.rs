@@ -5,6 +5,7 @@ use std::path::Path;
 use crate::error::Result;
 use crate::params::Params;
 use crate::render::table::{fmt_sig, Table, Value};
+use crate::solve::outcome::TEXT_ORDER;
 use crate::solve::{ImpactResult, SeriesRow};
 
 /// The result as `name value unit` lines, with the impact it describes on top.
@@ -29,37 +30,18 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
         p.ball.k1,
         p.ball.p
     );
-    let lines: [(&str, f64, &str); 15] = [
-        ("e_a", r.e_a, ""),
-        ("tau", r.tau_s * 1e3, "ms"),
-        ("theta_end", r.theta_end_deg, "deg"),
-        ("peak_force", r.peak_force_n, "N"),
-        ("f_ke_ball", r.f_ke_ball, "of initial ball KE"),
-        ("f_ball", r.f_ball, "lost in the ball (Eq 11)"),
-        ("f_rigid", r.f_rigid, "racket rigid-body KE"),
-        ("f_vib", r.f_vib, "racket vibration"),
-        ("f_vib_peak_pe", r.f_vib_peak_pe, "peak bending PE after impact (paper)"),
-        ("f_spin", r.f_spin, "twist about the long axis"),
-        ("t_max_compression", r.t_max_compression_s * 1e3, "ms"),
-        ("y0", r.y0_m * 1e3, "mm ball compression"),
-        ("energy_error", r.energy_error, "relative"),
-        ("momentum_error", r.momentum_error, "relative"),
-        ("dt", r.dt_s, "s"),
-    ];
     if p.variants != crate::params::Variants::default() {
         s.push_str(&format!("model: {}\n", p.variants.label()));
     }
-    for (name, v, unit) in lines {
-        let line = format!("{name:<18} {:>12} {unit}", fmt_sig(v, 6));
+    let held = p.variants.grip == crate::params::Grip::Hand;
+    for field in TEXT_ORDER {
+        let Some(text) = field.text else { continue };
+        if text.hand_only && !held {
+            continue;
+        }
+        let line = format!("{:<18} {:>12} {}", text.label, fmt_sig(field.number(r) * text.scale, 6), text.unit);
         s.push_str(line.trim_end());
         s.push('\n');
-        if name == "f_spin" && p.variants.grip == crate::params::Grip::Hand {
-            s.push_str(&format!(
-                "{:<18} {:>12} taken by the hand (springs + damping)\n",
-                "f_hand",
-                fmt_sig(r.f_hand, 6)
-            ));
-        }
     }
     if r.recontact {
         s.push_str("recontact          yes: the frame meets the ball again after separation\n");

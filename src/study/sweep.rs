@@ -11,6 +11,7 @@ use std::path::Path;
 
 use crate::error::{Error, Result};
 use crate::params::{keys, Overrides, Params};
+use crate::solve::outcome::{Get, FIELDS};
 use crate::solve::{simulate, ImpactResult};
 
 /// Impacts computed per parallel chunk (bounded memory, deterministic order).
@@ -105,47 +106,30 @@ pub fn column_name(key: &str) -> &'static str {
     keys::find(key).map_or("unknown", |spec| spec.column)
 }
 
-/// Result columns written for every impact.
-pub const RESULT_COLUMNS: [&str; 14] = [
-    "e_a",
-    "tau_s",
-    "theta_end_deg",
-    "f_ball",
-    "f_vib",
-    "f_vib_peak_pe",
-    "f_spin",
-    "f_rigid",
-    "f_ke_ball",
-    "peak_force_n",
-    "energy_error",
-    "x_load_m",
-    "recontact",
-    "solver",
-];
+/// Result columns written for every impact: the sweep columns of the result's field table
+/// ([`FIELDS`]), then the solver.
+pub fn result_columns() -> impl Iterator<Item = &'static str> {
+    FIELDS.iter().filter(|f| f.sweep).map(|f| f.key).chain(["solver"])
+}
 
 /// The result columns of one impact. Numbers are written in their shortest form that reads back
 /// as the same `f64` (`ryu`: `0.25`, `1.5e-7`, `3.0`): exact, and without the noise digits of a
-/// fixed 17.
-fn result_fields(r: &ImpactResult, p: &Params) -> [String; 14] {
+/// fixed 17; a flag as 0 or 1.
+fn result_fields<'a>(r: &'a ImpactResult, p: &Params) -> impl Iterator<Item = String> + 'a {
     let mut buffer = ryu::Buffer::new();
-    // (zero of either sign as "0", as in the other tables)
-    let mut f = |v: f64| if v == 0.0 { "0".to_string() } else { buffer.format(v).to_string() };
-    [
-        f(r.e_a),
-        f(r.tau_s),
-        f(r.theta_end_deg),
-        f(r.f_ball),
-        f(r.f_vib),
-        f(r.f_vib_peak_pe),
-        f(r.f_spin),
-        f(r.f_rigid),
-        f(r.f_ke_ball),
-        f(r.peak_force_n),
-        f(r.energy_error),
-        f(r.x_load_m),
-        (r.recontact as u8).to_string(),
-        p.numerics.solver.name().to_string(),
-    ]
+    let fields = FIELDS.iter().filter(|f| f.sweep).map(move |f| match f.get {
+        // (zero of either sign as "0", as in the other tables)
+        Get::Number(g) => {
+            let v = g(r);
+            if v == 0.0 {
+                "0".to_string()
+            } else {
+                buffer.format(v).to_string()
+            }
+        }
+        Get::Flag(g) => u8::from(g(r)).to_string(),
+    });
+    fields.chain([p.numerics.solver.name().to_string()])
 }
 
 impl Sweep {
@@ -198,7 +182,7 @@ impl Sweep {
 
     /// The CSV header.
     pub fn header(&self) -> Vec<String> {
-        self.axes.iter().map(|a| column_name(&a.key).to_string()).chain(RESULT_COLUMNS.map(String::from)).collect()
+        self.axes.iter().map(|a| column_name(&a.key).to_string()).chain(result_columns().map(String::from)).collect()
     }
 
     /// The parameters of impact `i` (row-major, first axis slowest) and its axis values.

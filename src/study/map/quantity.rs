@@ -3,6 +3,7 @@
 use serde::Serialize;
 
 use crate::error::{Error, Result};
+use crate::solve::outcome::{field, Field};
 use crate::solve::ImpactResult;
 
 /// What a map shows.
@@ -81,15 +82,22 @@ impl Quantity {
         }
     }
 
+    /// The result field it is read from ([`crate::solve::outcome::FIELDS`]), and the factor it
+    /// is shown with.
+    pub fn source(self) -> (&'static Field, f64) {
+        match self {
+            Quantity::EA => const { (field("e_a"), 1.0) },
+            Quantity::Tau => const { (field("tau_s"), 1e3) },
+            Quantity::Theta => const { (field("theta_end_deg"), 1.0) },
+            Quantity::FVib => const { (field("f_vib"), 1.0) },
+            Quantity::Power => const { (field("e_a"), 100.0) },
+        }
+    }
+
     /// Its value for one impact.
     pub fn of(self, r: &ImpactResult) -> f64 {
-        match self {
-            Quantity::EA => r.e_a,
-            Quantity::Tau => 1e3 * r.tau_s,
-            Quantity::Theta => r.theta_end_deg,
-            Quantity::FVib => r.f_vib,
-            Quantity::Power => 100.0 * r.e_a,
-        }
+        let (field, scale) = self.source();
+        scale * field.number(r)
     }
 }
 
