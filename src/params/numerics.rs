@@ -7,10 +7,7 @@ use super::keys;
 use super::spec::{Choice, FlagValue, Values};
 use crate::error::{Error, Result};
 
-/// Largest allowed number of segments.
-pub const MAX_SEGMENTS: usize = 400;
-/// Smallest allowed number of segments (a free-free beam needs interior curvature points).
-pub const MIN_SEGMENTS: usize = 4;
+pub use super::spec::{MAX_SEGMENTS, MIN_SEGMENTS};
 
 /// How the contact force is applied to the discrete beam (SPEC.md section 1, Contact).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]

@@ -129,10 +129,14 @@ impl FlagValue for f64 {
     }
 }
 
+/// Largest allowed number of segments.
+pub const MAX_SEGMENTS: usize = 400;
+/// Smallest allowed number of segments (a free-free beam needs interior curvature points).
+pub const MIN_SEGMENTS: usize = 4;
+
 impl FlagValue for usize {
     const VALUES: Values = Values::Count;
     fn parse_flag(key: &'static str, text: &str) -> Result<Self> {
-        use super::numerics::{MAX_SEGMENTS, MIN_SEGMENTS};
         // the one whole-number parameter is the segment count
         text.trim().parse().map_err(|_| {
             Error::invalid(key, text, format!("must be a whole number of {key}, {MIN_SEGMENTS} <= N <= {MAX_SEGMENTS}"))
