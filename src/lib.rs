@@ -20,6 +20,28 @@
 //! `e_A = v2/v1`, the impact duration, the twist angle and where the ball's energy went.
 //!
 //! ## Layout
+//! The folders are the layers, each using only those below it:
+//! ```text
+//! src/main.rs, src/cli/  the command line: parse, dispatch, print (clap lives only here)
+//!         |
+//! src/study/             sweeps, string-face maps, swing-speed comparisons
+//! src/experiments/       one file per result of the paper, each with its paper claims
+//! src/report.rs          the claims collected, the paper beside ours
+//! src/racket/            racket files in player units, fitted to the beam, and the fit report
+//!         |                            \
+//! src/render/            tables (CSV), line charts, heat maps, one impact as text, atomic files
+//!         |
+//! src/solve/             the solvers behind one trait (fd, modal, rigid), the dispatcher,
+//!                        the outcome with its one field table, the time-series observer
+//!         |
+//! src/model/             physics only: contact law (one trait), beam, modes and their cache,
+//!                        the contact point's coupling to the frame, free vibration, closed forms
+//!         |
+//! src/params/            every parameter declared once, validation, config overrides
+//! ```
+//! Arrows point down only: nothing in `model/` or `solve/` knows of tables, plots, files or the
+//! command line.
+//!
 //! - [`params`]: parameter structs (defaults = the paper), each flag parameter declared once
 //!   (key, unit, range, doc), validation, `--config` overrides.
 //! - [`racket`]: a racket file or preset in spec-sheet units (mass, balance, swingweight, Hz),
