@@ -12,6 +12,8 @@
 
 use serde::Deserialize;
 
+mod beyond;
+
 use crate::error::{Error, Result};
 use crate::experiments::{self, Context, Ours, PaperClaim};
 use crate::render::table::fmt_sig;
@@ -226,6 +228,12 @@ pub fn markdown(rows: &[Row]) -> String {
     }
     s.push_str(REPORT_TAIL);
     s
+}
+
+/// The whole report: the paper's claims ([`markdown`]) and the section beyond the paper
+/// ([`beyond::section`]).
+pub fn document(rows: &[Row]) -> Result<String> {
+    Ok(markdown(rows) + &beyond::section()?)
 }
 
 /// Check the claims file: unique ids, positive tolerances, and a computation for each claim

@@ -84,6 +84,18 @@ fn speeds() {
 fn convergence() {
     check("convergence");
 }
+#[test]
+fn oblique_angle() {
+    check("oblique_angle");
+}
+#[test]
+fn oblique_tension() {
+    check("oblique_tension");
+}
+#[test]
+fn topspin_forehand() {
+    check("topspin_forehand");
+}
 
 #[test]
 fn every_registered_experiment_has_a_golden_test_and_committed_outputs() {

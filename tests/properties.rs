@@ -27,6 +27,7 @@ fn params() -> impl Strategy<Value = Params> {
                 ..Numerics::default()
             },
             variants: Default::default(),
+            oblique: Default::default(),
         })
 }
 

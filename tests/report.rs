@@ -1,7 +1,7 @@
 //! The claims report: every claim has a computation, every verdict is pinned, every
 //! reproduced claim is within its tolerance, and the committed REPORT.md is current.
 
-use racket_impact::report::{check_claims_file, evaluate, markdown, Verdict};
+use racket_impact::report::{check_claims_file, document, evaluate, Verdict};
 
 #[test]
 fn claims_file_is_well_formed() {
@@ -27,7 +27,10 @@ fn every_verdict_is_pinned_and_reproduced_claims_are_within_tolerance() {
         }
     }
     let committed = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/REPORT.md")).unwrap();
-    assert!(committed == markdown(&rows), "REPORT.md is stale: run `make figures` (or `racket-impact report`)");
+    assert!(
+        committed == document(&rows).unwrap(),
+        "REPORT.md is stale: run `make figures` (or `racket-impact report`)"
+    );
 }
 
 #[test]

@@ -19,12 +19,14 @@ fn quantity_help(q: Quantity) -> &'static str {
         Quantity::Theta => "twist at the end of the impact, degrees",
         Quantity::FVib => "vibration energy, fraction of the ball's incident KE",
         Quantity::Power => "power potential 100 e_A, %",
+        Quantity::Spin => "outgoing spin, rpm (oblique or spinning ball)",
+        Quantity::ReboundAngle => "rebound angle from the normal, degrees (oblique or spinning ball)",
     }
 }
 
 /// `--quantity`: the quantities' names, with their help.
 fn quantity_parser() -> impl TypedValueParser<Value = Quantity> {
-    PossibleValuesParser::new(Quantity::ALL.map(|q| PossibleValue::new(q.name()).help(quantity_help(q))))
+    PossibleValuesParser::new(Quantity::every().map(|q| PossibleValue::new(q.name()).help(quantity_help(q))))
         .try_map(|name| name.parse::<Quantity>())
 }
 

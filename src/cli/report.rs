@@ -23,7 +23,7 @@ pub fn run(a: ReportArgs) -> Result<()> {
         racket_impact::render::io::check_output_dir("out", &a.out)?;
     }
     let rows = racket_impact::report::evaluate()?;
-    let md = racket_impact::report::markdown(&rows);
+    let md = racket_impact::report::document(&rows)?;
     if !a.no_write {
         racket_impact::render::io::write_atomic(&a.out, md.as_bytes())?;
     }

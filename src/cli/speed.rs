@@ -47,6 +47,13 @@ pub struct SpeedArgs {
     /// Compare these rackets (files or presets, e.g. light,players); the first is the reference
     #[arg(long, value_delimiter = ',')]
     pub compare_racket: Vec<String>,
+    /// Swing path angle above the horizontal, degrees (-80..=80): > 0 brushes up the back of
+    /// the ball for topspin; the face stands vertical and the ball comes in horizontally
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub swing_path_deg: f64,
+    /// Spin of the incoming ball in its own flight, rpm (topspin > 0)
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub incoming_spin_rpm: f64,
 }
 
 /// Run the comparison and print it in the chosen format.
@@ -58,6 +65,8 @@ pub fn run(a: SpeedArgs) -> Result<()> {
         unit: a.unit.unit(),
         compare_tension_lb: a.compare_tension_lb,
         compare_racket: a.compare_racket,
+        path_deg: a.swing_path_deg,
+        incoming_spin_rpm: a.incoming_spin_rpm,
     };
     let comparison = request.run()?;
     let text = match a.common.format {

@@ -21,6 +21,9 @@
 //! | `variant_rigid` | (ours) rigid frame against the paper's beam | [`variant_rigid`] |
 //! | `variant_grip` | (ours) hand grip against the paper's free racket | [`variant_grip`] |
 //! | `variant_strings` | (ours) stiffening strings against the paper's linear strings | [`variant_strings`] |
+//! | `oblique_angle` | (beyond) spin and rebound angle against incidence angle | [`oblique_angle`] |
+//! | `oblique_tension` | (beyond) spin against tension, friction constant or tension-dependent | [`oblique_tension`] |
+//! | `topspin_forehand` | (beyond) a forehand brushing up: speed, launch angle, spin | [`topspin_forehand`] |
 //!
 //! All paper experiments use the paper's numerics (`node` load, N = 39) as SPEC.md asks;
 //! `convergence` shows what that costs. Shared pieces: [`setup`] (the racket an experiment runs
@@ -49,9 +52,12 @@ pub mod fig7_off_axis_x10;
 pub mod fig8_off_axis_centre;
 pub mod fig9_stiff_frame;
 pub mod modes;
+pub mod oblique_angle;
+pub mod oblique_tension;
 pub mod off_axis;
 pub mod position;
 pub mod speeds;
+pub mod topspin_forehand;
 pub mod variant_grip;
 pub mod variant_rigid;
 pub mod variant_strings;
@@ -105,6 +111,9 @@ pub fn registry() -> Vec<Experiment> {
         variant_rigid::EXPERIMENT,
         variant_grip::EXPERIMENT,
         variant_strings::EXPERIMENT,
+        oblique_angle::EXPERIMENT,
+        oblique_tension::EXPERIMENT,
+        topspin_forehand::EXPERIMENT,
     ]
 }
 

@@ -8,3 +8,4 @@ pub mod contact;
 pub mod coupling;
 pub mod free;
 pub mod reduced;
+pub mod tangential;

@@ -82,6 +82,27 @@ declare_params! {
     /// Grip length from the butt, m (up to half the racket; default 0.15)
     GRIP_LENGTH grip_length: f64 = "grip-length" at variants.grip_length,
         what "grip length", unit "m", column "grip_length_m", rule;
+    /// Incidence angle from the string-plane normal, degrees (0 ..= 85; default 0)
+    ANGLE_DEG angle_deg: f64 = "angle-deg" at oblique.angle_deg,
+        what "incidence angle", unit "deg", column "angle_deg", within(0.0, 85.0);
+    /// In-plane direction of the incoming ball, degrees from the long axis towards the handle; 90 = across the face to +r (-360 ..= 360; default 0)
+    AZIMUTH_DEG azimuth_deg: f64 = "azimuth-deg" at oblique.azimuth_deg,
+        what "azimuth", unit "deg", column "azimuth_deg", within(-360.0, 360.0);
+    /// Incoming spin, rpm; topspin > 0 (-2e4 ..= 2e4; default 0)
+    SPIN_RPM spin_rpm: f64 = "spin-rpm" at oblique.spin_rpm,
+        what "incoming spin", unit "rpm", column "spin_rpm", within(-2.0e4, 2.0e4);
+    /// Friction coefficient of ball on strings (0 ..= 2; default 0.4)
+    MU mu: f64 = "mu" at oblique.mu,
+        what "friction coefficient", unit "", column "mu", within(0.0, 2.0);
+    /// Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9; default 2e4)
+    KT kt: f64 = "kt" at oblique.kt,
+        what "tangential stiffness", unit "N/m", column "kt_n_per_m", within(1.0, 1.0e9);
+    /// Ball radius, m (1e-3 ..= 1; default 0.033)
+    BALL_RADIUS ball_radius: f64 = "ball-radius" at oblique.ball_radius,
+        what "ball radius", unit "m", column "ball_radius_m", within(1.0e-3, 1.0);
+    /// Ball moment of inertia over m_b R^2 (0 < alpha <= 1; default 0.55)
+    BALL_INERTIA_FACTOR ball_inertia_factor: f64 = "ball-inertia-factor" at oblique.ball_inertia_factor,
+        what "ball inertia factor", unit "", column "ball_inertia_factor", rule;
 }
 
 /// The declaration of `key`, if it is a parameter.

@@ -12,6 +12,7 @@
 //! - [`physical`]: the ball, the strings, the racket and the impact.
 //! - [`numerics`]: segments, load rule, time step, solver.
 //! - [`variants`]: frame model, grip, string law.
+//! - [`oblique`]: incidence angle, azimuth, incoming spin, friction (beyond the paper).
 //! - [`spec`] and [`keys`]: what a declaration is, and the declarations.
 //! - [`overrides`]: the `--config` file.
 
@@ -21,6 +22,7 @@ use crate::error::Result;
 
 pub mod keys;
 pub mod numerics;
+pub mod oblique;
 pub mod overrides;
 pub mod physical;
 pub mod spec;
@@ -28,6 +30,7 @@ pub mod variants;
 
 pub use keys::Overrides;
 pub use numerics::{check_segments, LoadRule, Numerics, SolverKind, MAX_SEGMENTS, MIN_SEGMENTS};
+pub use oblique::Oblique;
 pub(crate) use overrides::{parse_toml, read_file};
 pub use physical::{ellipse_half_width, Ball, Impact, Profile, Racket, Strings, STIFFNESS_REL};
 pub use variants::{Frame, Grip, StringLaw, Variants};
@@ -64,6 +67,10 @@ pub struct Params {
     /// Model variants (the paper's model by default).
     #[serde(default)]
     pub variants: Variants,
+    /// Oblique incidence, spin and friction (normal incidence by default; left out of the
+    /// serialised parameters while it is the default, so normal-incidence metadata is as before).
+    #[serde(default, skip_serializing_if = "Oblique::is_default")]
+    pub oblique: Oblique,
 }
 
 impl Params {
@@ -79,7 +86,16 @@ impl Params {
         self.racket.validate()?;
         self.impact.validate(&self.racket)?;
         self.numerics.validate()?;
-        self.variants.validate(&self.racket, self.numerics.solver)
+        self.variants.validate(&self.racket, self.numerics.solver)?;
+        self.oblique.validate()?;
+        if !self.oblique.is_normal() && self.variants.frame == Frame::Rigid {
+            return Err(crate::Error::invalid(
+                "frame",
+                "rigid",
+                "must be beam for an oblique or spinning ball (the tangential contact follows the normal force history of the fd or modal solver)",
+            ));
+        }
+        Ok(())
     }
 }
 

@@ -36,6 +36,7 @@ impl Fitted {
             impact,
             numerics,
             variants: Default::default(),
+            oblique: Default::default(),
         }
     }
 }

@@ -33,10 +33,23 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
     if p.variants != crate::params::Variants::default() {
         s.push_str(&format!("model: {}\n", p.variants.label()));
     }
+    if !p.oblique.is_normal() {
+        let o = &p.oblique;
+        s.push_str(&format!(
+            "oblique: angle {} deg from the normal, azimuth {} deg, spin {} rpm, mu {}, kt {} N/m, ball R {} m, I = {} m_b R^2\n",
+            fmt_sig(o.angle_deg, 6),
+            fmt_sig(o.azimuth_deg, 6),
+            fmt_sig(o.spin_rpm, 6),
+            fmt_sig(o.mu, 6),
+            fmt_sig(o.kt, 6),
+            fmt_sig(o.ball_radius, 6),
+            fmt_sig(o.ball_inertia_factor, 6)
+        ));
+    }
     let held = p.variants.grip == crate::params::Grip::Hand;
     for field in TEXT_ORDER {
         let Some(text) = field.text else { continue };
-        if text.hand_only && !held {
+        if (text.hand_only && !held) || (text.oblique_only && p.oblique.is_normal()) {
             continue;
         }
         let line = format!("{:<18} {:>12} {}", text.label, fmt_sig(field.number(r) * text.scale, 6), text.unit);

@@ -13,9 +13,11 @@
 pub mod fd;
 mod hermite;
 pub mod modal;
+pub mod oblique;
 pub(crate) mod observer;
 pub mod outcome;
 pub mod rigid;
+pub mod swing;
 
 use crate::error::Result;
 use crate::params::{Frame, Params, SolverKind};

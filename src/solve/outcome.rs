@@ -26,6 +26,8 @@ pub struct Text {
     pub unit: &'static str,
     /// Shown only for a racket held in a hand (`--grip hand`).
     pub hand_only: bool,
+    /// Shown only for an oblique or spinning ball (`--angle-deg`, `--spin-rpm`).
+    pub oblique_only: bool,
 }
 
 /// One field of [`ImpactResult`].
@@ -48,6 +50,11 @@ pub struct Field {
 }
 
 impl Field {
+    /// Whether the field is one of an oblique or spinning ball (NaN at normal incidence).
+    pub fn is_oblique(&self) -> bool {
+        self.text.is_some_and(|t| t.oblique_only)
+    }
+
     /// The value as a number (a flag as 0 or 1).
     pub fn number(&self, r: &ImpactResult) -> f64 {
         match self.get {
@@ -88,12 +95,44 @@ const fn same(a: &str, b: &str) -> bool {
 
 /// A text line with the value as it is.
 const fn text(label: &'static str, unit: &'static str) -> Option<Text> {
-    Some(Text { label, scale: 1.0, unit, hand_only: false })
+    Some(Text { label, scale: 1.0, unit, hand_only: false, oblique_only: false })
 }
 
 /// A text line with the value times 1000 (ms, mm).
 const fn text_milli(label: &'static str, unit: &'static str) -> Option<Text> {
-    Some(Text { label, scale: 1e3, unit, hand_only: false })
+    Some(Text { label, scale: 1e3, unit, hand_only: false, oblique_only: false })
+}
+
+/// A text line shown only for an oblique or spinning ball.
+const fn text_oblique(label: &'static str, unit: &'static str) -> Option<Text> {
+    Some(Text { label, scale: 1.0, unit, hand_only: false, oblique_only: true })
+}
+
+/// A field value that is left out of the JSON: NaN, which marks a quantity that does not apply
+/// (the oblique fields of a normal impact).
+trait Absent {
+    /// Left out of the JSON.
+    fn absent(&self) -> bool;
+    /// Equal, or both absent.
+    fn same(&self, other: &Self) -> bool;
+}
+
+impl Absent for f64 {
+    fn absent(&self) -> bool {
+        self.is_nan()
+    }
+    fn same(&self, other: &Self) -> bool {
+        self == other || (self.is_nan() && other.is_nan())
+    }
+}
+
+impl Absent for bool {
+    fn absent(&self) -> bool {
+        false
+    }
+    fn same(&self, other: &Self) -> bool {
+        self == other
+    }
 }
 
 /// Declares [`ImpactResult`] and [`FIELDS`] from one list: each field's doc, name, type, unit,
@@ -101,11 +140,27 @@ const fn text_milli(label: &'static str, unit: &'static str) -> Option<Text> {
 macro_rules! impact_result {
     (@get f64, $key:ident) => { Get::Number(|r: &ImpactResult| r.$key) };
     (@get bool, $key:ident) => { Get::Flag(|r: &ImpactResult| r.$key) };
+    (@zero f64) => { 0.0 };
+    (@zero bool) => { false };
     ($($(#[doc = $doc:literal])+ $key:ident: $ty:tt [$unit:literal] checked: $checked:literal, sweep: $sweep:literal, text: $text:expr;)+) => {
         /// What one impact reports (SPEC.md section 2). Energies are fractions of `m_b v1^2 / 2`.
-        #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+        #[derive(Debug, Clone, Copy, Serialize)]
         pub struct ImpactResult {
-            $($(#[doc = $doc])+ pub $key: $ty,)+
+            $($(#[doc = $doc])+ #[serde(skip_serializing_if = "Absent::absent")] pub $key: $ty,)+
+        }
+
+        /// Equal field by field, a NaN (a quantity that does not apply) equal to a NaN, so a
+        /// result equals itself.
+        impl PartialEq for ImpactResult {
+            fn eq(&self, other: &Self) -> bool {
+                $(Absent::same(&self.$key, &other.$key))&&+
+            }
+        }
+
+        impl ImpactResult {
+            /// Every field zero (or false): the base a solver fills in, so that the fields it
+            /// does not set (the oblique ones, set afterwards) need not be listed again.
+            pub(crate) const ZERO: ImpactResult = ImpactResult { $($key: impact_result!(@zero $ty),)+ };
         }
 
         /// Every field of [`ImpactResult`], in declaration (and JSON) order.
@@ -140,7 +195,7 @@ impact_result! {
     /// Energy taken by the hand (`--grip hand`: its springs' energy plus what its dampers
     /// dissipated) at separation; 0 for the paper's free racket.
     f_hand: f64 [""] checked: true, sweep: false,
-        text: Some(Text { label: "f_hand", scale: 1.0, unit: "taken by the hand (springs + damping)", hand_only: true });
+        text: Some(Text { label: "f_hand", scale: 1.0, unit: "taken by the hand (springs + damping)", hand_only: true, oblique_only: false });
     /// Rigid-body kinetic energy of the racket (translation + rotation about the centre of mass).
     f_rigid: f64 [""] checked: true, sweep: true, text: text("f_rigid", "racket rigid-body KE");
     /// Rebound kinetic energy of the ball (= e_a^2).
@@ -161,10 +216,37 @@ impact_result! {
     recontact: bool [""] checked: false, sweep: true, text: None;
     /// Time step used, s.
     dt_s: f64 ["s"] checked: false, sweep: false, text: text("dt", "s");
+    /// Rebound velocity normal to the string plane, away from it, m/s (racket initially at
+    /// rest; `e_a` times the incoming normal speed). This and the fields below are those of an
+    /// oblique or spinning ball: NaN, and left out of the JSON, at normal incidence without spin.
+    v2_n: f64 ["m/s"] checked: false, sweep: true, text: text_oblique("v2_n", "m/s normal, away from the strings");
+    /// Rebound velocity in the string plane along `t`, the in-plane direction the ball came
+    /// in along, m/s (negative: back the way it came).
+    v2_t: f64 ["m/s"] checked: false, sweep: true, text: text_oblique("v2_t", "m/s tangential, along the incoming direction");
+    /// Outgoing spin, rpm, with the sign convention of `--spin-rpm` (topspin positive).
+    spin_out_rpm: f64 ["rpm"] checked: false, sweep: true, text: text_oblique("spin_out", "rpm (topspin > 0)");
+    /// Rebound angle from the string-plane normal, degrees (positive: on along `t`).
+    rebound_angle_deg: f64 ["deg"] checked: false, sweep: true, text: text_oblique("rebound_angle", "deg from the normal");
+    /// Tangential coefficient of restitution of the contact point, `-(w_out - u_out) / w_in`
+    /// (`w` the slip velocity of the ball's contact point, `u_out` the frame's there); NaN
+    /// (left out of the JSON) when the contact point arrives without slip.
+    e_t: f64 [""] checked: false, sweep: true, text: text_oblique("e_t", "tangential COR of the contact point");
+    /// Share of the contact time in which the ball slid on the strings.
+    slip_fraction: f64 [""] checked: false, sweep: true, text: text_oblique("slip_fraction", "of the contact time sliding");
+    /// Energy dissipated by friction, as a fraction of the ball's whole incoming kinetic energy
+    /// (translation at `v1` and spin; the normal fractions above are of the normal part
+    /// `m_b (v1 cos angle)^2 / 2`, as at normal incidence at that speed).
+    f_friction: f64 [""] checked: false, sweep: true, text: text_oblique("f_friction", "lost to friction (of the whole incoming KE)");
+    /// Spin kinetic energy of the ball after impact (fraction of the whole incoming kinetic energy).
+    f_ball_spin: f64 [""] checked: false, sweep: true, text: text_oblique("f_ball_spin", "ball spin KE after (of the whole incoming KE)");
+    /// In-plane kinetic energy of the racket after impact (translation in and rotation about
+    /// the normal of the string plane; fraction of the whole incoming kinetic energy).
+    f_racket_inplane: f64 [""] checked: false, sweep: true,
+        text: text_oblique("f_racket_inplane", "racket in-plane KE (of the whole incoming KE)");
 }
 
 /// The text output's lines, in its order.
-pub const TEXT_ORDER: [&Field; 16] = [
+pub const TEXT_ORDER: [&Field; 25] = [
     field("e_a"),
     field("tau_s"),
     field("theta_end_deg"),
@@ -181,6 +263,15 @@ pub const TEXT_ORDER: [&Field; 16] = [
     field("energy_error"),
     field("momentum_error"),
     field("dt_s"),
+    field("v2_n"),
+    field("v2_t"),
+    field("rebound_angle_deg"),
+    field("spin_out_rpm"),
+    field("e_t"),
+    field("slip_fraction"),
+    field("f_friction"),
+    field("f_ball_spin"),
+    field("f_racket_inplane"),
 ];
 
 impl ImpactResult {
@@ -265,6 +356,15 @@ mod tests {
             y0_m: 16.0,
             recontact: true,
             dt_s: 18.0,
+            v2_n: 19.0,
+            v2_t: 20.0,
+            spin_out_rpm: 21.0,
+            rebound_angle_deg: 22.0,
+            e_t: 23.0,
+            slip_fraction: 24.0,
+            f_friction: 25.0,
+            f_ball_spin: 26.0,
+            f_racket_inplane: 27.0,
         };
         let text = serde_json::to_string(&r).unwrap();
         let json = serde_json::to_value(r).unwrap();

@@ -23,6 +23,7 @@ use crate::model::beam::LoadPoint;
 use crate::model::contact::{ContactLaw, Cross};
 use crate::model::reduced::clamped_drop;
 use crate::params::{Ball, Params};
+use crate::solve::oblique::Follower;
 use crate::solve::outcome::ImpactResult;
 use crate::solve::Solver;
 
@@ -69,7 +70,7 @@ fn impact(p: &Params, basis: &Basis, load: &LoadPoint) -> Result<ImpactResult> {
     let y0 = drop.y0_m;
     let f_ball = law.ball_loss(y0) / e0;
     let f_ke_ball = e_a * e_a;
-    let result = ImpactResult {
+    let mut result = ImpactResult {
         e_a,
         tau_s: tau,
         theta_end_deg: theta.to_degrees(),
@@ -88,7 +89,10 @@ fn impact(p: &Params, basis: &Basis, load: &LoadPoint) -> Result<ImpactResult> {
         y0_m: y0,
         recontact: false,
         dt_s: 0.0,
+        ..ImpactResult::ZERO
     };
+    // (validation keeps oblique and spinning balls off the rigid frame)
+    Follower::new(None).complete(None, &mut result, v1)?;
     result.check_finite()?;
     Ok(result)
 }

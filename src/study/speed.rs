@@ -9,6 +9,7 @@ use crate::error::{Error, Result};
 use crate::experiments::speeds::{gain_pct, outgoing_speed};
 use crate::params::{ks_from_tension_lb, Params};
 use crate::render::table::{Table, Value};
+use crate::solve::swing::Swing;
 use crate::solve::ImpactResult;
 use crate::study::{check_comparison, Sources};
 
@@ -45,6 +46,10 @@ pub struct SpeedRequest {
     pub compare_tension_lb: Vec<f64>,
     /// Compare these rackets (files or presets); the first is the reference.
     pub compare_racket: Vec<String>,
+    /// Swing path angle above the horizontal, degrees (0: the paper's straight-on swing).
+    pub path_deg: f64,
+    /// Spin of the incoming ball in its own flight, rpm (topspin > 0).
+    pub incoming_spin_rpm: f64,
 }
 
 /// One variant's impact and outgoing ball speed.
@@ -58,6 +63,9 @@ pub struct SpeedRow {
     pub result: ImpactResult,
     /// Outgoing ball speed, m/s.
     pub v_out: f64,
+    /// For a swing along a tilted path or a spinning ball: launch angle above the horizontal
+    /// (degrees) and spin (rpm, topspin > 0) in the court's frame.
+    pub launch: Option<(f64, f64)>,
 }
 
 /// The compared variants, the first being the reference.
@@ -89,14 +97,32 @@ impl SpeedRequest {
             if let Some(t) = tension {
                 p.strings.ks = ks_from_tension_lb(t);
             }
+            if self.is_stroke() {
+                let swing = Swing {
+                    racket_speed: v_racket,
+                    path_deg: self.path_deg,
+                    incoming: v_in,
+                    incoming_spin_rpm: self.incoming_spin_rpm,
+                };
+                let exit = swing.hit(&p)?;
+                let launch = Some((exit.launch_deg, exit.spin_rpm));
+                rows.push(SpeedRow { label, params: exit.params, result: exit.impact, v_out: exit.speed, launch });
+                continue;
+            }
             // e_A is computed at the relative speed (it does not depend on it; theta scales with it)
             p.impact.v1 = v_in + v_racket;
             p.validate()?;
             let r = crate::simulate(&p)?;
             let v_out = outgoing_speed(r.e_a, v_in, v_racket);
-            rows.push(SpeedRow { label, params: p, result: r, v_out });
+            rows.push(SpeedRow { label, params: p, result: r, v_out, launch: None });
         }
         Ok(SpeedComparison { request: self.clone(), rows })
+    }
+
+    /// Whether the swing brushes the ball (a tilted path) or the ball spins: the impact is then
+    /// oblique ([`Swing`]), and the exit has a launch angle and spin.
+    pub fn is_stroke(&self) -> bool {
+        self.path_deg != 0.0 || self.incoming_spin_rpm != 0.0
     }
 
     /// The variants: (label, racket argument, tension).
@@ -140,8 +166,27 @@ impl SpeedComparison {
                 "unit",
             ],
         );
-        for SpeedRow { label, params: p, result: r, v_out } in &self.rows {
-            t.push(vec![
+        if self.request.is_stroke() {
+            t = Table::new(
+                "speed",
+                &[
+                    "variant",
+                    "x_m",
+                    "r_m",
+                    "ks_n_per_m",
+                    "e_a",
+                    "tau_ms",
+                    "theta_deg",
+                    "ball_speed_out",
+                    "change_pct",
+                    "unit",
+                    "launch_deg",
+                    "spin_rpm",
+                ],
+            );
+        }
+        for SpeedRow { label, params: p, result: r, v_out, launch } in &self.rows {
+            let mut row = vec![
                 Value::Text(label.clone()),
                 p.impact.x.into(),
                 p.impact.r.into(),
@@ -152,7 +197,11 @@ impl SpeedComparison {
                 (v_out / unit.si).into(),
                 gain_pct(self.v_ref(), *v_out).into(),
                 Value::Text(unit.label.into()),
-            ])?;
+            ];
+            if let Some((launch_deg, spin_rpm)) = launch {
+                row.extend([Value::from(*launch_deg), Value::from(*spin_rpm)]);
+            }
+            t.push(row)?;
         }
         Ok(t)
     }
@@ -163,11 +212,16 @@ impl SpeedComparison {
         let v: Vec<serde_json::Value> = self
             .rows
             .iter()
-            .map(|SpeedRow { label, params: p, result: r, v_out }| {
-                serde_json::json!({
+            .map(|SpeedRow { label, params: p, result: r, v_out, launch }| {
+                let mut v = serde_json::json!({
                     "variant": label, "params": p, "result": r,
                     "ball_speed_out": v_out / unit.si, "change_pct": gain_pct(self.v_ref(), *v_out), "unit": unit.label,
-                })
+                });
+                if let (Some((launch_deg, spin_rpm)), Some(o)) = (launch, v.as_object_mut()) {
+                    o.insert("launch_deg".into(), (*launch_deg).into());
+                    o.insert("spin_rpm".into(), (*spin_rpm).into());
+                }
+                v
             })
             .collect();
         Ok(format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?))
@@ -186,7 +240,10 @@ impl SpeedComparison {
             "{:<22} {:>7} {:>6} {:>9} {:>8} {:>8} {:>9} {:>12} {:>9}\n",
             "variant", "x cm", "r cm", "ks N/m", "e_A", "tau ms", "theta deg", "ball out", "change"
         ));
-        for SpeedRow { label, params: p, result: r, v_out } in &self.rows {
+        if req.is_stroke() {
+            return self.stroke_text();
+        }
+        for SpeedRow { label, params: p, result: r, v_out, .. } in &self.rows {
             s.push_str(&format!(
                 "{:<22} {:>7.1} {:>6.1} {:>9.0} {:>8.4} {:>8.3} {:>9.2} {:>7.1} {:<4} {:>+8.2} %\n",
                 label,
@@ -199,6 +256,42 @@ impl SpeedComparison {
                 v_out / unit.si,
                 unit.label,
                 gain_pct(self.v_ref(), *v_out)
+            ));
+        }
+        s
+    }
+
+    /// The text of a stroke along a tilted path or with a spinning ball: speed, launch angle and
+    /// spin in the court's frame.
+    fn stroke_text(&self) -> String {
+        let (req, unit) = (&self.request, self.request.unit);
+        let mut s = format!(
+            "swing {} {u} along a path {} deg above the horizontal, incoming ball {} {u} with {} rpm of topspin \
+             (court frame; the impact computed in the racket's frame)\n",
+            req.swing,
+            req.path_deg,
+            req.incoming,
+            req.incoming_spin_rpm,
+            u = unit.label
+        );
+        s.push_str(&format!(
+            "{:<22} {:>7} {:>9} {:>8} {:>10} {:>12} {:>9} {:>10} {:>9}\n",
+            "variant", "x cm", "ks N/m", "e_A", "incidence", "ball out", "change", "launch", "spin rpm"
+        ));
+        for SpeedRow { label, params: p, result: r, v_out, launch } in &self.rows {
+            let (launch_deg, spin_rpm) = launch.unwrap_or((0.0, 0.0));
+            s.push_str(&format!(
+                "{:<22} {:>7.1} {:>9.0} {:>8.4} {:>6.1} deg {:>7.1} {:<4} {:>+8.2} % {:>6.1} deg {:>9.0}\n",
+                label,
+                100.0 * p.impact.x,
+                p.strings.ks,
+                r.e_a,
+                p.oblique.angle_deg,
+                v_out / unit.si,
+                unit.label,
+                gain_pct(self.v_ref(), *v_out),
+                launch_deg,
+                spin_rpm
             ));
         }
         s

@@ -11,7 +11,7 @@ use std::path::Path;
 
 use crate::error::{Error, Result};
 use crate::params::{keys, Overrides, Params};
-use crate::solve::outcome::{Get, FIELDS};
+use crate::solve::outcome::{Field, Get, FIELDS};
 use crate::solve::{simulate, ImpactResult};
 
 /// Impacts computed per parallel chunk (bounded memory, deterministic order).
@@ -106,18 +106,23 @@ pub fn column_name(key: &str) -> &'static str {
     keys::find(key).map_or("unknown", |spec| spec.column)
 }
 
-/// Result columns written for every impact: the sweep columns of the result's field table
-/// ([`FIELDS`]), then the solver.
-pub fn result_columns() -> impl Iterator<Item = &'static str> {
-    FIELDS.iter().filter(|f| f.sweep).map(|f| f.key).chain(["solver"])
+/// The result fields a sweep writes: the sweep columns of the result's field table
+/// ([`FIELDS`]), the oblique ones only in a sweep of oblique or spinning balls.
+fn swept(oblique: bool) -> impl Iterator<Item = &'static Field> {
+    FIELDS.iter().filter(move |f| f.sweep && (oblique || !f.is_oblique()))
+}
+
+/// Result columns written for every impact: [`swept`] fields, then the solver.
+pub fn result_columns(oblique: bool) -> impl Iterator<Item = &'static str> {
+    swept(oblique).map(|f| f.key).chain(["solver"])
 }
 
 /// The result columns of one impact. Numbers are written in their shortest form that reads back
 /// as the same `f64` (`ryu`: `0.25`, `1.5e-7`, `3.0`): exact, and without the noise digits of a
 /// fixed 17; a flag as 0 or 1.
-fn result_fields<'a>(r: &'a ImpactResult, p: &Params) -> impl Iterator<Item = String> + 'a {
+fn result_fields<'a>(r: &'a ImpactResult, p: &Params, oblique: bool) -> impl Iterator<Item = String> + 'a {
     let mut buffer = ryu::Buffer::new();
-    let fields = FIELDS.iter().filter(|f| f.sweep).map(move |f| match f.get {
+    let fields = swept(oblique).map(move |f| match f.get {
         // (zero of either sign as "0", as in the other tables)
         Get::Number(g) => {
             let v = g(r);
@@ -180,9 +185,19 @@ impl Sweep {
         self.len() == 0
     }
 
+    /// Whether any impact of the sweep is oblique or spinning (its rows then carry the
+    /// oblique result fields too).
+    pub fn is_oblique(&self) -> bool {
+        let varied = self.axes.iter().any(|a| a.key == keys::ANGLE_DEG.key || a.key == keys::SPIN_RPM.key);
+        let mut p = self.defaults;
+        self.base.apply(&mut p);
+        varied || !p.oblique.is_normal()
+    }
+
     /// The CSV header.
     pub fn header(&self) -> Vec<String> {
-        self.axes.iter().map(|a| column_name(&a.key).to_string()).chain(result_columns().map(String::from)).collect()
+        let results = result_columns(self.is_oblique()).map(String::from);
+        self.axes.iter().map(|a| column_name(&a.key).to_string()).chain(results).collect()
     }
 
     /// The parameters of impact `i` (row-major, first axis slowest) and its axis values.
@@ -219,6 +234,7 @@ impl Sweep {
         if total > MAX_POINTS {
             return Err(Error::invalid("sweep", total, format!("a sweep may have at most {MAX_POINTS} impacts")));
         }
+        let oblique = self.is_oblique();
         let mut start = 0u64;
         while start < total {
             let end = (start + CHUNK as u64).min(total);
@@ -227,7 +243,7 @@ impl Sweep {
                 .map(|i| {
                     let (p, vals) = self.point(i)?;
                     let r = simulate(&p)?;
-                    Ok(vals.into_iter().map(str::to_string).chain(result_fields(&r, &p)).collect())
+                    Ok(vals.into_iter().map(str::to_string).chain(result_fields(&r, &p, oblique)).collect())
                 })
                 .collect::<Result<_>>()?;
             sink(&rows)?;

@@ -8,7 +8,7 @@
 //! and it converges from every start.
 
 use crate::error::{Error, Result};
-use crate::model::contact::{ContactLaw, ContactState, Phase, PowSeries};
+use crate::model::contact::{ball_stiffness, series, ContactLaw, ContactState, Phase, PowSeries};
 use crate::params::{Ball, Strings};
 
 /// The paper's ball and linear string springs in series.
@@ -87,6 +87,13 @@ impl ContactLaw for Cross {
                     string_deflection: yt - ball_compression,
                 })
             }
+        }
+    }
+
+    fn stiffness(&self, phase: Phase, st: &ContactState) -> f64 {
+        match phase {
+            Phase::Compression => self.k_series,
+            Phase::Expansion { .. } => series(ball_stiffness(self.k1, self.p, phase, st), self.ks),
         }
     }
 

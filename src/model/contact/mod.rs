@@ -91,6 +91,10 @@ pub trait ContactLaw {
     /// [`ContactState::guess`] returns it.
     fn state(&self, yt: f64, phase: Phase, guess: (f64, f64)) -> Result<ContactState>;
 
+    /// Tangent stiffness `dF/dY_T` at the state `st`, N/m: the force's rate is this times the
+    /// rate of `Y_T` (the oblique impact's tangential law follows the force and its rate).
+    fn stiffness(&self, phase: Phase, st: &ContactState) -> f64;
+
     /// Maximum ball compression `Y0` for a maximum total compression `yt_max`, m.
     fn ball_compression_at_max(&self, yt_max: f64) -> f64;
 
@@ -102,6 +106,26 @@ pub trait ContactLaw {
 
     /// Energy dissipated in the ball over a whole impact with maximum compression `y0` (Eq 11), J.
     fn ball_loss(&self, y0: f64) -> f64;
+}
+
+/// The series stiffness of a ball whose tangent stiffness is `kb` and strings whose tangent
+/// stiffness is `ks`, N/m (0 when either is 0: a ball that has just let go).
+pub fn series(kb: f64, ks: f64) -> f64 {
+    if kb <= 0.0 || ks <= 0.0 {
+        0.0
+    } else {
+        kb * ks / (kb + ks)
+    }
+}
+
+/// The ball's tangent stiffness `dF/dY_b`, N/m: `k1` in compression, `p F / Y_b` on the
+/// expansion law `F = k2 Y_b^p`.
+pub fn ball_stiffness(k1: f64, p: f64, phase: Phase, st: &ContactState) -> f64 {
+    match phase {
+        Phase::Compression => k1,
+        Phase::Expansion { .. } if st.ball_compression > 0.0 => p * st.force / st.ball_compression,
+        Phase::Expansion { .. } => 0.0,
+    }
 }
 
 /// How the modal solver's step couples the force at the end of a step to the compression
@@ -206,6 +230,14 @@ macro_rules! laws {
                     $(Contact::$variant(law) => law.state(yt, phase, guess),)*
                 }
             }
+            #[inline]
+            fn stiffness(&self, phase: Phase, st: &ContactState) -> f64 {
+                match self {
+                    Contact::Paper(law) => law.stiffness(phase, st),
+                    $(Contact::$variant(law) => law.stiffness(phase, st),)*
+                }
+            }
+
             #[inline]
             fn ball_compression_at_max(&self, yt_max: f64) -> f64 {
                 match self {

@@ -2,7 +2,7 @@
 //! `F = k_s Y_s (1 + s (Y_s/d)^2)` in series with the hysteretic ball (Eqs 3-4).
 
 use crate::error::Result;
-use crate::model::contact::{ContactLaw, ContactState, Cross, Phase};
+use crate::model::contact::{ball_stiffness, series, ContactLaw, ContactState, Cross, Phase};
 use crate::params::{Params, StringLaw};
 
 /// The paper's ball on stiffening strings.
@@ -137,6 +137,11 @@ impl ContactLaw for Stiffening {
             return Ok(ContactState::ZERO);
         }
         Ok(self.stiffening_state(yt, phase, guess))
+    }
+
+    fn stiffness(&self, phase: Phase, st: &ContactState) -> f64 {
+        let kb = ball_stiffness(self.paper.k1, self.paper.p, phase, st);
+        series(kb, self.string_stiffness(st.string_deflection))
     }
 
     fn ball_compression_at_max(&self, yt_max: f64) -> f64 {

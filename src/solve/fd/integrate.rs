@@ -6,9 +6,11 @@
 use crate::error::{Error, Result};
 use crate::model::contact::{ContactLaw, ContactState, Phase};
 use crate::model::free::FreeVibration;
+use crate::model::tangential::ForcePiece;
 use crate::solve::fd::stepper::Stepper;
 use crate::solve::fd::{Model, ENERGY_ERROR_LIMIT};
 use crate::solve::hermite::{hermite_eval, hermite_max, hermite_root};
+use crate::solve::oblique::Follower;
 use crate::solve::observer::Observer;
 use crate::solve::outcome::ImpactResult;
 
@@ -30,6 +32,8 @@ struct Separated {
     peak_force: f64,
     energy_dev: f64,
     momentum_dev: f64,
+    /// The tangential contact of an oblique or spinning ball.
+    tangential: Follower,
 }
 
 impl Model {
@@ -73,6 +77,10 @@ impl Model {
         let mut t_max = 0.0;
         let mut y0 = 0.0;
         let mut step: usize = 0;
+        let mut tangential = Follower::new(self.oblique.as_ref());
+        // the force and its rate at the start of the step (the force history of the tangential
+        // contact: a cubic through both over each step)
+        let mut force_prev = (0.0, self.contact.compression_stiffness() * v1);
         let yt_of = |st: &Stepper| cp.compression(st.ball.y, &st.y, st.th);
         obs.observe(0, || self.ledger(&st, phase, &cs, 0.0, 0.0).row(0.0, e0, cs.force, st.ball.y, yt_of(&st), st.th));
 
@@ -109,6 +117,7 @@ impl Model {
             obs.observe(step, || l.row(t, e0, cs.force, st.ball.y, yt_of(&st), st.th));
             if matches!(phase, Phase::Expansion { .. }) && yt <= 0.0 {
                 let s = hermite_root(yt_prev, ytd_prev, yt, ytd, dt);
+                tangential.advance(|| ForcePiece::hermite(s * dt, force_prev, (0.0, 0.0)));
                 let theta_end = hermite_eval(th_prev, om_prev, st.th, st.om, dt, s);
                 let tau = t - dt + s * dt;
                 return Ok(Separated {
@@ -124,8 +133,12 @@ impl Model {
                     peak_force,
                     energy_dev,
                     momentum_dev,
+                    tangential,
                 });
             }
+            let force = (cs.force, self.contact.stiffness(phase, &cs) * ytd);
+            tangential.advance(|| ForcePiece::hermite(dt, force_prev, force));
+            force_prev = force;
             yt_prev = yt;
             ytd_prev = ytd;
         }
@@ -156,7 +169,7 @@ impl Model {
         if energy_err > ENERGY_ERROR_LIMIT {
             return Err(Error::EnergyDrift { error: energy_err, limit: ENERGY_ERROR_LIMIT });
         }
-        let result = ImpactResult {
+        let mut result = ImpactResult {
             e_a,
             tau_s: tau,
             theta_end_deg: sep.theta_end.to_degrees(),
@@ -175,7 +188,9 @@ impl Model {
             y0_m: sep.y0,
             recontact,
             dt_s: self.dt,
+            ..ImpactResult::ZERO
         };
+        sep.tangential.complete(self.oblique.as_ref(), &mut result, v1)?;
         result.check_finite()?;
         Ok(result)
     }

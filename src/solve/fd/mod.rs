@@ -34,6 +34,7 @@ use crate::model::beam::Beam;
 use crate::model::contact::{Contact, ContactLaw};
 use crate::model::coupling::Coupling;
 use crate::params::{Grip, Params};
+use crate::solve::oblique::{self, Setup};
 use crate::solve::observer::{Plain, Sampler};
 use crate::solve::outcome::{ImpactResult, SeriesOptions, SeriesRow};
 use crate::solve::Solver;
@@ -57,8 +58,11 @@ pub const MAX_NODE_STEPS: f64 = 1.0e9;
 /// A prepared impact: validated parameters, the discrete beam, the load point and the time step.
 #[derive(Debug, Clone)]
 pub struct Model {
-    /// The parameters.
+    /// The parameters of the normal impact (for an oblique ball, those given with `v1` the
+    /// normal speed `v1 cos(angle)`).
     pub params: Params,
+    /// The tangential contact of an oblique or spinning ball (none at normal incidence).
+    pub oblique: Option<Setup>,
     /// The contact law.
     pub contact: Contact,
     /// Where the force acts and how the contact point is tied to the frame.
@@ -99,8 +103,11 @@ impl Model {
         Self::build(params, false)
     }
 
-    fn build(params: &Params, limit_work: bool) -> Result<Self> {
-        params.validate()?;
+    fn build(given: &Params, limit_work: bool) -> Result<Self> {
+        given.validate()?;
+        // the normal impact, stepped as at normal incidence at the normal speed
+        let normal = oblique::normal_part(given);
+        let params = &normal;
         let basis = Basis::of(&params.racket, params.numerics.segments);
         let beam = &basis.beam;
         let contact = Contact::of(params);
@@ -152,8 +159,10 @@ impl Model {
             }
             return Err(Error::TooManySteps { steps, dt_s: dt, nodes: beam.nodes(), limit: MAX_NODE_STEPS });
         }
+        let oblique = Setup::of(given, beam, coupling.load.x_load);
         Ok(Model {
             params: *params,
+            oblique,
             contact,
             coupling,
             f1_hz,

@@ -52,6 +52,7 @@ use crate::model::contact::{ContactLaw, Cross, Phase};
 use crate::model::free::FreeVibration;
 use crate::params::Params;
 use crate::solve::fd::Model;
+use crate::solve::oblique::Follower;
 use crate::solve::outcome::ImpactResult;
 use crate::solve::Solver;
 use run::{End, Run};
@@ -135,7 +136,7 @@ impl ModalModel {
             }
         }
         let omega: Vec<f64> = lam.iter().map(|l| l.sqrt()).collect();
-        let impulse_tolerance = res.impulse_tolerance * mb * params.impact.v1;
+        let impulse_tolerance = res.impulse_tolerance * mb * base.params.impact.v1;
         let m = ModalModel { base, law, lam, omega, g, residual, impulse_tolerance, grids: Default::default() };
         let grid = Grid::new(&m, h);
         let _ = m.grids[0].set(grid);
@@ -180,6 +181,7 @@ impl ModalModel {
             energy_err: 0.0,
             momentum_err: 0.0,
             separated: None,
+            tangential: Follower::new(self.base.oblique.as_ref()),
         };
         let limit = self.base.time_limit_s;
         while run.separated.is_none() {
@@ -193,7 +195,20 @@ impl ModalModel {
             Phase::Expansion { y0 } => y0,
             Phase::Compression => 0.0,
         };
-        self.finish(&run.s, run.t - tau, y0, tau, theta, run.at.t_max, run.peak_force, run.energy_err, run.momentum_err)
+        let mut result = self.finish(
+            &run.s,
+            run.t - tau,
+            y0,
+            tau,
+            theta,
+            run.at.t_max,
+            run.peak_force,
+            run.energy_err,
+            run.momentum_err,
+        )?;
+        run.tangential.complete(self.base.oblique.as_ref(), &mut result, v1)?;
+        result.check_finite()?;
+        Ok(result)
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -236,8 +251,8 @@ impl ModalModel {
             y0_m: y0,
             recontact,
             dt_s: self.step(),
+            ..ImpactResult::ZERO
         };
-        result.check_finite()?;
         Ok(result)
     }
 

@@ -5,9 +5,11 @@
 
 use crate::error::Result;
 use crate::model::contact::{ContactLaw, ImplicitLaw, Phase};
+use crate::model::tangential::ForcePiece;
 use crate::solve::hermite::{hermite_eval, hermite_max, hermite_root};
 use crate::solve::modal::steps::{dot, sum4, Grid, COS, Q_RESPONSE, SIN_W, V_RESPONSE, W_SIN};
 use crate::solve::modal::{ModalModel, State, LEVELS, REFINE};
+use crate::solve::oblique::Follower;
 
 /// The contact at the end of a step.
 #[derive(Debug, Clone, Copy)]
@@ -37,6 +39,8 @@ pub(super) struct Run<'a> {
     pub momentum_err: f64,
     /// Contact time and twist angle at separation, once it has happened.
     pub separated: Option<(f64, f64)>,
+    /// The tangential contact of an oblique or spinning ball.
+    pub tangential: Follower,
 }
 
 impl Run<'_> {
@@ -152,6 +156,9 @@ impl Run<'_> {
             let theta =
                 hermite_eval(self.next.q[3], self.next.v[3], self.s.q[3], self.s.v[3], h, sc) / p.racket.ix.sqrt();
             self.separated = Some((self.t - h + sc * h, theta));
+            self.tangential.advance(|| ForcePiece { h: sc * h, ..ForcePiece::hermite(h, (a.f, a.d), (f1, d1)) });
+        } else {
+            self.tangential.advance(|| ForcePiece::hermite(h, (a.f, a.d), (f1, d1)));
         }
         self.at = end;
     }

@@ -17,13 +17,14 @@ impl FaceMap {
     /// The table: x_m, r_m, every quantity's column, recontact (0/1); one row per evaluated
     /// point, row-major (x slowest).
     pub fn table(&self) -> Table {
+        let oblique = !self.params.oblique.is_normal();
         let mut cols = vec!["x_m", "r_m"];
-        cols.extend(Quantity::ALL.iter().map(|q| q.column()));
+        cols.extend(Quantity::in_table(oblique).map(|q| q.column()));
         cols.push("recontact");
         let mut t = Table::new("map", &cols);
         for (x, r, res) in self.points() {
             let mut row: Vec<Value> = vec![x.into(), r.into()];
-            row.extend(Quantity::ALL.iter().map(|q| Value::Num(q.of(res))));
+            row.extend(Quantity::in_table(oblique).map(|q| Value::Num(q.of(res))));
             row.push(Value::Int(i64::from(res.recontact)));
             // the row has one value per column, so push cannot fail
             let _ = t.push(row);

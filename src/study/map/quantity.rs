@@ -21,11 +21,33 @@ pub enum Quantity {
     /// Power potential `100 e_A`, %.
     #[default]
     Power,
+    /// Outgoing spin of an oblique or spinning ball, rpm (topspin > 0).
+    Spin,
+    /// Rebound angle of an oblique or spinning ball from the string-plane normal, degrees.
+    ReboundAngle,
 }
 
 impl Quantity {
-    /// Every quantity, in table order.
+    /// The quantities of every impact, in table order.
     pub const ALL: [Quantity; 5] = [Quantity::EA, Quantity::Tau, Quantity::Theta, Quantity::FVib, Quantity::Power];
+
+    /// The quantities of an oblique or spinning ball, after those in a table.
+    pub const OBLIQUE: [Quantity; 2] = [Quantity::Spin, Quantity::ReboundAngle];
+
+    /// Every quantity a map can show.
+    pub fn every() -> impl Iterator<Item = Quantity> {
+        Quantity::ALL.into_iter().chain(Quantity::OBLIQUE)
+    }
+
+    /// Whether it is a quantity of an oblique or spinning ball only.
+    pub fn is_oblique(self) -> bool {
+        self.source().0.is_oblique()
+    }
+
+    /// The quantities of a map's table: the oblique ones only for an oblique or spinning ball.
+    pub fn in_table(oblique: bool) -> impl Iterator<Item = Quantity> {
+        Quantity::every().filter(move |q| oblique || !q.is_oblique())
+    }
 
     /// The name on the command line.
     pub fn name(self) -> &'static str {
@@ -35,6 +57,8 @@ impl Quantity {
             Quantity::Theta => "theta",
             Quantity::FVib => "f_vib",
             Quantity::Power => "power",
+            Quantity::Spin => "spin",
+            Quantity::ReboundAngle => "rebound_angle",
         }
     }
 
@@ -46,6 +70,8 @@ impl Quantity {
             Quantity::Theta => "theta_deg",
             Quantity::FVib => "f_vib",
             Quantity::Power => "power_pct",
+            Quantity::Spin => "spin_rpm",
+            Quantity::ReboundAngle => "rebound_angle_deg",
         }
     }
 
@@ -57,6 +83,8 @@ impl Quantity {
             Quantity::Theta => "twist at the end of impact",
             Quantity::FVib => "vibration energy",
             Quantity::Power => "power potential 100 e_A",
+            Quantity::Spin => "outgoing spin",
+            Quantity::ReboundAngle => "rebound angle from the normal",
         }
     }
 
@@ -68,6 +96,8 @@ impl Quantity {
             Quantity::Theta => "theta",
             Quantity::FVib => "f_vib",
             Quantity::Power => "power 100 e_A",
+            Quantity::Spin => "spin",
+            Quantity::ReboundAngle => "rebound angle",
         }
     }
 
@@ -79,6 +109,8 @@ impl Quantity {
             Quantity::Theta => "deg",
             Quantity::FVib => "fraction of the ball's KE",
             Quantity::Power => "%",
+            Quantity::Spin => "rpm",
+            Quantity::ReboundAngle => "deg",
         }
     }
 
@@ -91,6 +123,8 @@ impl Quantity {
             Quantity::Theta => const { (field("theta_end_deg"), 1.0) },
             Quantity::FVib => const { (field("f_vib"), 1.0) },
             Quantity::Power => const { (field("e_a"), 100.0) },
+            Quantity::Spin => const { (field("spin_out_rpm"), 1.0) },
+            Quantity::ReboundAngle => const { (field("rebound_angle_deg"), 1.0) },
         }
     }
 
@@ -104,9 +138,12 @@ impl Quantity {
 impl std::str::FromStr for Quantity {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self> {
-        Quantity::ALL
-            .into_iter()
-            .find(|q| q.name() == s)
-            .ok_or_else(|| Error::invalid("quantity", s, "must be one of e_a, tau, theta, f_vib, power".to_string()))
+        Quantity::ALL.into_iter().find(|q| q.name() == s).ok_or_else(|| {
+            Error::invalid(
+                "quantity",
+                s,
+                "must be one of e_a, tau, theta, f_vib, power, spin, rebound_angle".to_string(),
+            )
+        })
     }
 }

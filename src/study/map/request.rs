@@ -131,6 +131,13 @@ impl MapRequest {
     /// each chunk of impacts.
     pub fn run(&self, configs: &[(String, Params)], progress: &mut dyn FnMut(u64)) -> Result<MapOutcome> {
         let (q, counts) = (self.quantity, (self.nx, self.nr));
+        if q.is_oblique() && configs.iter().any(|(_, p)| p.oblique.is_normal()) {
+            return Err(Error::invalid(
+                "quantity",
+                q.name(),
+                "is a quantity of an oblique or spinning ball: give --angle-deg or --spin-rpm",
+            ));
+        }
         let (table, heatmap, metadata, summary) = match configs {
             [(la, pa), (lb, pb)] => {
                 let d = DiffMap::compute(pa, pb, self.nx, self.nr, progress)?;

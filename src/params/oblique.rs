@@ -1,0 +1,88 @@
+//! Oblique incidence, spin and friction (SPEC.md section 6; beyond the paper). The defaults are
+//! the paper's normal incidence without spin, so a parameter set that does not mention them is
+//! the paper's impact.
+
+use serde::{Deserialize, Serialize};
+
+use super::keys;
+use crate::error::{Error, Result};
+
+/// How the ball arrives when it does not arrive along the string-plane normal, and the
+/// tangential contact that then acts.
+///
+/// Default friction and stiffness: `mu = 0.4`, the low end of the ball-on-string friction
+/// coefficients 0.39-0.78 of polyester strings in the Tennis Warehouse University string
+/// database (data/measured, rows M076-M078); `k_t = 2e4 N/m`, the ball's tangential contact
+/// stiffness taken as 2/3 of its normal stiffness `k1` (the ratio `2(1-nu)/(2-nu)` of Mindlin's
+/// elastic contact for rubber, `nu = 0.5`) with a laterally rigid string bed in series. Both
+/// are assumptions to be replaced by a measurement where one exists; `R = 33 mm` and
+/// `alpha = 0.55` are the usual tennis-ball values (ITF diameter 6.54-6.86 cm; a thin rubber
+/// shell of finite thickness lies between a solid sphere's 0.4 and a thin shell's 2/3).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Oblique {
+    /// Incidence angle from the string-plane normal, degrees; 0..=85.
+    pub angle_deg: f64,
+    /// Direction of the incoming velocity in the string plane, degrees from the long axis
+    /// towards the handle (90 = across the face towards +r); -360..=360.
+    pub azimuth_deg: f64,
+    /// Incoming spin about the in-plane axis perpendicular to the incoming direction, rpm;
+    /// topspin positive (the contact point moves slower than the centre); |spin| <= 2e4.
+    pub spin_rpm: f64,
+    /// Coefficient of friction of ball on strings; 0..=2.
+    pub mu: f64,
+    /// Tangential stiffness of ball and string bed in series, N/m; 1..=1e9.
+    pub kt: f64,
+    /// Ball radius `R`, m; 1e-3..=1.
+    pub ball_radius: f64,
+    /// Ball moment of inertia over `m_b R^2` (`alpha`); 0 < alpha <= 1 (solid sphere 0.4,
+    /// thin shell 2/3).
+    pub ball_inertia_factor: f64,
+}
+
+impl Default for Oblique {
+    fn default() -> Self {
+        Oblique {
+            angle_deg: 0.0,
+            azimuth_deg: 0.0,
+            spin_rpm: 0.0,
+            mu: 0.4,
+            kt: 2.0e4,
+            ball_radius: 0.033,
+            ball_inertia_factor: 0.55,
+        }
+    }
+}
+
+impl Oblique {
+    /// Whether this is the paper's normal incidence without spin (the tangential contact then
+    /// carries no force and is not computed).
+    pub fn is_normal(&self) -> bool {
+        self.angle_deg == 0.0 && self.spin_rpm == 0.0
+    }
+
+    /// Whether every field has its default value.
+    pub fn is_default(&self) -> bool {
+        *self == Oblique::default()
+    }
+
+    /// Check every field against the range of its declaration ([`keys`]).
+    pub fn validate(&self) -> Result<()> {
+        for (spec, v) in [
+            (keys::ANGLE_DEG, self.angle_deg),
+            (keys::AZIMUTH_DEG, self.azimuth_deg),
+            (keys::SPIN_RPM, self.spin_rpm),
+            (keys::MU, self.mu),
+            (keys::KT, self.kt),
+            (keys::BALL_RADIUS, self.ball_radius),
+        ] {
+            spec.check(v)?;
+        }
+        let alpha = self.ball_inertia_factor;
+        if !(alpha.is_finite() && alpha > 0.0 && alpha <= 1.0) {
+            let key = keys::BALL_INERTIA_FACTOR.key;
+            return Err(Error::invalid(key, alpha, format!("ball inertia factor must satisfy 0 < {key} <= 1")));
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,131 @@
+//! Oblique and spinning impacts on top of the normal one (SPEC.md section 6): the solvers step
+//! the normal impact at the normal speed `v1 cos(angle)` exactly as at normal incidence, feed
+//! its force history to the tangential grip-slip law ([`Tangential`]) piece by piece, and this
+//! file turns the tangential state at separation into the result's oblique fields.
+
+use crate::error::{Error, Result};
+use crate::model::beam::Beam;
+use crate::model::tangential::{ForcePiece, GripSlip, Tangential};
+use crate::params::Params;
+use crate::solve::outcome::ImpactResult;
+
+/// Revolutions per minute in rad/s.
+pub const RPM: f64 = std::f64::consts::PI / 30.0;
+
+/// The parameters of an impact's normal part: the same impact at the normal speed.
+pub(crate) fn normal_part(p: &Params) -> Params {
+    let mut n = *p;
+    n.impact.v1 = p.impact.v1 * p.oblique.angle_deg.to_radians().cos();
+    n
+}
+
+/// The tangential side of an oblique or spinning impact, prepared.
+#[derive(Debug, Clone, Copy)]
+pub struct Setup {
+    /// The grip-slip law.
+    law: GripSlip,
+    /// Incoming normal and tangential speed, m/s, and spin, rad/s.
+    v_n: f64,
+    v_t: f64,
+    omega: f64,
+}
+
+impl Setup {
+    /// The tangential side of the impact `p` on `beam` at the load point `x_load` (m from the
+    /// tip), or `None` for normal incidence without spin (no tangential force can arise).
+    pub(crate) fn of(p: &Params, beam: &Beam, x_load: f64) -> Option<Setup> {
+        let o = &p.oblique;
+        if o.is_normal() {
+            return None;
+        }
+        let mb = p.ball.mass;
+        let (sin_a, cos_a) = o.angle_deg.to_radians().sin_cos();
+        let (sin_z, cos_z) = o.azimuth_deg.to_radians().sin_cos();
+        // the lever of a force along t about the normal through the centre of mass
+        let arm = (x_load - beam.x_cm) * sin_z - p.impact.r * cos_z;
+        let law = GripSlip {
+            mu: o.mu,
+            kt: o.kt,
+            mb,
+            radius: o.ball_radius,
+            inertia: o.ball_inertia_factor * mb * o.ball_radius * o.ball_radius,
+            racket_inv_mass: 1.0 / beam.total_mass + arm * arm / (beam.i_cm + p.racket.ix),
+        };
+        Some(Setup { law, v_n: p.impact.v1 * cos_a, v_t: p.impact.v1 * sin_a, omega: o.spin_rpm * RPM })
+    }
+
+    /// The tangential contact before the ball touches.
+    pub(crate) fn start(&self) -> Tangential {
+        Tangential::new(self.law, self.v_t - self.law.radius * self.omega)
+    }
+}
+
+/// The tangential contact of an impact in progress (none at normal incidence without spin):
+/// each step hands it the piece of the normal force history it covered.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Follower(Option<Tangential>);
+
+impl Follower {
+    /// Follow the impact set up by `setup`, if any.
+    pub fn new(setup: Option<&Setup>) -> Self {
+        Follower(setup.map(Setup::start))
+    }
+
+    /// Advance over one piece of the normal force history.
+    #[inline]
+    pub fn advance(&mut self, piece: impl FnOnce() -> ForcePiece) {
+        if let Some(t) = &mut self.0 {
+            t.advance(&piece());
+        }
+    }
+
+    /// The oblique fields of the result `r` (whose normal fields are set), at separation after
+    /// a contact of `tau` seconds; the tangential ledger's error joins `energy_error`.
+    /// At normal incidence without spin they are NaN (they do not apply, and the JSON leaves
+    /// them out); otherwise each is checked to be finite (but `e_t`, undefined for a contact
+    /// point that arrives without slip).
+    pub fn complete(&self, setup: Option<&Setup>, r: &mut ImpactResult, v_n: f64) -> Result<()> {
+        let (Some(s), Some(t)) = (setup, &self.0) else {
+            let nan = f64::NAN;
+            (r.v2_n, r.v2_t, r.spin_out_rpm, r.rebound_angle_deg, r.e_t) = (nan, nan, nan, nan, nan);
+            (r.slip_fraction, r.f_friction, r.f_ball_spin, r.f_racket_inplane) = (nan, nan, nan, nan);
+            return Ok(());
+        };
+        r.v2_n = r.e_a * v_n;
+        let law = &s.law;
+        let (mb, inertia, radius) = (law.mb, law.inertia, law.radius);
+        let j = t.impulse;
+        let v2_t = s.v_t + j / mb;
+        let omega = s.omega - radius * j / inertia;
+        let ke = |v: f64, w: f64| 0.5 * mb * v * v + 0.5 * inertia * w * w;
+        let e_in = ke(s.v_n, 0.0) + ke(s.v_t, s.omega);
+        let e_t0 = ke(s.v_t, s.omega);
+        let inplane = 0.5 * law.racket_inv_mass * j * j;
+        let ledger = e_t0 - (ke(v2_t, omega) + inplane + t.friction_loss + t.spring_energy());
+        let w_in = s.v_t - radius * s.omega;
+        r.v2_t = v2_t;
+        r.spin_out_rpm = omega / RPM;
+        r.rebound_angle_deg = v2_t.atan2(r.v2_n).to_degrees();
+        r.e_t = if w_in == 0.0 { f64::NAN } else { -t.slip() / w_in };
+        r.slip_fraction = t.slide_time / r.tau_s;
+        r.f_friction = t.friction_loss / e_in;
+        r.f_ball_spin = 0.5 * inertia * omega * omega / e_in;
+        r.f_racket_inplane = inplane / e_in;
+        r.energy_error = r.energy_error.max(ledger.abs() / e_in);
+        let fields = [
+            ("v2_n", r.v2_n),
+            ("v2_t", r.v2_t),
+            ("spin_out_rpm", r.spin_out_rpm),
+            ("rebound_angle_deg", r.rebound_angle_deg),
+            ("slip_fraction", r.slip_fraction),
+            ("f_friction", r.f_friction),
+            ("f_ball_spin", r.f_ball_spin),
+            ("f_racket_inplane", r.f_racket_inplane),
+            ("energy_error", r.energy_error),
+        ];
+        match fields.iter().find(|(_, v)| !v.is_finite()) {
+            Some(&(field, _)) => Err(Error::NonFinite { field }),
+            None => Ok(()),
+        }
+    }
+}
