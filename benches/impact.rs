@@ -1,4 +1,5 @@
-//! Criterion benchmarks (`make bench`): one impact at the paper's settings, a fine `hat` beam,
+//! Criterion benchmarks (`make bench`): one impact at the paper's settings (and, on the modal
+//! solver, the same impact oblique and spinning), a fine `hat` beam,
 //! a 100-point Fig 5-style sweep, every experiment's table without PNG encoding, and the PNG
 //! rendering alone.
 
@@ -23,6 +24,15 @@ fn paper_impact(c: &mut Criterion) {
     c.bench_function("fig4_impact_n39_node_modal", |b| b.iter(|| simulate(std::hint::black_box(&modal)).unwrap()));
     let prepared = racket_impact::solve::modal::ModalModel::new(&modal).unwrap();
     c.bench_function("fig4_impact_n39_node_modal_prepared", |b| b.iter(|| prepared.run().unwrap()));
+    // the same impact arriving at 30 deg with 2000 rpm of topspin: the tangential grip-slip
+    // law follows the normal force piece by piece
+    let mut oblique = modal;
+    oblique.oblique.angle_deg = 30.0;
+    oblique.oblique.spin_rpm = 2000.0;
+    let prepared_oblique = racket_impact::solve::modal::ModalModel::new(&oblique).unwrap();
+    c.bench_function("fig4_impact_n39_node_modal_prepared_oblique_30deg", |b| {
+        b.iter(|| prepared_oblique.run().unwrap())
+    });
     let mut fine = p;
     fine.numerics.segments = 160;
     fine.numerics.load = LoadRule::Hat;
