@@ -53,8 +53,11 @@ fn slide_threshold_deg() -> Result<f64> {
     Ok(f64::NAN)
 }
 
-/// The section, as Markdown.
-pub fn section() -> Result<String> {
+/// One comparison: quantity, source, measured, ours, verdict.
+type Comparison = (&'static str, &'static str, String, String, &'static str);
+
+/// The comparisons with measurements, each computed now.
+fn comparisons() -> Result<Vec<Comparison>> {
     let (s52, s62) = (simulate(&twu_setup(52.0))?.spin_out_rpm, simulate(&twu_setup(62.0))?.spin_out_rpm);
     let change = 100.0 * (s62 / s52 - 1.0);
     let changes: Vec<f64> = TWU_52.iter().zip(TWU_62).map(|(a, b)| 100.0 * (b / a - 1.0)).collect();
@@ -67,7 +70,7 @@ pub fn section() -> Result<String> {
             .map(|e| e.spin_rpm)
     };
     let (f20, f30) = (forehand(20.0)?, forehand(30.0)?);
-    let rows = [
+    Ok(vec![
         (
             "Outgoing spin at 52 lb, clamped racket, 25 m/s, 40 deg, 3820 rpm backspin in",
             "TWU, String Movement and Spin (M001-M013, seven strings)",
@@ -103,7 +106,47 @@ pub fn section() -> Result<String> {
             format!("{} rpm at a 20 deg path, {} rpm at 30 deg (30 m/s swing, 20 m/s ball)", fmt_sig(f20, 4), fmt_sig(f30, 4)),
             if (1800.0..=3250.0).contains(&f30) || (1800.0..=3250.0).contains(&f20) { "in the measured range for a 20-30 deg path (path angles were not measured)" } else { "**outside the measured range**" },
         ),
-    ];
+    ])
+}
+
+/// The model on the paper's conjecture, a friction that depends on the tension
+/// (`oblique_tension`), as a paragraph.
+fn conjecture() -> Result<String> {
+    let spin_at = |tension: f64, mu: f64| -> Result<f64> {
+        let mut p = Context::paper().paper_params(CENTRE_X, ks_from_tension_lb(tension));
+        p.impact.v1 = 30.0;
+        p.oblique.angle_deg = 30.0;
+        p.oblique.azimuth_deg = 90.0;
+        p.oblique.mu = mu;
+        Ok(simulate(&p)?.spin_out_rpm)
+    };
+    let constant = 100.0 * (spin_at(70.0, 0.4)? / spin_at(40.0, 0.4)? - 1.0);
+    let growing = 100.0 * (spin_at(70.0, 0.4 * 70.0 / 60.0)? / spin_at(40.0, 0.4 * 40.0 / 60.0)? - 1.0);
+    Ok(format!(
+        "\nThe paper's conjecture (`oblique_tension`, free racket, 30 deg, 30 m/s): with the friction \
+         independent of tension, going from 40 to 70 lb changes the spin by {constant:+.1} % (the \
+         normal force is larger and the contact shorter); with the friction made proportional to \
+         the tension (an assumption, not a measurement) by {growing:+.1} %. A sliding ball's spin is \
+         set by mu times the normal impulse, while a ball that grips leaves near rolling whatever mu \
+         is, so in this model tension acting through friction changes spin by a few per cent to a \
+         few tens of per cent, the size of the string-to-string scatter of the measurements above.\n"
+    ))
+}
+
+/// Where the model holds against these measurements and where it does not.
+const LIMITS: &str = "\nWhere the model holds and where it does not. The change of spin with tension is as small as \
+     measured. The spin itself on a clamped racket comes out about twice the measured, and the ball \
+     grips up to a larger angle than measured: both say the model's tangential contact is too \
+     strong. Likely reasons, in the order we would test them: the default friction (0.4, the low \
+     end of TWU's string data, not a sliding friction measured in an impact); the point contact, \
+     which ignores that the deformed ball's normal force acts ahead of its centre and opposes \
+     the spin (Cross 2002); strings that slide sideways and snap back, which a tangential \
+     spring in series with a rigid string bed does not follow; and the tangential stiffness, \
+     estimated rather than measured. These are open parameters of the new physics, left at \
+     their stated defaults rather than tuned to these points.\n";
+
+/// The section, as Markdown.
+pub fn section() -> Result<String> {
     let mut s = String::from(
         "\n## Beyond the paper: oblique impacts, friction and spin\n\n\
          The paper leaves oblique impacts to further work. `racket-impact` adds the tangential \
@@ -116,40 +159,10 @@ pub fn section() -> Result<String> {
          verdict is against the spread between strings.\n\n\
          | quantity | source | measured | ours | verdict |\n|---|---|---|---|---|\n",
     );
-    for (what, source, measured, ours, verdict) in rows {
+    for (what, source, measured, ours, verdict) in comparisons()? {
         s.push_str(&format!("| {what} | {source} | {measured} | {ours} | {verdict} |\n"));
     }
-    // the paper's conjecture, on the free paper racket at 30 deg and 30 m/s (`oblique_tension`)
-    let spin_at = |tension: f64, mu: f64| -> Result<f64> {
-        let mut p = Context::paper().paper_params(CENTRE_X, ks_from_tension_lb(tension));
-        p.impact.v1 = 30.0;
-        p.oblique.angle_deg = 30.0;
-        p.oblique.azimuth_deg = 90.0;
-        p.oblique.mu = mu;
-        Ok(simulate(&p)?.spin_out_rpm)
-    };
-    let constant = 100.0 * (spin_at(70.0, 0.4)? / spin_at(40.0, 0.4)? - 1.0);
-    let growing = 100.0 * (spin_at(70.0, 0.4 * 70.0 / 60.0)? / spin_at(40.0, 0.4 * 40.0 / 60.0)? - 1.0);
-    s.push_str(
-        "\nWhere the model holds and where it does not. The change of spin with tension is as small as \
-         measured. The spin itself on a clamped racket comes out about twice the measured, and the ball \
-         grips up to a larger angle than measured: both say the model's tangential contact is too \
-         strong. Likely reasons, in the order we would test them: the default friction (0.4, the low \
-         end of TWU's string data, not a sliding friction measured in an impact); the point contact, \
-         which ignores that the deformed ball's normal force acts ahead of its centre and opposes \
-         the spin (Cross 2002); strings that slide sideways and snap back, which a tangential \
-         spring in series with a rigid string bed does not follow; and the tangential stiffness, \
-         estimated rather than measured. These are open parameters of the new physics, left at \
-         their stated defaults rather than tuned to these points.\n",
-    );
-    s.push_str(&format!(
-        "\nThe paper's conjecture (`oblique_tension`, free racket, 30 deg, 30 m/s): with the friction \
-         independent of tension, going from 40 to 70 lb changes the spin by {constant:+.1} % (the \
-         normal force is larger and the contact shorter); with the friction made proportional to \
-         the tension (an assumption, not a measurement) by {growing:+.1} %. A sliding ball's spin is \
-         set by mu times the normal impulse, while a ball that grips leaves near rolling whatever mu \
-         is, so in this model tension acting through friction changes spin by a few per cent to a \
-         few tens of per cent, the size of the string-to-string scatter of the measurements above.\n"
-    ));
+    s.push_str(LIMITS);
+    s.push_str(&conjecture()?);
     Ok(s)
 }
