@@ -8,7 +8,9 @@
 //! the compression and the peak force grow with it. Overrides: none (k1 3e4 N/m, p 2.55,
 //! m_b 57 g).
 
-use super::{col, line, on_right, scaled, Context, Experiment, Ours, PaperClaim};
+use super::{
+    col, line, on_right, paper_label, paper_points, paper_value, scaled, Context, Experiment, Ours, PaperClaim,
+};
 use crate::error::Result;
 use crate::model::reduced::{concrete_drop, DropResult};
 use crate::params::{drop_speed, Ball, DROP_HEIGHT_100_IN};
@@ -68,8 +70,21 @@ fn chart(_: &Context, t: &Table) -> Chart {
         curves: vec![
             line("e", h.clone(), col(t, "e"), 0),
             line("Y0 (cm)", h.clone(), scaled(col(t, "y0_m"), 100.0), 3),
-            on_right(line("tau (ms)", h, scaled(col(t, "tau_s"), 1e3), 1)),
+            on_right(line("tau", h, scaled(col(t, "tau_s"), 1e3), 1)),
+            paper_points(
+                paper_label(&format!("e {} at 100 in", fmt_sig(paper_value("concrete_e"), 3))),
+                vec![DROP_HEIGHT_100_IN],
+                &["concrete_e"],
+                0,
+            ),
+            on_right(paper_points(
+                paper_label(&format!("tau {} ms at 100 in", fmt_sig(paper_value("concrete_tau"), 3))),
+                vec![DROP_HEIGHT_100_IN],
+                &["concrete_tau"],
+                1,
+            )),
         ],
+        bands: vec![],
         vlines: vec![VLine { x: DROP_HEIGHT_100_IN, label: "100 inches".into() }],
     }
 }

@@ -9,7 +9,7 @@
 //! rows repeat the paper's N = 39 impact with multiples of the default step: the default is
 //! converged far below the discretisation error.
 
-use super::{col, fig4_energy, impact, line, styled, Context, Experiment};
+use super::{col, fig4_energy, impact, line, paper_label, paper_list, paper_points, styled, Context, Experiment};
 use crate::error::Result;
 use crate::params::{LoadRule, Params};
 use crate::render::plot::{Chart, LineStyle};
@@ -97,8 +97,14 @@ fn chart(_: &Context, t: &Table) -> Chart {
             styled(line("node load (paper), each N", col(&node, "segments"), col(&node, "e_a"), 1), LineStyle::Points),
             line("hat load", col(&hat, "segments"), col(&hat, "e_a"), 5),
             styled(line("converged (hat, N = 320)", vec![10.0, 400.0], vec![e_ref; 2], 0), LineStyle::Dashed),
-            styled(line("paper: e_A = 0.166 at N = 39", vec![39.0], vec![0.166], 4), LineStyle::Points),
+            paper_points(
+                paper_label(&format!("e_A {} at N = 39", paper_list(&["fig4_e_a"]))),
+                vec![39.0],
+                &["fig4_e_a"],
+                4,
+            ),
         ],
+        bands: vec![],
         vlines: vec![],
     }
 }

@@ -8,10 +8,12 @@
 //! and the string PE the paper lumps into "PE ball". Expect: KE ball falls to ~0 at maximum
 //! compression and ends at e_A^2 = 0.028; PE racket oscillates at twice 125 Hz after impact.
 
-use super::{col, converged, impact, line, scaled, styled, Context, Experiment, Ours, PaperClaim};
+use super::{
+    col, converged, impact, line, paper_label, paper_value, scaled, styled, Context, Experiment, Ours, PaperClaim,
+};
 use crate::error::Result;
 use crate::params::Params;
-use crate::render::plot::{Chart, LineStyle, VLine};
+use crate::render::plot::{Chart, Curve, LineStyle, VLine};
 use crate::render::table::{fmt_sig, Table};
 use crate::solve::{ImpactResult, Model, SeriesOptions};
 
@@ -82,6 +84,13 @@ fn run(ctx: &Context) -> Result<Table> {
     Ok(t)
 }
 
+/// The paper's end of the impact: KE ball 0.028 (= e_A^2, e_A 0.166) at tau = 4.78 ms.
+fn paper_end_point() -> Curve {
+    let (tau, ke, e_a) = (paper_value("fig4_tau"), paper_value("fig4_ke_ball"), paper_value("fig4_e_a"));
+    let label = format!("KE ball {} at tau {} ms (e_A {})", fmt_sig(ke, 2), fmt_sig(tau, 3), fmt_sig(e_a, 3));
+    styled(line(paper_label(&label), vec![tau], vec![ke], 0), LineStyle::Paper)
+}
+
 fn chart(_: &Context, t: &Table) -> Chart {
     let ms = scaled(col(t, "t_s"), 1e3);
     let tau_ms = col(t, "tau_s").first().copied().unwrap_or(f64::NAN) * 1e3;
@@ -102,13 +111,15 @@ fn chart(_: &Context, t: &Table) -> Chart {
         y2_range: None,
         curves: vec![
             c("KE racket", "ke_racket", 5),
-            c("PE racket", "pe_racket", 4),
+            c("PE racket", "pe_racket", 6),
             c("Spin KE", "ke_spin", 3),
             c("PE ball (incl. loss)", "pe_ball", 1),
             c("KE ball", "ke_ball", 0),
             styled(c("PE strings", "pe_string", 2), LineStyle::Dashed),
             styled(c("total", "total", 0), LineStyle::Faint),
+            paper_end_point(),
         ],
+        bands: vec![],
         vlines: vec![VLine { x: tau_ms, label: "end of impact".into() }],
     }
 }

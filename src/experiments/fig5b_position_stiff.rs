@@ -5,7 +5,7 @@
 //! 5(a), with larger ball and vibration losses; at the centre e_A = 0.41 and tau ~5.0 ms; a
 //! dead spot (e_A ~ 0) near the tip and f(vib) ~ 0 at the fundamental node (~16 cm).
 
-use super::position::{centre_three, chart, run};
+use super::position::{centre_three, chart, run, PaperCentre};
 use super::{converged, impact, read_off_curve, Context, Experiment, Ours, PaperClaim};
 use crate::error::Result;
 use crate::solve::ImpactResult;
@@ -16,7 +16,14 @@ pub const EXPERIMENT: Experiment = Experiment {
     title: "e_A, f(ball), f(vib) and tau along the racket, r 0, ks 4e4 N/m",
     paper_ref: "Fig 5(b) and p. 5: centre e_A 0.41, tau ~5.0 ms",
     run: |ctx| run(ctx, EXPERIMENT.id, 4.0e4),
-    chart: |_, t| chart(t, "Fig 5(b): impact position, ks 4e4 N/m, r 0"),
+    chart: |_, t| {
+        let paper = PaperCentre {
+            e_a: "fig5_centre_e_a_stiff",
+            tau: "fig5_centre_tau_stiff",
+            node_f_vib: Some("fig5_node_f_vib"),
+        };
+        chart(t, "Fig 5(b): impact position, ks 4e4 N/m, r 0", paper)
+    },
     claims: &[
         PaperClaim { id: "fig5_centre_e_a_stiff", ours: |ctx| centre_three(ctx, 4.0e4, |r| r.e_a) },
         PaperClaim { id: "fig5_centre_tau_stiff", ours: |ctx| centre_three(ctx, 4.0e4, |r| r.tau_s * 1e3) },

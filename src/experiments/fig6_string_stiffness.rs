@@ -7,9 +7,9 @@
 //! exceeds about 10 ms"; e_A rises as k_s falls.
 
 use super::position::{sweep_curves, sweep_values, COLUMNS};
-use super::{col, impact, log_space, sweep, Context, Experiment, Ours, PaperClaim};
+use super::{col, impact, line, log_space, on_right, paper_list, styled, sweep, Context, Experiment, Ours, PaperClaim};
 use crate::error::Result;
-use crate::render::plot::Chart;
+use crate::render::plot::{Chart, Curve, LineStyle};
 use crate::render::table::Table;
 
 /// The registry entry.
@@ -18,7 +18,11 @@ pub const EXPERIMENT: Experiment = Experiment {
     title: "e_A, f(ball), f(vib) and tau against ks at x 6 cm, r 0 (EI 150)",
     paper_ref: "Fig 6 and p. 5-6: vibration ~0 once tau exceeds ~10 ms",
     run: |ctx| stiffness_sweep(ctx, EXPERIMENT.id, &[ctx.frame_ei(150.0)]),
-    chart: |_, t| stiffness_chart(t, "Fig 6: string stiffness, x 6 cm, r 0, EI 150 N m^2 (125 Hz)", None),
+    chart: |_, t| {
+        let mut c = stiffness_chart(t, "Fig 6: string stiffness, x 6 cm, r 0, EI 150 N m^2 (125 Hz)", None);
+        c.curves.push(paper_tau_line());
+        c
+    },
     claims: &[PaperClaim { id: "fig6_vibration_gone_at_10ms", ours: vibration_gone_at_10ms }],
 };
 
@@ -32,6 +36,21 @@ fn vibration_gone_at_10ms(ctx: &Context) -> Result<Ours> {
         }
     }
     Ours::plain(last)
+}
+
+/// The impact duration beyond which the paper finds the vibration "essentially zero", ms
+/// (claim `fig6_vibration_gone_at_10ms`).
+pub const TAU_VIBRATION_GONE_MS: f64 = 10.0;
+
+/// The paper's statement as a dashed line on the tau axis at [`TAU_VIBRATION_GONE_MS`] (the
+/// paper gives no k_s for it, so it is a line, not a point).
+fn paper_tau_line() -> Curve {
+    let label = format!(
+        "paper: f(vib) {} once tau exceeds about {} ms",
+        paper_list(&["fig6_vibration_gone_at_10ms"]),
+        TAU_VIBRATION_GONE_MS
+    );
+    on_right(styled(line(label, vec![1.0e3, 1.0e6], vec![TAU_VIBRATION_GONE_MS; 2], 4), LineStyle::Dashed))
 }
 
 /// Impact position of Figs 6 and 9, m from the tip.
@@ -90,6 +109,7 @@ pub fn stiffness_chart(t: &Table, title: &str, faint_ei: Option<f64>) -> Chart {
         y_range: Some((0.0, 1.0)),
         y2_range: Some((0.0, 25.0)),
         curves,
+        bands: vec![],
         vlines: vec![],
     }
 }

@@ -6,7 +6,7 @@
 //! duration; about 19 % more rotation when k_s is halved; e_A falls with r and rises when k_s
 //! is reduced.
 
-use super::off_axis::{chart, run, theta_r4};
+use super::off_axis::{chart, paper_gain_point, run, theta_r4};
 use super::speeds::gain_pct;
 use super::{Experiment, Ours, PaperClaim};
 
@@ -16,7 +16,10 @@ pub const EXPERIMENT: Experiment = Experiment {
     title: "Rotation angle and e_A against off-axis distance r at x 10 cm, v1 30 m/s",
     paper_ref: "Fig 7 and p. 6: theta +19 % when ks is halved",
     run: |ctx| run(ctx, EXPERIMENT.id, 0.10),
-    chart: |_, t| chart(t, "Fig 7: off-axis impact at x = 10 cm, v1 = 30 m/s"),
+    chart: |_, t| {
+        let paper = vec![paper_gain_point(t, "fig7_theta_gain_ks_half")];
+        chart(t, "Fig 7: off-axis impact at x = 10 cm, v1 = 30 m/s", paper)
+    },
     claims: &[PaperClaim {
         id: "fig7_theta_gain_ks_half",
         ours: |ctx| Ours::plain(gain_pct(theta_r4(ctx, 0.10, 4.0e4)?, theta_r4(ctx, 0.10, 2.0e4)?)),

@@ -6,7 +6,7 @@
 //! the impact duration; "A ball impacting at r = 4 cm near the centre of the strings causes the
 //! racket to rotate by about 10 deg"; e_A falls with r and rises when k_s is reduced.
 
-use super::off_axis::{chart, run, theta_r4};
+use super::off_axis::{chart, paper_gain_point, paper_theta_point, run, theta_r4};
 use super::speeds::{centre_setup, gain_pct};
 use super::{Context, Experiment, Ours, PaperClaim, CENTRE_X};
 use crate::error::Result;
@@ -18,7 +18,14 @@ pub const EXPERIMENT: Experiment = Experiment {
     title: "Rotation angle and e_A against off-axis distance r at x 15.8 cm, v1 30 m/s",
     paper_ref: "Fig 8 and p. 6: r 4 cm near the centre rotates the racket ~10 deg",
     run: |ctx| run(ctx, EXPERIMENT.id, CENTRE_X),
-    chart: |_, t| chart(t, "Fig 8: off-axis impact at x = 15.8 cm, v1 = 30 m/s"),
+    chart: |_, t| {
+        let paper = vec![
+            paper_theta_point("fig8_theta_r4_50lb", true, "50 lb (ks 3.33e4)", 0),
+            paper_theta_point("fig8_theta_r4_60lb", false, "60 lb (ks 4e4)", 3),
+            paper_gain_point(t, "fig8_theta_gain_ks_half"),
+        ];
+        chart(t, "Fig 8: off-axis impact at x = 15.8 cm, v1 = 30 m/s", paper)
+    },
     claims: &[
         PaperClaim {
             id: "fig8_theta_r4_50lb",

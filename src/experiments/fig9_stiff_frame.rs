@@ -8,7 +8,7 @@
 
 use super::fig6_string_stiffness::{stiffness_chart, stiffness_sweep, X_TIP};
 use super::speeds::{gain_pct, tip_setup};
-use super::{converged, impact, Context, Experiment, Ours, PaperClaim};
+use super::{converged, impact, paper_label, paper_list, paper_points, Context, Experiment, Ours, PaperClaim};
 use crate::error::Result;
 
 /// The registry entry.
@@ -18,11 +18,15 @@ pub const EXPERIMENT: Experiment = Experiment {
     paper_ref: "Fig 9 and p. 6: at ks 4e4, e_A 0.10 -> 0.18, serve speed +7 %",
     run: |ctx| stiffness_sweep(ctx, EXPERIMENT.id, &[ctx.frame_ei(384.0), ctx.frame_ei(150.0)]),
     chart: |ctx, t| {
-        stiffness_chart(
+        let mut c = stiffness_chart(
             t,
             "Fig 9: stiff frame EI 384 N m^2 (200 Hz), x 6 cm, r 0; faint: EI 150",
             Some(ctx.frame_ei(150.0)),
-        )
+        );
+        let ids = ["fig9_e_a_ei384", "fig9_e_a_ei150"];
+        let label = format!("e_A {} (EI 384, 150) at ks 4e4", paper_list(&ids));
+        c.curves.push(paper_points(paper_label(&label), vec![4.0e4; 2], &ids, 0));
+        c
     },
     claims: &[
         PaperClaim { id: "fig9_e_a_ei150", ours: |ctx| e_a_at_tip(ctx, 150.0) },

@@ -64,7 +64,7 @@ pub mod variant_strings;
 pub mod variants;
 
 pub use claims::{Ours, PaperClaim};
-pub use curves::{col, line, on_right, scaled, styled};
+pub use curves::{col, line, on_right, paper_label, paper_list, paper_points, paper_text, paper_value, scaled, styled};
 pub use setup::{
     checked, converged, impact, log_space, node_positions, read_off_curve, sweep, Context, CENTRE_X, V1_OFF_AXIS,
 };

@@ -8,11 +8,11 @@
 //! `K phi = omega^2 M phi`. A uniform beam's mode shapes do not depend on EI (all frequencies
 //! scale with sqrt(EI)), so the shapes are drawn once with both frequencies in the legend.
 
-use super::{col, line, Context, Experiment, Ours, PaperClaim};
+use super::{col, line, paper_label, paper_list, paper_value, styled, Context, Experiment, Ours, PaperClaim};
 use crate::error::Result;
 use crate::model::beam::{Beam, Modes};
 use crate::params::Racket;
-use crate::render::plot::{Chart, VLine};
+use crate::render::plot::{Chart, LineStyle, VLine};
 use crate::render::table::{fmt_sig, Table};
 
 /// The registry entry.
@@ -107,6 +107,9 @@ fn chart(_: &Context, t: &Table) -> Chart {
         let label = format!("mode {k}: {} Hz (EI 150), {} Hz (EI 384)", fmt_sig(f150, 4), fmt_sig(f384, 4));
         curves.push(line(label, x, shape, k - 1));
     }
+    // the paper's node of the fundamental: where the mode-1 shape crosses zero
+    let node = paper_label(&format!("fundamental node {} cm from the tip", paper_list(&["modes_node"])));
+    curves.push(styled(line(node, vec![paper_value("modes_node")], vec![0.0], 0), LineStyle::Paper));
     Chart {
         title: "Free racket modes, N = 39 (p. 3-4): 125 / 345 Hz, node 16 cm; EI 384: 200 Hz".into(),
         x_label: "distance from the tip x (cm)".into(),
@@ -118,5 +121,6 @@ fn chart(_: &Context, t: &Table) -> Chart {
         y2_range: None,
         curves,
         vlines,
+        bands: vec![],
     }
 }

@@ -105,6 +105,7 @@ fn chart(_: &Context, t: &Table) -> Chart {
         y_range: Some((0.0, 150.0)),
         y2_range: Some((0.0, 9000.0)),
         curves,
+        bands: vec![],
         vlines: vec![],
     }
 }

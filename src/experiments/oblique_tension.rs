@@ -102,7 +102,7 @@ fn chart(_: &Context, t: &Table) -> Chart {
             let tag = format!("{angle} deg, mu {law}");
             curves.push(styled(line(format!("spin, {tag}"), x.clone(), col(&s, "spin_out_rpm"), 1 + j), style));
             curves.push(styled(
-                on_right(line(format!("rebound angle, {tag}"), x, col(&s, "rebound_angle_deg"), 3 + j)),
+                on_right(line(format!("rebound angle, {tag}"), x, col(&s, "rebound_angle_deg"), 3 + 3 * j)),
                 style,
             ));
         }
@@ -117,6 +117,7 @@ fn chart(_: &Context, t: &Table) -> Chart {
         y_range: Some((0.0, 12000.0)),
         y2_range: Some((0.0, 100.0)),
         curves,
+        bands: vec![],
         vlines: vec![],
     }
 }

@@ -5,9 +5,13 @@
 //! columns and curves.
 
 use super::CENTRE_X;
-use super::{col, converged, impact, line, node_positions, on_right, read_off_curve, scaled, sweep, Context, Ours};
+use super::{
+    col, converged, impact, line, node_positions, on_right, read_off_curve, scaled, styled, sweep, Context, Ours,
+};
+use super::{paper_label, paper_points, paper_value};
 use crate::error::Result;
-use crate::render::plot::{Chart, Curve, VLine};
+use crate::render::plot::{Band, Chart, Curve, LineStyle, VLine};
+use crate::render::table::fmt_sig;
 use crate::render::table::{Table, Value};
 use crate::solve::ImpactResult;
 
@@ -36,9 +40,52 @@ pub fn sweep_values(r: &ImpactResult) -> Vec<Value> {
     [r.e_a, r.f_ball, r.f_vib, r.f_vib_peak_pe, r.tau_s, r.peak_force_n].into_iter().map(Into::into).collect()
 }
 
-/// The figure of a position sweep.
-pub fn chart(t: &Table, title: &str) -> Chart {
+/// Length of the string face from the tip, m: the default face of the string-face maps
+/// (`study::map::DEFAULT_FACE_LENGTH`), as the paper's racket has no head outline. The position
+/// figures shade it.
+pub const STRING_FACE_LENGTH: f64 = 0.32;
+
+/// Palette colours of the sweep curves: e_A, f(ball), f(vib), tau.
+pub const SWEEP_COLORS: [usize; 4] = [0, 1, 2, 6];
+
+/// The paper's values on a position figure: the claim ids of e_A and tau at the centre of the
+/// strings, and of f(vib) at the fundamental node (16 cm) where the paper states it.
+#[derive(Clone, Copy, Debug)]
+pub struct PaperCentre {
+    /// e_A at the centre (15.8 cm).
+    pub e_a: &'static str,
+    /// tau (ms) at the centre.
+    pub tau: &'static str,
+    /// f(vib) at 16 cm, if stated for this figure.
+    pub node_f_vib: Option<&'static str>,
+}
+
+/// The figure of a position sweep, with the paper's values at the centre of the strings.
+pub fn chart(t: &Table, title: &str, paper: PaperCentre) -> Chart {
     let x = scaled(col(t, "x_m"), 100.0);
+    let centre = CENTRE_X * 100.0;
+    let mut curves = sweep_curves(x, t);
+    let [c_ea, _, c_vib, c_tau] = SWEEP_COLORS;
+    curves.push(paper_points(
+        paper_label(&format!("e_A {} at {} cm", fmt_sig(paper_value(paper.e_a), 3), fmt_sig(centre, 3))),
+        vec![centre],
+        &[paper.e_a],
+        c_ea,
+    ));
+    curves.push(on_right(paper_points(
+        paper_label(&format!("tau about {} ms at {} cm", fmt_sig(paper_value(paper.tau), 2), fmt_sig(centre, 3))),
+        vec![centre],
+        &[paper.tau],
+        c_tau,
+    )));
+    if let Some(id) = paper.node_f_vib {
+        curves.push(paper_points(
+            paper_label(&format!("f(vib) {} at the node, 16 cm", fmt_sig(paper_value(id), 1))),
+            vec![16.0],
+            &[id],
+            c_vib,
+        ));
+    }
     Chart {
         title: title.into(),
         x_label: "impact distance from the tip x (cm)".into(),
@@ -46,20 +93,26 @@ pub fn chart(t: &Table, title: &str) -> Chart {
         y2_label: Some("impact duration tau (ms)".into()),
         x_log: false,
         x_range: Some((0.0, 71.0)),
-        y_range: Some((-0.1, 0.6)),
-        y2_range: Some((0.0, 8.0)),
-        curves: sweep_curves(x, t),
-        vlines: vec![VLine { x: CENTRE_X * 100.0, label: "centre of the strings (15.8 cm)".into() }],
+        y_range: Some((-0.1, 1.0)),
+        y2_range: Some((0.0, 11.0)),
+        curves,
+        bands: vec![Band::new(
+            0.0,
+            STRING_FACE_LENGTH * 100.0,
+            format!("string face (tip to {} cm)", fmt_sig(STRING_FACE_LENGTH * 100.0, 3)),
+        )],
+        vlines: vec![VLine { x: centre, label: "centre of the strings (15.8 cm)".into() }],
     }
 }
 
-/// The paper's four curves: e_A, f(ball), f(vib) on the left, tau (ms) on the right.
+/// The paper's four curves: e_A, f(ball), f(vib) on the left, tau (ms, dashed) on the right.
 pub fn sweep_curves(x: Vec<f64>, t: &Table) -> Vec<Curve> {
+    let [c_ea, c_ball, c_vib, c_tau] = SWEEP_COLORS;
     vec![
-        line("e_A", x.clone(), col(t, "e_a"), 0),
-        line("f(ball)", x.clone(), col(t, "f_ball"), 1),
-        line("f(vib)", x.clone(), col(t, "f_vib_peak_pe"), 2),
-        on_right(line("tau (ms)", x, scaled(col(t, "tau_s"), 1e3), 4)),
+        line("e_A", x.clone(), col(t, "e_a"), c_ea),
+        line("f(ball)", x.clone(), col(t, "f_ball"), c_ball),
+        line("f(vib)", x.clone(), col(t, "f_vib_peak_pe"), c_vib),
+        on_right(styled(line("tau", x, scaled(col(t, "tau_s"), 1e3), c_tau), LineStyle::Dashed)),
     ]
 }
 

@@ -21,7 +21,7 @@ use super::{
 use crate::error::Result;
 use crate::params::{ks_from_tension_lb, Params};
 use crate::render::plot::{Chart, LineStyle, VLine};
-use crate::render::table::{fmt_sig, Table};
+use crate::render::table::Table;
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {
@@ -203,16 +203,16 @@ fn push(t: &mut Table, group: &str, lb: f64, ks: f64, ei: f64, x: f64, a: &Setup
 
 fn chart(_: &Context, t: &Table) -> Chart {
     let tension = t.filter("group", "tension");
-    let frame = t.filter("group", "frame");
     let lb = super::col(&tension, "tension_lb");
-    let serve_frame = super::col(&frame, "serve_gain_pct").last().copied().unwrap_or(f64::NAN);
-    let fh_frame = super::col(&frame, "forehand_gain_pct").last().copied().unwrap_or(f64::NAN);
+    // "<what> +a, +b <unit> at 30, 50 lb" from the paper's values as printed
+    let pp = |what: &str, unit: &str, ids: &[&str], color: usize| {
+        let values = ids.iter().map(|id| format!("+{}", super::paper_list(&[id]))).collect::<Vec<_>>().join(", ");
+        let at = if ids.len() == 2 { "30, 50 lb" } else { "30 lb" };
+        let x = if ids.len() == 2 { vec![30.0, 50.0] } else { vec![30.0] };
+        super::paper_points(super::paper_label(&format!("{what} {values} {unit} at {at}")), x, ids, color)
+    };
     Chart {
-        title: format!(
-            "Speed gains vs 60 lb at the centre; 200 Hz frame at 6 cm: serve {} %, forehand {} %",
-            fmt_sig(serve_frame, 2),
-            fmt_sig(fh_frame, 2)
-        ),
+        title: "Speed gains against string tension, relative to 60 lb, impact at the centre of the strings".into(),
         x_label: "string tension (lb), ks = 4e4 N/m x tension / 60 lb".into(),
         y_label: "change relative to 60 lb (%)".into(),
         y2_label: Some("impact duration change (ms)".into()),
@@ -226,15 +226,15 @@ fn chart(_: &Context, t: &Table) -> Chart {
             line("forehand speed (1+2e_A) v1", lb.clone(), super::col(&tension, "forehand_gain_pct"), 2),
             line("rotation, r 4 cm", lb.clone(), super::col(&tension, "theta_change_pct"), 3),
             super::on_right(super::styled(
-                line("tau change (ms)", lb.clone(), super::scaled(super::col(&tension, "tau_change_s"), 1e3), 4),
+                line("tau change", lb.clone(), super::scaled(super::col(&tension, "tau_change_s"), 1e3), 6),
                 LineStyle::Dashed,
             )),
-            super::styled(line("paper: serve at 30 and 50 lb", vec![30.0, 50.0], vec![2.0, 0.7], 1), LineStyle::Points),
-            super::styled(
-                line("paper: forehand at 30 and 50 lb", vec![30.0, 50.0], vec![3.3, 1.1], 2),
-                LineStyle::Points,
-            ),
+            pp("e_A", "%", &["speeds_ks_half_e_a_gain"], 0),
+            pp("serve", "%", &["speeds_ks_half_serve_gain", "speeds_60_50_serve_gain"], 1),
+            pp("forehand", "%", &["speeds_ks_half_forehand_gain", "speeds_60_50_forehand_gain"], 2),
+            super::on_right(pp("tau", "ms", &["discussion_tau_ks_half", "speeds_60_50_tau_change"], 6)),
         ],
+        bands: vec![],
         vlines: vec![VLine { x: 30.0, label: "30 lb = ks 2e4 N/m".into() }],
     }
 }

@@ -76,6 +76,7 @@ fn chart(_: &Context, t: &Table) -> Chart {
             styled(line("path angle (deg)", x.clone(), x.clone(), 0), LineStyle::Faint),
             on_right(line("topspin (rpm)", x, col(t, "spin_rpm"), 3)),
         ],
+        bands: vec![],
         vlines: vec![],
     }
 }

@@ -83,21 +83,20 @@ fn chart(ctx: &Context, t: &Table) -> Chart {
         y2_label: Some("time (ms)".into()),
         x_log: false,
         x_range: Some((0.0, 56.0)),
-        y_range: Some((-0.1, 0.9)),
+        // headroom above the curves for the legend
+        y_range: Some((-0.1, 1.0)),
         y2_range: Some((0.0, 12.0)),
         curves: vec![
             line("e_A free (the paper)", x.clone(), col(t, "e_a_free"), 0),
             styled(line("e_A hand 5e3 N/m, 10 N s/m", x.clone(), col(t, "e_a_hand"), 1), LineStyle::Dashed),
-            styled(line("e_A firm hand 5e4 N/m, 100 N s/m", x.clone(), col(t, "e_a_firm"), 4), LineStyle::Dashed),
+            styled(line("e_A firm hand 5e4 N/m, 100 N s/m", x.clone(), col(t, "e_a_firm"), 3), LineStyle::Dashed),
+            on_right(styled(line("impact duration", x.clone(), scaled(col(t, "tau_s"), 1e3), 5), LineStyle::Faint)),
             on_right(styled(
-                line("impact duration (ms)", x.clone(), scaled(col(t, "tau_s"), 1e3), 5),
-                LineStyle::Faint,
-            )),
-            on_right(styled(
-                line("wave to the hand and back (ms)", x, scaled(col(t, "wave_return_s"), 1e3), 6),
+                line("wave to the hand and back", x, scaled(col(t, "wave_return_s"), 1e3), 6),
                 LineStyle::Faint,
             )),
         ],
+        bands: vec![],
         vlines: vec![VLine { x: CENTRE_X * 100.0, label: "mode-1 node (15.8 cm)".into() }],
     }
 }

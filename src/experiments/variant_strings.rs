@@ -83,6 +83,7 @@ fn chart(_: &Context, t: &Table) -> Chart {
             line("linear, ks 4e4", v.clone(), col(t, "e_a_linear_4e4"), 4),
             styled(line("stiffening, ks 4e4", v, col(t, "e_a_stiffening_4e4"), 4), LineStyle::Dashed),
         ],
+        bands: vec![],
         vlines: vec![],
     }
 }

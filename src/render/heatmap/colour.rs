@@ -64,6 +64,21 @@ pub enum ColorScale {
     Diverging,
 }
 
+impl ColorScale {
+    /// The scale for these values: [`ColorScale::Diverging`] only when the finite values have
+    /// both signs (some below zero and some above), else [`ColorScale::Sequential`] (a field
+    /// all of one sign, e.g. a difference that is negative everywhere, gets the whole colour
+    /// map for its own range rather than half of a scale centred on a zero it never reaches).
+    pub fn for_values(z: &[f64]) -> ColorScale {
+        let finite = || z.iter().copied().filter(|v| v.is_finite());
+        if finite().any(|v| v < 0.0) && finite().any(|v| v > 0.0) {
+            ColorScale::Diverging
+        } else {
+            ColorScale::Sequential
+        }
+    }
+}
+
 /// The colour range of the finite values: (lo, hi) with lo < hi, and the data extent (if any).
 pub fn color_range(z: &[f64], scale: ColorScale) -> ((f64, f64), Option<(f64, f64)>) {
     let data = z.iter().copied().filter(|v| v.is_finite()).fold(None, |acc: Option<(f64, f64)>, v| match acc {

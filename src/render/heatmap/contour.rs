@@ -1,5 +1,4 @@
-//! Contour levels at round values, marching squares, bilinear sampling of the grid, and the
-//! field extended for the shading.
+//! Contour levels at round values, marching squares, and sampling of the grid.
 
 /// Contour lines aimed at (the actual count is 4 to 9, at round values).
 pub const CONTOUR_TARGET: usize = 8;
@@ -96,8 +95,10 @@ pub fn contour_segments(xs: &[f64], ys: &[f64], z: &[f64], level: f64) -> Vec<Se
     out
 }
 
-/// The value at `(x, y)`: bilinear in a cell whose four corners are finite, else the nearest
-/// finite corner of the cell; `None` outside the grid or in a cell without data.
+/// The value at `(x, y)`: bilinear in a cell whose four corners are finite; in a cell with
+/// some corners missing, the value of the nearest corner if that one has data (so a computed
+/// point colours the half cell around it, and nothing beyond); `None` outside the grid or where
+/// the nearest corner has no data.
 pub fn sample(xs: &[f64], ys: &[f64], z: &[f64], x: f64, y: f64) -> Option<f64> {
     let (nx, ny) = (xs.len(), ys.len());
     if nx < 2 || ny < 2 || z.len() != nx * ny {
@@ -121,59 +122,11 @@ pub fn sample(xs: &[f64], ys: &[f64], z: &[f64], x: f64, y: f64) -> Option<f64> 
         let top = c[3].2 + t * (c[2].2 - c[3].2);
         return Some(bottom + u * (top - bottom));
     }
-    c.iter()
-        .filter(|k| k.2.is_finite())
-        .map(|k| ((k.0 - t).powi(2) + (k.1 - u).powi(2), k.2))
-        .fold(None, |best: Option<(f64, f64)>, cand| match best {
-            Some(b) if b.0 <= cand.0 => Some(b),
-            _ => Some(cand),
-        })
-        .map(|b| b.1)
-}
-
-/// The field for the shading only: each missing grid point next to data gets a value
-/// extrapolated linearly (in the grid index) from its neighbours along x and y (the mean over
-/// the directions that have data; the diagonal neighbours' mean if none), `passes` times, so
-/// the shading reaches an outline that runs between grid points. Contours use the data only.
-pub fn extend_for_shading(nx: usize, ny: usize, z: &[f64], passes: usize) -> Vec<f64> {
-    let mut cur = z.to_vec();
-    if z.len() != nx * ny {
-        return cur;
-    }
-    for _ in 0..passes {
-        let prev = cur.clone();
-        let at = |i: i64, j: i64| -> Option<f64> {
-            if i < 0 || j < 0 || i >= nx as i64 || j >= ny as i64 {
-                return None;
-            }
-            let v = prev[i as usize * ny + j as usize];
-            v.is_finite().then_some(v)
-        };
-        for i in 0..nx as i64 {
-            for j in 0..ny as i64 {
-                if at(i, j).is_some() {
-                    continue;
-                }
-                let (mut sum, mut n) = (0.0, 0u32);
-                for (di, dj) in [(1, 0), (-1, 0), (0, 1), (0, -1)] {
-                    match (at(i + di, j + dj), at(i + 2 * di, j + 2 * dj)) {
-                        (Some(a), Some(b)) => (sum, n) = (sum + 2.0 * a - b, n + 1),
-                        (Some(a), None) => (sum, n) = (sum + a, n + 1),
-                        _ => {}
-                    }
-                }
-                if n == 0 {
-                    for (di, dj) in [(1, 1), (1, -1), (-1, 1), (-1, -1)] {
-                        if let Some(a) = at(i + di, j + dj) {
-                            (sum, n) = (sum + a, n + 1);
-                        }
-                    }
-                }
-                if n > 0 {
-                    cur[i as usize * ny + j as usize] = sum / f64::from(n);
-                }
-            }
-        }
-    }
-    cur
+    let nearest = match (t < 0.5, u < 0.5) {
+        (true, true) => c[0].2,
+        (false, true) => c[1].2,
+        (false, false) => c[2].2,
+        (true, false) => c[3].2,
+    };
+    nearest.is_finite().then_some(nearest)
 }

@@ -2,13 +2,13 @@
 //! lines, outlines, labelled segments and markers placed where they fit, and the colour bar.
 
 use plotters::coord::types::RangedCoordf64;
-use plotters::coord::Shift;
+use plotters::coord::{ReverseCoordTranslate, Shift};
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::FontStyle;
 
-use super::{color_range, contour_levels, contour_segments, diverging, extend_for_shading, sample, viridis};
+use super::{color_range, contour_levels, contour_segments, diverging, sample, viridis};
 use super::{ColorScale, HeatMap, CONTOUR_TARGET};
 use crate::render::plot::{self, AXIS_DESC_SIZE, HEIGHT, TICK_SIZE, WIDTH};
 use crate::render::table::fmt_sig;
@@ -77,7 +77,7 @@ fn equal_aspect_ranges(map: &HeatMap, w: f64, h: f64) -> ((f64, f64), (f64, f64)
 }
 
 /// A pixel rectangle: (left, top, right, bottom).
-type Rect = (i32, i32, i32, i32);
+pub(super) type Rect = (i32, i32, i32, i32);
 
 fn overlaps(a: Rect, b: Rect) -> bool {
     a.0 < b.2 && b.0 < a.2 && a.1 < b.3 && b.1 < a.3
@@ -100,14 +100,24 @@ fn boxed_text(
     root.draw_text(text, style, (rect.0 + 5, rect.1 + 3)).map_err(plot::msg)
 }
 
+/// Data ranges: ((x0, x1), (y0, y1)).
+pub(super) type Ranges = ((f64, f64), (f64, f64));
+
+/// The plotting area's pixel rectangle and its data ranges (x, y) for `map`.
+pub(super) fn plot_geometry(map: &HeatMap) -> (Rect, Ranges) {
+    let plot_w = WIDTH - BAR_AREA - 2 * MARGIN - Y_LABEL_AREA;
+    let plot_h = HEIGHT - TITLE_AREA - 2 * MARGIN - X_LABEL_AREA;
+    let (left, top) = ((MARGIN + Y_LABEL_AREA) as i32, (TITLE_AREA + MARGIN) as i32);
+    let rect = (left, top, left + plot_w as i32, top + plot_h as i32);
+    (rect, equal_aspect_ranges(map, f64::from(plot_w), f64::from(plot_h)))
+}
+
 pub(super) fn draw(root: &DrawingArea<BitMapBackend<'_>, Shift>, map: &HeatMap) -> std::result::Result<(), String> {
     draw_titles(root, map)?;
 
     let (_, body) = root.split_vertically(TITLE_AREA);
     let (main, _) = body.split_horizontally(WIDTH - BAR_AREA);
-    let plot_w = f64::from(WIDTH - BAR_AREA - 2 * MARGIN - Y_LABEL_AREA);
-    let plot_h = f64::from(HEIGHT - TITLE_AREA - 2 * MARGIN - X_LABEL_AREA);
-    let ((x0, x1), (y0, y1)) = equal_aspect_ranges(map, plot_w, plot_h);
+    let (_, ((x0, x1), (y0, y1))) = plot_geometry(map);
 
     let mut cc = ChartBuilder::on(&main)
         .margin(MARGIN)
@@ -153,6 +163,7 @@ pub(super) fn draw(root: &DrawingArea<BitMapBackend<'_>, Shift>, map: &HeatMap) 
 
     draw_segments(root, &mut cc, map, plot_rect, &label_style, &mut taken)?;
     draw_markers(root, &mut cc, map, plot_rect, &label_style, &mut taken)?;
+    draw_contour_labels(root, &cc, map, &levels, step, plot_rect, &mut taken)?;
 
     if data.is_none() {
         let style = plot::font(AXIS_DESC_SIZE, FontStyle::Normal).pos(Pos::new(HPos::Center, VPos::Center));
@@ -195,7 +206,6 @@ fn draw_shading(
     ((x0, x1), (y0, y1)): ((f64, f64), (f64, f64)),
     color: &dyn Fn(f64) -> RGBColor,
 ) -> std::result::Result<Rect, String> {
-    let shade = extend_for_shading(map.xs.len(), map.ys.len(), &map.z, 2);
     let (px_range, py_range) = cc.plotting_area().get_pixel_range();
     let (pw, ph) = (f64::from(px_range.end - px_range.start), f64::from(py_range.end - py_range.start));
     let plot_rect: Rect = (px_range.start, py_range.start, px_range.end, py_range.end);
@@ -206,7 +216,7 @@ fn draw_shading(
             if !map.clip.iter().all(|e| e.contains(x, y)) {
                 continue;
             }
-            if let Some(v) = sample(&map.xs, &map.ys, &shade, x, y) {
+            if let Some(v) = sample(&map.xs, &map.ys, &map.z, x, y) {
                 root.draw_pixel((px, py), &color(v)).map_err(plot::msg)?;
             }
         }
@@ -268,6 +278,56 @@ fn draw_segments(
             .unwrap_or(rects[0]);
         boxed_text(root, &s.label, rect, label_style)?;
         taken.push(rect);
+    }
+    Ok(())
+}
+
+/// Font size of the contour labels, pixels.
+const CONTOUR_LABEL_SIZE: f64 = 14.0;
+
+/// One label per contour line with its value, on a segment of the line (tried from the middle
+/// of the traced segments outwards) where the label box lies inside the plotting area and every
+/// clip ellipse and clear of what is `taken`; a level with no such place goes unlabelled.
+fn draw_contour_labels(
+    root: &DrawingArea<BitMapBackend<'_>, Shift>,
+    cc: &Coords<'_, '_>,
+    map: &HeatMap,
+    levels: &[f64],
+    step: f64,
+    plot_rect: Rect,
+    taken: &mut Vec<Rect>,
+) -> std::result::Result<(), String> {
+    let style = plot::font(CONTOUR_LABEL_SIZE, FontStyle::Normal);
+    for &level in levels {
+        let segs = contour_segments(&map.xs, &map.ys, &map.z, level);
+        if segs.is_empty() {
+            continue;
+        }
+        let text = level_label(level, step);
+        let (w, h) = root.estimate_text_size(&text, &style).map_err(plot::msg)?;
+        let (w, h) = (w as i32 + 6, h as i32 + 4);
+        let mid = segs.len() / 2;
+        let order = (0..segs.len()).map(|k| if k % 2 == 0 { mid + k / 2 } else { mid.wrapping_sub(k / 2 + 1) });
+        let inside_clip = |p: (i32, i32)| {
+            cc.as_coord_spec().reverse_translate(p).is_some_and(|(x, y)| map.clip.iter().all(|e| e.contains(x, y)))
+        };
+        for k in order.filter(|&k| k < segs.len()) {
+            let s = segs[k];
+            let c = ((s[0].0 + s[1].0) / 2.0, (s[0].1 + s[1].1) / 2.0);
+            let p = cc.backend_coord(&c);
+            let rect = (p.0 - w / 2, p.1 - h / 2, p.0 - w / 2 + w, p.1 - h / 2 + h);
+            let corners = [(rect.0, rect.1), (rect.2, rect.1), (rect.0, rect.3), (rect.2, rect.3)];
+            if inside(rect, plot_rect)
+                && corners.iter().all(|&q| inside_clip(q))
+                && !taken.iter().any(|&o| overlaps(rect, o))
+            {
+                root.draw(&Rectangle::new([(rect.0, rect.1), (rect.2, rect.3)], WHITE.mix(0.8).filled()))
+                    .map_err(plot::msg)?;
+                root.draw_text(&text, &style, (rect.0 + 3, rect.1 + 2)).map_err(plot::msg)?;
+                taken.push(rect);
+                break;
+            }
+        }
     }
     Ok(())
 }

@@ -10,9 +10,12 @@
 //!
 //! Shading: a pixel inside a grid cell whose four corners all have data is coloured by the
 //! bilinear interpolation of the corners (the contour lines are the level sets of the same
-//! interpolant along the cell edges); a pixel in a cell with only some corners is coloured by
-//! the nearest of them, so the shading reaches the outline; the shading is clipped to every
-//! ellipse in [`HeatMap::clip`].
+//! interpolant along the cell edges); a pixel in a cell with only some corners takes the value
+//! of its nearest corner if that corner has data and stays white otherwise, so only the
+//! neighbourhood of computed points (half a grid step around each) is coloured; the shading is
+//! clipped to every ellipse in [`HeatMap::clip`]. Each contour line carries its value in a
+//! small label. [`ColorScale::for_values`] picks the diverging scale only for data of both
+//! signs.
 //!
 //! The image has the size, fonts and determinism of [`crate::render::plot`]: identical maps give
 //! identical bytes, the file is written atomically, and no input (all NaN, a constant field, a
@@ -35,7 +38,7 @@ use plotters::prelude::*;
 use crate::error::{Error, Result};
 use crate::render::plot::{self, HEIGHT, WIDTH};
 pub use colour::{color_range, diverging, viridis, ColorScale};
-pub use contour::{contour_levels, contour_segments, extend_for_shading, sample, Seg, CONTOUR_TARGET};
+pub use contour::{contour_levels, contour_segments, sample, Seg, CONTOUR_TARGET};
 
 /// An ellipse with its axes along x and y, centred on y = 0, spanning `x0..x1`.
 #[derive(Clone, Copy, Debug, PartialEq)]

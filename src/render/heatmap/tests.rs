@@ -1,6 +1,6 @@
 //! Tests of the heat maps: contours, levels, sampling, colour maps, degenerate and bad input.
 
-use super::draw::level_label;
+use super::draw::{level_label, plot_geometry};
 use super::*;
 
 fn grid(nx: usize, ny: usize, f: impl Fn(f64, f64) -> f64) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
@@ -160,4 +160,74 @@ fn bad_grids_are_errors() {
     m.xs[2] = m.xs[1];
     assert!(render_png("t", &m, &dir.path().join("a.png")).is_err());
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+}
+
+#[test]
+fn sampling_colours_only_the_half_cell_around_a_computed_point() {
+    let (xs, ys, mut z) = grid(3, 3, |x, y| x + y);
+    for (k, v) in z.iter_mut().enumerate() {
+        if k != 0 {
+            *v = f64::NAN; // only (0, 0) computed
+        }
+    }
+    assert_eq!(sample(&xs, &ys, &z, 0.4, 0.4), Some(0.0));
+    assert_eq!(sample(&xs, &ys, &z, 0.6, 0.4), None, "nearer a point that was not computed");
+    assert_eq!(sample(&xs, &ys, &z, 0.4, 0.6), None);
+    assert_eq!(sample(&xs, &ys, &z, 1.5, 1.5), None);
+}
+
+#[test]
+fn diverging_scale_only_for_data_of_both_signs() {
+    assert_eq!(ColorScale::for_values(&[-2.5, -0.7, f64::NAN]), ColorScale::Sequential);
+    assert_eq!(ColorScale::for_values(&[0.1, 0.4]), ColorScale::Sequential);
+    assert_eq!(ColorScale::for_values(&[-0.2, 0.0, 0.0]), ColorScale::Sequential);
+    assert_eq!(ColorScale::for_values(&[-0.2, 0.3]), ColorScale::Diverging);
+    assert_eq!(ColorScale::for_values(&[f64::NAN]), ColorScale::Sequential);
+    // an all-negative field then spans the whole colour map, not half of one centred on 0
+    let ((lo, hi), _) = color_range(&[-2.5, -0.7], ColorScale::for_values(&[-2.5, -0.7]));
+    assert_eq!((lo, hi), (-2.5, -0.7));
+}
+
+/// The pixels of a drawn map, row-major RGB.
+fn draw_to_buffer(map: &HeatMap) -> Vec<u8> {
+    assert!(plot::fonts_registered());
+    let mut buf = vec![0u8; (WIDTH * HEIGHT * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (WIDTH, HEIGHT)).into_drawing_area();
+        root.fill(&WHITE).unwrap();
+        super::draw::draw(&root, map).unwrap();
+        root.present().unwrap();
+    }
+    buf
+}
+
+#[test]
+fn map_pixels_away_from_computed_points_stay_background() {
+    // an 11 x 11 grid over 0..10 with only the columns x = 0 and 1 computed
+    let (xs, ys, mut z) = grid(11, 11, |x, y| x + 0.1 * y);
+    for (k, v) in z.iter_mut().enumerate() {
+        if k / 11 > 1 {
+            *v = f64::NAN;
+        }
+    }
+    let map = HeatMap { title: "partial".into(), xs, ys, z, ..HeatMap::default() };
+    let buf = draw_to_buffer(&map);
+    let ((l, t, r, b), ((x0, x1), (y0, y1))) = plot_geometry(&map);
+    let px = |x: f64| l + ((x - x0) / (x1 - x0) * f64::from(r - l)).round() as i32;
+    let py = |y: f64| b - ((y - y0) / (y1 - y0) * f64::from(b - t)).round() as i32;
+    let rgb = |x: i32, y: i32| {
+        let k = ((y as u32 * WIDTH + x as u32) * 3) as usize;
+        (buf[k], buf[k + 1], buf[k + 2])
+    };
+    let white = (255, 255, 255);
+    // right of x = 1.5 (half a step beyond the last computed column): nothing coloured
+    let mut coloured = 0;
+    for y in py(9.5)..=py(0.5) {
+        for x in px(1.5) + 3..=px(9.5) {
+            coloured += usize::from(rgb(x, y) != white);
+        }
+    }
+    assert_eq!(coloured, 0, "pixels coloured where no point was computed");
+    // and the computed strip is coloured
+    assert_ne!(rgb(px(0.7), py(5.0)), white);
 }

@@ -38,6 +38,17 @@ impl Bounds {
         }
     }
 
+    /// The x range in data units.
+    pub(super) fn x_range(&self) -> (f64, f64) {
+        (self.x(self.u0), self.x(self.u1))
+    }
+
+    /// Where `(x, y)` lies across the bounds: (0, 0) at the lower-left corner, (1, 1) at the
+    /// upper-right one.
+    pub(super) fn frac(&self, x: f64, y: f64) -> (f64, f64) {
+        ((self.u(x) - self.u0) / (self.u1 - self.u0), (y - self.v0) / (self.v1 - self.v0))
+    }
+
     /// A point that can be placed on the axes at all.
     pub(super) fn usable(&self, x: f64, y: f64) -> bool {
         x.is_finite() && y.is_finite() && (!self.log || x > 0.0)

@@ -1,5 +1,5 @@
-//! Drawing a planned chart with `plotters`: mesh and axes, curves, vertical marker lines, and
-//! the legend, in that order.
+//! Drawing a planned chart with `plotters`: mesh and axes, bands, curves, vertical marker
+//! lines, and the legend (placed clear of the data), in that order.
 
 use std::ops::Range;
 
@@ -9,24 +9,23 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::{FontStyle, ShapeStyle};
 
 use super::clip::Bounds;
+use super::legend::{place_legend, Rect, ToPixel};
 use super::plan::Plan;
 use super::{font, msg, palette, tick_label, tint, title_font, Axis, Chart, LineStyle};
-use super::{AXIS_DESC_SIZE, LEGEND_GLYPH, TICK_SIZE, VLINE_COLOR, VLINE_DASHES};
+use super::{AXIS_DESC_SIZE, BAND_ALPHA, BAND_COLOR, CLIPPED_NOTE, LEGEND_GLYPH, TICK_SIZE, VLINE_COLOR, VLINE_DASHES};
 use crate::render::table::fmt_sig;
 
-/// Draw one curve on the primary or secondary coordinates and attach its legend entry.
-macro_rules! draw_curve {
-    ($cc:expr, $right:expr, $elems:expr, $label:expr, $legend:expr) => {{
-        let anno = if $right {
-            $cc.draw_secondary_series($elems).map_err(msg)?
+/// Draw a series on the primary or the secondary coordinates.
+macro_rules! draw_on {
+    ($cc:expr, $right:expr, $elems:expr) => {{
+        if $right {
+            $cc.draw_secondary_series($elems).map_err(msg)?;
         } else {
-            $cc.draw_series($elems).map_err(msg)?
-        };
-        if !$label.is_empty() {
-            anno.label($label).legend($legend);
+            $cc.draw_series($elems).map_err(msg)?;
         }
     }};
 }
@@ -94,19 +93,101 @@ where
 
     let left = Bounds::new(plan.x, plan.y, plan.x_log);
     let right = Bounds::new(plan.x, (s0, s1), plan.x_log);
-    let mut legend_entries = draw_curves(&mut cc, chart, left, right, has_y2)?;
-    legend_entries += draw_vlines(&mut cc, chart, left, (y0, y1))?;
+    let (px, py) = cc.plotting_area().get_pixel_range();
+    let area: Rect = (px.start, py.start, px.end, py.end);
+    let mut entries = draw_bands(&mut cc, chart, left, (y0, y1))?;
+    let mut obstacles = Vec::new();
+    let pix = |b: Bounds| ToPixel { bounds: b, area };
+    entries.extend(draw_curves(&mut cc, chart, (pix(left), pix(right)), has_y2, &mut obstacles)?);
+    entries.extend(draw_vlines(&mut cc, chart, pix(left), (y0, y1), &mut obstacles)?);
+    if plan.clipped(chart) > 0 {
+        entries.push(Entry { label: CLIPPED_NOTE.to_string(), glyph: Glyph::None });
+    }
+    draw_legend(root, &entries, area, &obstacles)
+}
 
-    if legend_entries > 0 {
-        cc.configure_series_labels()
-            .position(SeriesLabelPosition::UpperRight)
-            .margin(12)
-            .legend_area_size(LEGEND_GLYPH)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .label_font(font(TICK_SIZE, FontStyle::Normal))
-            .draw()
-            .map_err(msg)?;
+/// What a legend entry shows left of its text.
+#[derive(Clone, Copy)]
+enum Glyph {
+    /// A line in this style.
+    Line(ShapeStyle),
+    /// A dashed line: style, dash, gap.
+    Dashed(ShapeStyle, u32, u32),
+    /// A filled dot.
+    Dot(RGBColor),
+    /// The paper's marker.
+    Paper(RGBColor),
+    /// A shaded box.
+    Band,
+    /// Text only.
+    None,
+}
+
+/// One legend line.
+struct Entry {
+    label: String,
+    glyph: Glyph,
+}
+
+/// Legend line height, pixels.
+const LEGEND_LINE: i32 = TICK_SIZE as i32 + 8;
+/// Padding inside the legend box, pixels.
+const LEGEND_PAD: i32 = 8;
+/// Radius of the paper marker's ring, pixels.
+const PAPER_RADIUS: i32 = 8;
+
+/// The paper's marker at pixel `p`.
+fn paper_marker(p: (i32, i32), color: RGBColor) -> [Circle<(i32, i32), i32>; 3] {
+    [
+        Circle::new(p, PAPER_RADIUS, WHITE.filled()),
+        Circle::new(p, PAPER_RADIUS, color.stroke_width(3)),
+        Circle::new(p, 2, RGBColor(30, 30, 30).filled()),
+    ]
+}
+
+/// The legend box (white, framed) in the spot that covers the fewest `obstacles`.
+fn draw_legend(
+    root: &DrawingArea<BitMapBackend<'_>, Shift>,
+    entries: &[Entry],
+    area: Rect,
+    obstacles: &[(i32, i32)],
+) -> std::result::Result<(), String> {
+    if entries.is_empty() {
+        return Ok(());
+    }
+    let style = font(TICK_SIZE, FontStyle::Normal);
+    let mut text_w = 0;
+    for e in entries {
+        text_w = text_w.max(root.estimate_text_size(&e.label, &style).map_err(msg)?.0 as i32);
+    }
+    let w = LEGEND_PAD * 3 + LEGEND_GLYPH + text_w;
+    let h = LEGEND_PAD * 2 + LEGEND_LINE * entries.len() as i32;
+    let (x, y) = place_legend(area, (w, h), obstacles);
+    root.draw(&Rectangle::new([(x, y), (x + w, y + h)], WHITE.mix(0.92).filled())).map_err(msg)?;
+    root.draw(&Rectangle::new([(x, y), (x + w, y + h)], BLACK.stroke_width(1))).map_err(msg)?;
+    let text_style = style.pos(Pos::new(HPos::Left, VPos::Center));
+    for (k, e) in entries.iter().enumerate() {
+        let cy = y + LEGEND_PAD + LEGEND_LINE * k as i32 + LEGEND_LINE / 2;
+        let (g0, g1) = (x + LEGEND_PAD, x + LEGEND_PAD + LEGEND_GLYPH);
+        match e.glyph {
+            Glyph::Line(s) => root.draw(&PathElement::new(vec![(g0, cy), (g1, cy)], s)).map_err(msg)?,
+            Glyph::Dashed(s, dash, gap) => {
+                root.draw(&DashedPathElement::new(vec![(g0, cy), (g1, cy)], dash, gap, s)).map_err(msg)?
+            }
+            Glyph::Dot(c) => root.draw(&Circle::new(((g0 + g1) / 2, cy), 4, c.filled())).map_err(msg)?,
+            Glyph::Paper(c) => {
+                for m in paper_marker(((g0 + g1) / 2, cy), c) {
+                    root.draw(&m).map_err(msg)?;
+                }
+            }
+            Glyph::Band => {
+                let r = [(g0, cy - 8), (g1, cy + 8)];
+                root.draw(&Rectangle::new(r, BAND_COLOR.mix(BAND_ALPHA * 2.0).filled())).map_err(msg)?;
+            }
+            Glyph::None => {}
+        }
+        let tx = if matches!(e.glyph, Glyph::None) { g0 } else { g1 + LEGEND_PAD };
+        root.draw_text(&e.label, &text_style, (tx, cy)).map_err(msg)?;
     }
     Ok(())
 }
@@ -115,82 +196,137 @@ where
 type Coords<'a, 'b, XC> =
     DualCoordChartContext<'a, BitMapBackend<'b>, Cartesian2d<XC, RangedCoordf64>, Cartesian2d<XC, RangedCoordf64>>;
 
-/// Draw every curve, clipped to its axis' bounds; returns the number of legend entries.
-fn draw_curves<XC: Ranged<ValueType = f64>>(
+/// Shade the bands (the part inside the x range); returns their legend entries.
+fn draw_bands<XC: Ranged<ValueType = f64>>(
     cc: &mut Coords<'_, '_, XC>,
     chart: &Chart,
     left: Bounds,
-    right: Bounds,
+    (y0, y1): (f64, f64),
+) -> std::result::Result<Vec<Entry>, String> {
+    let mut entries = Vec::new();
+    let (lo, hi) = left.x_range();
+    for band in &chart.bands {
+        let (a, b) = (band.x0.min(band.x1).max(lo), band.x0.max(band.x1).min(hi));
+        // nothing inside the x range (or a NaN edge)
+        if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
+            continue;
+        }
+        let rect = Rectangle::new([(a, y1), (b, y0)], BAND_COLOR.mix(BAND_ALPHA).filled());
+        cc.draw_series(std::iter::once(rect)).map_err(msg)?;
+        if !band.label.is_empty() {
+            entries.push(Entry { label: band.label.clone(), glyph: Glyph::Band });
+        }
+    }
+    Ok(entries)
+}
+
+/// Draw every curve, clipped to its axis' bounds; returns the legend entries and adds the
+/// drawn pixels to `obstacles`.
+fn draw_curves<XC: Ranged<ValueType = f64>>(
+    cc: &mut Coords<'_, '_, XC>,
+    chart: &Chart,
+    (left, right): (ToPixel, ToPixel),
     has_y2: bool,
-) -> std::result::Result<usize, String> {
-    let mut legend_entries = 0usize;
+    obstacles: &mut Vec<(i32, i32)>,
+) -> std::result::Result<Vec<Entry>, String> {
+    let mut entries = Vec::new();
     for curve in &chart.curves {
         let on_right = has_y2 && curve.axis == Axis::Right;
-        let bounds = if on_right { right } else { left };
+        let pix = if on_right { right } else { left };
+        let bounds = pix.bounds;
         let label = if on_right && !curve.label.is_empty() {
-            format!("{} (right axis)", curve.label)
+            format!("{}, right axis", curve.label)
         } else {
             curve.label.clone()
         };
-        if !label.is_empty() {
-            legend_entries += 1;
-        }
         let color = palette(curve.color);
-        let g = LEGEND_GLYPH - 6;
-        match curve.style {
+        let glyph = match curve.style {
             LineStyle::Solid | LineStyle::Faint => {
                 let style: ShapeStyle = if curve.style == LineStyle::Solid {
                     color.stroke_width(2)
                 } else {
                     tint(color, 0.6).stroke_width(1)
                 };
-                let elems = bounds.polylines(&curve.x, &curve.y).into_iter().map(move |p| PathElement::new(p, style));
-                draw_curve!(cc, on_right, elems, label, move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + g, y)], style)
-                });
+                let lines = bounds.polylines(&curve.x, &curve.y);
+                for p in &lines {
+                    pix.sample_polyline(p, obstacles);
+                }
+                draw_on!(cc, on_right, lines.into_iter().map(move |p| PathElement::new(p, style)));
+                Glyph::Line(style)
             }
             LineStyle::Dashed => {
                 let style = color.stroke_width(2);
-                let elems = bounds
-                    .polylines(&curve.x, &curve.y)
-                    .into_iter()
-                    .map(move |p| DashedPathElement::new(p, 10, 6, style));
-                draw_curve!(cc, on_right, elems, label, move |(x, y)| {
-                    DashedPathElement::new(vec![(x, y), (x + g, y)], 8, 5, style)
-                });
+                let lines = bounds.polylines(&curve.x, &curve.y);
+                for p in &lines {
+                    pix.sample_polyline(p, obstacles);
+                }
+                draw_on!(cc, on_right, lines.into_iter().map(move |p| DashedPathElement::new(p, 10, 6, style)));
+                Glyph::Dashed(style, 8, 5)
             }
-            LineStyle::Points => {
-                let style = color.filled();
-                let elems = bounds.points(&curve.x, &curve.y).into_iter().map(move |p| Circle::new(p, 4, style));
-                draw_curve!(cc, on_right, elems, label, move |(x, y)| { Circle::new((x + g / 2, y), 4, style) });
+            LineStyle::Points | LineStyle::Paper => {
+                let points = bounds.points(&curve.x, &curve.y);
+                let paper = curve.style == LineStyle::Paper;
+                // a marker covers a few pixels around its centre
+                let reach = if paper { PAPER_RADIUS } else { 4 };
+                for &p in &points {
+                    let (x, y) = pix.px(p);
+                    let (x, y) = (x.round() as i32, y.round() as i32);
+                    for dx in [-reach, 0, reach] {
+                        for dy in [-reach, 0, reach] {
+                            obstacles.push((x + dx, y + dy));
+                        }
+                    }
+                }
+                if paper {
+                    let ring = RGBColor(30, 30, 30);
+                    let elems = points.iter().flat_map(|&p| {
+                        [
+                            Circle::new(p, PAPER_RADIUS, WHITE.filled()),
+                            Circle::new(p, PAPER_RADIUS, color.stroke_width(3)),
+                            Circle::new(p, 2, ring.filled()),
+                        ]
+                    });
+                    draw_on!(cc, on_right, elems);
+                    Glyph::Paper(color)
+                } else {
+                    let style = color.filled();
+                    draw_on!(cc, on_right, points.into_iter().map(move |p| Circle::new(p, 4, style)));
+                    Glyph::Dot(color)
+                }
             }
+        };
+        if !label.is_empty() {
+            entries.push(Entry { label, glyph });
         }
     }
-
-    Ok(legend_entries)
+    Ok(entries)
 }
 
-/// Draw the vertical marker lines inside the x range (y from `y0` to `y1`); returns the number
-/// of legend entries.
+/// Draw the vertical marker lines inside the x range (y from `y0` to `y1`); returns their
+/// legend entries and adds the drawn pixels to `obstacles`.
 fn draw_vlines<XC: Ranged<ValueType = f64>>(
     cc: &mut Coords<'_, '_, XC>,
     chart: &Chart,
-    left: Bounds,
+    pix: ToPixel,
     (y0, y1): (f64, f64),
-) -> std::result::Result<usize, String> {
-    let mut legend_entries = 0usize;
+    obstacles: &mut Vec<(i32, i32)>,
+) -> std::result::Result<Vec<Entry>, String> {
+    let mut entries = Vec::new();
     for (i, vline) in chart.vlines.iter().enumerate() {
         let (dash, gap) = VLINE_DASHES[i % VLINE_DASHES.len()];
         let style = VLINE_COLOR.stroke_width(2);
-        let visible = left.contains(vline.x, y0);
+        let visible = pix.bounds.contains(vline.x, y0);
+        if visible {
+            pix.sample_polyline(&[(vline.x, y0), (vline.x, y1)], obstacles);
+        }
         let elems = visible.then(|| DashedPathElement::new(vec![(vline.x, y0), (vline.x, y1)], dash, gap, style));
-        let anno = cc.draw_series(elems).map_err(msg)?;
+        cc.draw_series(elems).map_err(msg)?;
         if visible && !vline.label.is_empty() {
-            legend_entries += 1;
-            let g = LEGEND_GLYPH - 6;
-            anno.label(vline.label.as_str())
-                .legend(move |(x, y)| DashedPathElement::new(vec![(x, y), (x + g, y)], dash.min(8), gap.min(5), style));
+            entries.push(Entry {
+                label: vline.label.clone(),
+                glyph: Glyph::Dashed(style, dash.min(8) as u32, gap.min(5) as u32),
+            });
         }
     }
-    Ok(legend_entries)
+    Ok(entries)
 }

@@ -1,18 +1,21 @@
 //! One look for every figure: a small declarative layer over `plotters`.
 //!
 //! An experiment describes its figure as a [`Chart`] (title, axis labels, [`Curve`]s, optional
-//! right-hand axis, optional log-scaled x axis, vertical marker lines) and calls
-//! [`render_png`]. All figures share the same size ([`WIDTH`] x [`HEIGHT`]), fonts (DejaVu Sans,
+//! right-hand axis, optional log-scaled x axis, vertical marker lines, shaded x bands) and calls
+//! [`render_png`]. The paper's own numbers are drawn as [`LineStyle::Paper`] markers. All figures share the same size ([`WIDTH`] x [`HEIGHT`]), fonts (DejaVu Sans,
 //! bundled, so no system fonts are needed), colour-blind-friendly [`PALETTE`], mesh and legend
 //! style.
 //!
 //! Rendering is deterministic (identical bytes for identical charts) and atomic: the PNG is
 //! written to a hidden temporary file next to the target and renamed over it only when
 //! complete. Non-finite points (and, on a log axis, non-positive x) are skipped, breaking the
-//! line there; lines are clipped to the plotting area.
+//! line there; lines are clipped to the plotting area, and a chart that cuts a curve off says
+//! so in its legend ([`CLIPPED_NOTE`]). The legend goes in the corner or edge of the plotting
+//! area where it covers the fewest curve pixels ([`place_legend`]).
 
 mod clip;
 mod draw;
+mod legend;
 mod plan;
 #[cfg(test)]
 mod tests;
@@ -28,6 +31,8 @@ use plotters::style::{register_font, FontDesc, FontFamily, FontStyle};
 use crate::error::{Error, Result};
 use crate::render::table::fmt_sig;
 use draw::draw_chart;
+pub use legend::place_legend;
+pub use plan::clipped_points;
 use plan::Plan;
 
 /// Image width in pixels.
@@ -63,6 +68,12 @@ const VLINE_COLOR: RGBColor = RGBColor(80, 80, 80);
 const VLINE_DASHES: [(i32, i32); 3] = [(12, 6), (4, 4), (20, 5)];
 /// Width of the legend glyph area, pixels.
 const LEGEND_GLYPH: i32 = 36;
+/// Fill of the shaded x bands ([`Band`]).
+const BAND_COLOR: RGBColor = RGBColor(150, 150, 150);
+/// Opacity of the band fill.
+const BAND_ALPHA: f64 = 0.18;
+/// The legend line a chart gets when a curve runs outside the axis ranges and is cut off.
+pub const CLIPPED_NOTE: &str = "(curves cut off at the axis limits)";
 
 /// Which y axis a curve is plotted against.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -87,6 +98,9 @@ pub enum LineStyle {
     Faint,
     /// Markers only (filled circles), no connecting line.
     Points,
+    /// A value the paper states: a large ringed marker (white disc, thick ring in the curve
+    /// colour, dark centre dot), no connecting line; distinct from any computed curve.
+    Paper,
 }
 
 /// One data series.
@@ -150,6 +164,27 @@ impl VLine {
     }
 }
 
+/// A shaded strip across the whole plotting area between two x values (e.g. "string face").
+///
+/// Drawn behind the curves in light grey; the part outside the x range is cut off, and a band
+/// wholly outside gets no legend entry.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Band {
+    /// One edge on the x axis.
+    pub x0: f64,
+    /// The other edge.
+    pub x1: f64,
+    /// Legend text (empty: no legend entry).
+    pub label: String,
+}
+
+impl Band {
+    /// A band from `x0` to `x1`.
+    pub fn new(x0: f64, x1: f64, label: impl Into<String>) -> Self {
+        Band { x0, x1, label: label.into() }
+    }
+}
+
 /// A complete figure description.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Chart {
@@ -174,6 +209,8 @@ pub struct Chart {
     pub curves: Vec<Curve>,
     /// Vertical marker lines.
     pub vlines: Vec<VLine>,
+    /// Shaded x bands, drawn behind everything else.
+    pub bands: Vec<Band>,
 }
 
 impl Chart {

@@ -1,6 +1,7 @@
 //! The axes of a chart: validated ranges (given, or from the data with padding) and which
 //! curves go on the right axis.
 
+use super::clip::Bounds;
 use super::{Axis, Chart, Curve, PAD};
 
 /// Validated ranges and per-curve axis assignment for one chart.
@@ -126,4 +127,28 @@ pub(super) fn check_range(what: &str, (lo, hi): (f64, f64), log: bool) -> std::r
         return Err(format!("{what} ({lo}, {hi}) must be positive on a log axis"));
     }
     Ok((lo, hi))
+}
+
+impl Plan {
+    /// How many usable points of `chart`'s curves lie outside the ranges they are drawn
+    /// against (and so are cut off).
+    pub(super) fn clipped(&self, chart: &Chart) -> usize {
+        let left = Bounds::new(self.x, self.y, self.x_log);
+        let right = Bounds::new(self.x, self.y2.unwrap_or(self.y), self.x_log);
+        chart
+            .curves
+            .iter()
+            .map(|c| {
+                let b = if self.y2.is_some() && c.axis == Axis::Right { right } else { left };
+                c.x.iter().zip(&c.y).filter(|(&x, &y)| b.usable(x, y) && !b.contains(x, y)).count()
+            })
+            .sum()
+    }
+}
+
+/// How many points of `chart`'s curves (finite, and x > 0 on a log axis) fall outside the
+/// ranges the chart is drawn with and are cut off; an error for a chart [`super::render_png`]
+/// refuses.
+pub fn clipped_points(chart: &Chart) -> std::result::Result<usize, String> {
+    Ok(Plan::new(chart)?.clipped(chart))
 }

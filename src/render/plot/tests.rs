@@ -268,3 +268,73 @@ fn ranges_from_data() {
     assert_eq!(tint(RGBColor(0, 0, 0), 0.6), RGBColor(153, 153, 153));
     assert_eq!(tint(RGBColor(255, 255, 255), 0.6), RGBColor(255, 255, 255));
 }
+
+#[test]
+fn legend_goes_where_there_is_no_data() {
+    let area = (100, 50, 1000, 650);
+    let size = (300, 150);
+    // nothing in the way: upper right
+    assert_eq!(place_legend(area, size, &[]), (1000 - 12 - 300, 50 + 12));
+    // data across the whole top (a curve near the upper edge): a lower corner
+    let top: Vec<(i32, i32)> = (100..1000).map(|x| (x, 120)).collect();
+    let (_, y) = place_legend(area, size, &top);
+    assert_eq!(y, 650 - 12 - 150);
+    // data in the upper right and across the bottom: upper left
+    let mut pts: Vec<(i32, i32)> = (600..1000).flat_map(|x| [(x, 80), (x, 150)]).collect();
+    pts.extend((100..1000).map(|x| (x, 600)));
+    assert_eq!(place_legend(area, size, &pts), (100 + 12, 50 + 12));
+    // whatever spot is chosen covers none of the points when one is free
+    let (x, y) = place_legend(area, size, &pts);
+    assert!(!pts.iter().any(|&(px, py)| px >= x && px <= x + 300 && py >= y && py <= y + 150));
+}
+
+#[test]
+fn clipped_points_are_counted() {
+    let mut chart = Chart::new("t", "x", "y");
+    chart.curves.push(Curve::new("a", vec![0.0, 1.0, 2.0, 3.0], vec![0.5, -0.2, 0.5, f64::NAN]));
+    assert_eq!(clipped_points(&chart), Ok(0), "ranges from the data hold every point");
+    chart.y_range = Some((0.0, 1.0));
+    assert_eq!(clipped_points(&chart), Ok(1), "-0.2 is below the axis");
+    chart.x_range = Some((0.0, 1.5));
+    assert_eq!(clipped_points(&chart), Ok(2), "x = 2 is beyond the x range");
+    chart.y2_label = Some("right".into());
+    chart.curves.push(Curve::new("b", vec![0.0, 1.0], vec![5.0, 50.0]).on_axis(Axis::Right));
+    chart.y2_range = Some((0.0, 10.0));
+    assert_eq!(clipped_points(&chart), Ok(3), "50 on the right axis");
+    chart.y_range = Some((1.0, 0.0));
+    assert!(clipped_points(&chart).is_err());
+}
+
+#[test]
+fn paper_markers_and_bands_render_and_change_the_image() {
+    let dir = scratch();
+    let mut chart = dual_axis_chart();
+    let plain = render_bytes(&chart, dir.path(), "plain.png");
+    chart.bands.push(Band::new(0.0, 4.0, "string face"));
+    let banded = render_bytes(&chart, dir.path(), "band.png");
+    assert_ne!(plain, banded);
+    chart.curves.push(Curve::new("paper: force", vec![5.0], vec![1500.0]).with_style(LineStyle::Paper));
+    let with_paper = render_bytes(&chart, dir.path(), "paper.png");
+    assert_ne!(banded, with_paper);
+    assert_eq!(with_paper, render_bytes(&chart, dir.path(), "paper2.png"), "deterministic");
+    // a band wholly outside the x range, and one reversed, draw without error
+    chart.bands.push(Band::new(-50.0, -40.0, "outside"));
+    chart.bands.push(Band::new(3.0, 1.0, "reversed"));
+    render_bytes(&chart, dir.path(), "bands.png");
+    // a chart that clips a curve still renders (with its note)
+    chart.y_range = Some((0.0, 100.0));
+    assert!(clipped_points(&chart).unwrap() > 0);
+    render_bytes(&chart, dir.path(), "clipped.png");
+}
+
+#[test]
+fn legend_fits_between_curves_when_no_corner_is_free() {
+    let area = (100, 50, 1000, 650);
+    // curves along the top and the bottom and a line down the middle: only a band between
+    // y = 250 and 450 is free, at the right and the left
+    let mut pts: Vec<(i32, i32)> = (100..1000).flat_map(|x| [(x, 240), (x, 460)]).collect();
+    pts.extend((50..650).map(|y| (550, y)));
+    let (x, y) = place_legend(area, (300, 150), &pts);
+    assert!(!pts.iter().any(|&(px, py)| px >= x - 4 && px <= x + 304 && py >= y - 4 && py <= y + 154));
+    assert_eq!(x, 1000 - 12 - 300, "the right side first");
+}

@@ -185,6 +185,7 @@ impl DiffMap {
                 }
             }
         }
+        let z = self.values(q);
         HeatMap {
             title: format!("B - A: {} (A: {}; B: {})", q.description(), label_a, label_b),
             subtitle: format!(
@@ -198,8 +199,8 @@ impl DiffMap {
             bar_label: bar_label(q, true),
             xs: self.a.grid.xs.iter().map(|x| 100.0 * x).collect(),
             ys: self.a.grid.rs.iter().map(|r| 100.0 * r).collect(),
-            z: self.values(q),
-            scale: ColorScale::Diverging,
+            scale: ColorScale::for_values(&z),
+            z,
             clip: outlines.clone(),
             outlines,
             segments,
