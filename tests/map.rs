@@ -69,7 +69,7 @@ fn map_values_are_single_simulate_runs() {
         let recontact = t.column("recontact").unwrap();
         // several rows spread over the table, including the first and the last
         for i in [0, 1, t.len() / 3, t.len() / 2, 2 * t.len() / 3, t.len() - 1] {
-            let single = simulate(&params_at(&p, xs[i], rs[i])).unwrap();
+            let single = simulate(&params_at(&m.params, xs[i], rs[i])).unwrap();
             for (q, col) in Quantity::ALL.iter().zip(&cols) {
                 assert_eq!(col[i], q.of(&single), "{} at row {i}", q.name());
             }
@@ -77,7 +77,7 @@ fn map_values_are_single_simulate_runs() {
         }
         // every stored result is the single run (all fields)
         for (x, r, res) in m.points() {
-            assert_eq!(*res, simulate(&params_at(&p, x, r)).unwrap(), "x = {x}, r = {r}");
+            assert_eq!(*res, simulate(&params_at(&m.params, x, r)).unwrap(), "x = {x}, r = {r}");
         }
     }
 }
@@ -127,7 +127,39 @@ fn max_point_and_node() {
     assert!(node > 0.0 && node < m.face.length);
     let (x, at) = m.at_node().unwrap().unwrap();
     assert_eq!(x, node);
-    assert_eq!(at, simulate(&params_at(&p, node, 0.0)).unwrap());
+    assert_eq!(at, simulate(&params_at(&m.params, node, 0.0)).unwrap());
+}
+
+/// A map runs the modal solver whenever the model variants allow it and says so; its values
+/// agree with the explicit reference's to 1e-4 (the agreement tests/modal.rs holds it to); a
+/// hand grip or stiffening strings keep the explicit solver.
+#[test]
+fn map_uses_the_modal_solver_where_the_variants_allow_it() {
+    use racket_impact::params::{Grip, SolverKind, StringLaw};
+    let p = paper_node();
+    let m = FaceMap::compute(&p, 7, 5, &mut |_| {}).unwrap();
+    assert_eq!(m.params.numerics.solver, SolverKind::Modal);
+    let summary = racket_impact::study::map::summary::map_summary(&m, Quantity::Power, "paper").unwrap();
+    assert!(summary.lines().next().unwrap().ends_with(", modal solver"), "{summary}");
+    let meta = m.metadata("paper", Quantity::Power, (7, 5)).unwrap();
+    assert_eq!(meta["a"]["solver"], "modal");
+    let mut fd = p;
+    fd.numerics.solver = SolverKind::Fd;
+    let mut worst: f64 = 0.0;
+    for (x, r, res) in m.points() {
+        let reference = simulate(&params_at(&fd, x, r)).unwrap();
+        for q in [Quantity::EA, Quantity::FVib] {
+            worst = worst.max((q.of(res) - q.of(&reference)).abs());
+        }
+    }
+    assert!(worst > 0.0 && worst < 1e-4, "modal against fd over the map: {worst:e}");
+    for (grip, strings) in [(Grip::Hand, StringLaw::Linear), (Grip::Free, StringLaw::Stiffening)] {
+        let mut q = p;
+        (q.variants.grip, q.variants.strings) = (grip, strings);
+        let m = FaceMap::compute(&q, 3, 3, &mut |_| {}).unwrap();
+        assert_eq!(m.params.numerics.solver, SolverKind::Fd, "{grip:?} {strings:?}");
+        assert_eq!(m.metadata("x", Quantity::Power, (3, 3)).unwrap()["a"]["solver"], "fd");
+    }
 }
 
 #[test]
@@ -147,8 +179,8 @@ fn difference_map_is_b_minus_a() {
         }
         // A and B are single runs of each configuration
         for i in [0, t.len() / 2, t.len() - 1] {
-            assert_eq!(va[i], q.of(&simulate(&params_at(&a, xs[i], rs[i])).unwrap()));
-            assert_eq!(vb[i], q.of(&simulate(&params_at(&b, xs[i], rs[i])).unwrap()));
+            assert_eq!(va[i], q.of(&simulate(&params_at(&d.a.params, xs[i], rs[i])).unwrap()));
+            assert_eq!(vb[i], q.of(&simulate(&params_at(&d.b.params, xs[i], rs[i])).unwrap()));
         }
     }
     // two rackets with different faces: only points inside both

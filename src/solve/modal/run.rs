@@ -7,7 +7,7 @@ use crate::error::Result;
 use crate::model::contact::{ContactLaw, ImplicitLaw, Phase};
 use crate::model::tangential::ForcePiece;
 use crate::solve::hermite::{hermite_eval, hermite_max, hermite_root};
-use crate::solve::modal::steps::{dot, sum4, Grid, COS, Q_RESPONSE, SIN_W, V_RESPONSE, W_SIN};
+use crate::solve::modal::steps::{sum4, Grid, COS, Q_RESPONSE, SIN_W, V_RESPONSE, W_SIN};
 use crate::solve::modal::{ModalModel, State, LEVELS, REFINE};
 use crate::solve::oblique::Follower;
 
@@ -174,11 +174,28 @@ impl ModalModel {
         let (c, sq, vq) = (&st.col(COS)[..n], &st.col(SIN_W)[..n], &st.col(W_SIN)[..n]);
         let (qf, qd) = (&st.col(Q_RESPONSE)[..n], &st.col(Q_RESPONSE + 1)[..n]);
         let (vf, vd) = (&st.col(V_RESPONSE)[..n], &st.col(V_RESPONSE + 1)[..n]);
-        for j in 0..n {
+        let g = &self.g[..n];
+        // `Y_T` and its rate summed as the coordinates are stepped, in the order of `steps::dot`
+        // (four partial sums, then the tail), so the loop reads each coordinate once
+        let (mut yq, mut yv) = ([0.0; 4], [0.0; 4]);
+        let whole = n - n % 4;
+        for j0 in (0..whole).step_by(4) {
+            for i in 0..4 {
+                let j = j0 + i;
+                q1[j] = c[j] * q0[j] + sq[j] * v0[j] + qf[j] * f0 + qd[j] * d0;
+                v1[j] = vq[j] * q0[j] + c[j] * v0[j] + vf[j] * f0 + vd[j] * d0;
+                yq[i] += g[j] * q1[j];
+                yv[i] += g[j] * v1[j];
+            }
+        }
+        let (mut tq, mut tv) = (-0.0, -0.0);
+        for j in whole..n {
             q1[j] = c[j] * q0[j] + sq[j] * v0[j] + qf[j] * f0 + qd[j] * d0;
             v1[j] = vq[j] * q0[j] + c[j] * v0[j] + vf[j] * f0 + vd[j] * d0;
+            tq += g[j] * q1[j];
+            tv += g[j] * v1[j];
         }
-        (-dot(&self.g, q1), -dot(&self.g, v1))
+        (-((yq[0] + yq[2]) + (yq[1] + yq[3]) + tq), -((yv[0] + yv[2]) + (yv[1] + yv[3]) + tv))
     }
 
     /// Add the end force and rate to a predicted step; returns the coordinates' energy, J.

@@ -53,6 +53,7 @@ pub fn config_metadata(label: &str, m: &FaceMap, q: Quantity) -> Result<serde_js
     let at_node = m.at_node()?;
     Ok(serde_json::json!({
         "label": label,
+        "solver": m.params.numerics.solver.name(),
         "params": json(&m.params),
         "face": json(&m.face),
         "mode1_nodes_m": m.mode1_nodes,

@@ -50,7 +50,7 @@ pub mod quantity;
 pub mod request;
 pub mod summary;
 
-pub use compute::{mode1_nodes, params_at, validate_points, DiffMap, FaceMap, MapPoint, Spread};
+pub use compute::{mode1_nodes, params_at, validate_points, with_map_solver, DiffMap, FaceMap, MapPoint, Spread};
 pub use face::{check_count, Face, Grid};
 pub use metadata::config_metadata;
 pub use quantity::Quantity;
@@ -128,7 +128,7 @@ mod tests {
         let best = m.max_point(Quantity::EA).unwrap();
         assert_eq!(best.value, e_a.iter().copied().fold(f64::MIN, f64::max));
         for (x, r, res) in m.points() {
-            assert_eq!(*res, simulate(&params_at(&p, x, r)).unwrap());
+            assert_eq!(*res, simulate(&params_at(&m.params, x, r)).unwrap());
         }
         // the heat map of it renders
         let dir = tempfile::tempdir().unwrap();

@@ -7,7 +7,7 @@ use crate::error::Result;
 /// The summary of one configuration's map of `q`, titled with `label`.
 pub fn map_summary(m: &FaceMap, q: Quantity, label: &str) -> Result<String> {
     let mut s = format!(
-        "map of {} on {}: {} x {} grid, {} impacts inside the face ({:.1} x {:.1} cm{})\n",
+        "map of {} on {}: {} x {} grid, {} impacts inside the face ({:.1} x {:.1} cm{}), {} solver\n",
         q.name(),
         label,
         m.grid.xs.len(),
@@ -15,7 +15,8 @@ pub fn map_summary(m: &FaceMap, q: Quantity, label: &str) -> Result<String> {
         m.len(),
         100.0 * m.face.length,
         200.0 * m.face.half_width,
-        if m.face.from_racket { "" } else { ", default face" }
+        if m.face.from_racket { "" } else { ", default face" },
+        m.params.numerics.solver.name()
     );
     let unit = if q.unit().is_empty() { String::new() } else { format!(" {}", q.unit()) };
     if let Some((x, r)) = m.at_node()? {
@@ -51,13 +52,14 @@ pub fn map_summary(m: &FaceMap, q: Quantity, label: &str) -> Result<String> {
 pub fn diff_summary(d: &DiffMap, q: Quantity, la: &str, lb: &str) -> String {
     let unit = if q.unit().is_empty() { String::new() } else { format!(" {}", q.unit()) };
     let mut s = format!(
-        "difference map of {}: B - A, A = {la} (ks {:.0} N/m), B = {lb} (ks {:.0} N/m); {} x {} grid, {} points inside both faces\n",
+        "difference map of {}: B - A, A = {la} (ks {:.0} N/m), B = {lb} (ks {:.0} N/m); {} x {} grid, {} points inside both faces, {} solver\n",
         q.name(),
         d.a.params.strings.ks,
         d.b.params.strings.ks,
         d.a.grid.xs.len(),
         d.a.grid.rs.len(),
-        d.len()
+        d.len(),
+        d.a.params.numerics.solver.name()
     );
     if let Spread { min: Some(lo), max: Some(hi), .. } = d.spread(q) {
         s.push_str(&format!("B - A from {lo:.4} to {hi:.4}{unit}\n"));
