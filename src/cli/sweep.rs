@@ -8,7 +8,7 @@ use racket_impact::params::Overrides;
 use racket_impact::study::sweep::Sweep;
 use racket_impact::Result;
 
-use super::common::{write_stdout, Progress};
+use super::common::{warn_params, warn_twist, write_stdout, Progress};
 
 #[derive(Args, Debug)]
 pub struct SweepArgs {
@@ -57,14 +57,30 @@ pub fn run(a: SweepArgs) -> Result<()> {
             None => write_stdout(bytes),
         }
     };
-    emit(&csv_lines(&[sweep.header()]))?;
-    let outcome = sweep.run(|rows| emit(&csv_lines(rows)), |done| progress.update(done));
+    let header = sweep.header();
+    let theta_column = header.iter().position(|c| c == "theta_end_deg");
+    emit(&csv_lines(&[header]))?;
+    let mut theta_max = 0.0f64;
+    let outcome = sweep.run(
+        |rows| {
+            for row in rows {
+                let theta = theta_column.and_then(|i| row[i].parse::<f64>().ok()).unwrap_or(0.0);
+                if theta.abs() > theta_max.abs() {
+                    theta_max = theta;
+                }
+            }
+            emit(&csv_lines(rows))
+        },
+        |done| progress.update(done),
+    );
     drop(progress);
     outcome?; // on error the temporary file is dropped, the target untouched
-    match file {
-        Some(f) => f.commit(),
-        None => Ok(()),
+    if let Some(f) = file {
+        f.commit()?;
     }
+    warn_params(sweep.representatives()?.iter());
+    warn_twist(theta_max);
+    Ok(())
 }
 
 /// CSV lines (fields quoted only where needed), one writer for them all.

@@ -15,20 +15,20 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
         "impact: x = {} m (force at {:.4} m, {} load, N = {}), r = {} m, v1 = {} m/s\n\
          racket: L = {} m, M = {} kg, EI = {} N m^2, Ix = {} kg m^2; strings ks = {} N/m; \
          ball mb = {} kg, k1 = {} N/m, p = {}\n",
-        p.impact.x,
+        fmt_sig(p.impact.x, 6),
         r.x_load_m,
         p.numerics.load.name(),
         p.numerics.segments,
-        p.impact.r,
+        fmt_sig(p.impact.r, 6),
         fmt_sig(p.impact.v1, 6),
-        p.racket.length,
-        p.racket.mass,
-        p.racket.ei,
-        p.racket.ix,
-        p.strings.ks,
-        p.ball.mass,
-        p.ball.k1,
-        p.ball.p
+        fmt_sig(p.racket.length, 6),
+        fmt_sig(p.racket.mass, 6),
+        fmt_sig(p.racket.ei, 6),
+        fmt_sig(p.racket.ix, 6),
+        fmt_sig(p.strings.ks, 6),
+        fmt_sig(p.ball.mass, 6),
+        fmt_sig(p.ball.k1, 6),
+        fmt_sig(p.ball.p, 6)
     );
     if p.variants != crate::params::Variants::default() {
         s.push_str(&format!("model: {}\n", p.variants.label()));
