@@ -128,6 +128,23 @@ fn series_file_holds_time_force_and_every_energy_term() {
     }
     let last_t: f64 = text.lines().last().unwrap().split(',').next().unwrap().parse().unwrap();
     assert!(last_t >= 0.02 - 1e-4, "series ends at {last_t}");
+    // every row records the impact it belongs to (the default: the face centre, on the axis)
+    let columns: Vec<&str> = head.split(',').collect();
+    let row: Vec<&str> = text.lines().last().unwrap().split(',').collect();
+    let at = |c: &str| row[columns.iter().position(|h| *h == c).unwrap()].parse::<f64>().unwrap();
+    assert_eq!((at("x_m"), at("r_m"), at("ks_n_per_m")), (0.16, 0.0, 4e4));
+    assert!(at("v1_m_per_s") > 7.0);
+}
+
+#[test]
+fn the_csv_of_one_impact_records_its_parameters() {
+    let out = run(&["simulate", "--format", "csv", "--x", "0.2", "--r", "-0.03", "--ks", "3e4", "--v1", "12"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    let mut lines = text.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let row: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let at = |c: &str| row[head.iter().position(|h| *h == c).unwrap()];
+    assert_eq!([at("x_m"), at("r_m"), at("ks_n_per_m"), at("v1_m_per_s")], ["0.2", "-0.03", "30000", "12"]);
 }
 
 #[test]

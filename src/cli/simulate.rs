@@ -70,11 +70,11 @@ pub fn run(a: SimulateArgs) -> Result<()> {
             v["f1_hz"] = f1_hz.into();
             format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?)
         }
-        Format::Csv => racket_impact::render::impact::result_csv(&result),
+        Format::Csv => racket_impact::render::impact::result_csv(&params, &result),
         Format::Text => racket_impact::render::impact::result_text(&params, &result),
     };
     if let (Some(path), Some(rows)) = (&a.series, &series) {
-        racket_impact::render::impact::write_series(path, rows)?;
+        racket_impact::render::impact::write_series(path, &params, rows)?;
     }
     out!("{text}");
     warn_params([&params]);
