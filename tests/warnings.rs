@@ -88,6 +88,8 @@ fn help_shows_every_default() {
     }
     assert!(help.contains("[default: 0.16 m, the centre of the string face"), "{help}");
     assert!(help.contains("[default: 40000 N/m"), "{help}");
+    let sweep = stdout(&run(&["sweep", "--help"]));
+    assert!(sweep.contains("x (0.16 m), r (0 m), ks (40000 N/m)"), "{sweep}");
 }
 
 #[test]

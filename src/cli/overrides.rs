@@ -36,7 +36,7 @@ fn arg(spec: &ParamSpec, defaults: &Params) -> Arg {
 /// start from (the paper's racket hit at its face centre).
 fn help(spec: &ParamSpec, defaults: &Params) -> String {
     let value = keys::value_text(spec.key, defaults).unwrap_or_default();
-    let unit = if spec.unit.is_empty() || matches!(spec.values, Values::Choice(_)) {
+    let unit = if spec.unit.is_empty() || value.parse::<f64>().is_err() || matches!(spec.values, Values::Choice(_)) {
         String::new()
     } else {
         format!(" {}", spec.unit)
