@@ -13,6 +13,9 @@ mod cli;
 #[derive(Parser, Debug)]
 #[command(name = "racket-impact", version, about = "Ball on a flexible tennis racket: R. Cross (2000) replicated")]
 struct Cli {
+    /// No warnings on stderr (an implausible but valid value still runs, unremarked)
+    #[arg(long, global = true)]
+    quiet: bool,
     #[command(subcommand)]
     command: Command,
 }
@@ -60,7 +63,8 @@ fn main() -> ExitCode {
         Err(e) => {
             use clap::error::ErrorKind;
             if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
-                print!("{e}");
+                // (a closed pipe, as in `--help | head`, is not an error)
+                let _ = std::io::Write::write_all(&mut std::io::stdout(), e.to_string().as_bytes());
                 return ExitCode::SUCCESS;
             }
             // clap's message spreads over several lines (the allowed values, usage, a hint):
@@ -75,6 +79,7 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    cli::common::set_quiet(cli.quiet);
     let outcome = match cli.command {
         Command::Simulate(a) => cli::simulate::run(a),
         Command::Modes(a) => cli::modes::run(a),

@@ -86,6 +86,10 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
     let no_dir_report = s.path("no/such/dir/REPORT.md");
     let bad_racket =
         s.file("bad_racket.toml", b"length_in = 27\nmass_g = -300\ntwistweight_kg_cm2 = 14\nei_n_m2 = 150\n");
+    let many_racket = s.file(
+        "many.toml",
+        b"length_cm = 6860\nmass_g = 300\ntwistweight_kg_cm2 = -14\nfrequency_hz = 150\ntension_lb = 900\n",
+    );
     let typo_racket = s.file("typo.toml", b"length_in = 27\nmass_g = 300\nbalanse_cm = 33\n");
     let half_racket =
         s.file("half.toml", b"length_in = 27\nmass_g = 300\nbalance_cm = 33\ntwistweight_kg_cm2 = 14\nei_n_m2 = 150\n");
@@ -203,6 +207,21 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
         case(&["speed", "--swing", "30", "--compare-tension-lb", "50", "--compare-racket", "light"], "compare", false),
         case(&["speed", "--incoming", "20"], "--swing", false),
         case(&["sweep", "--out", &s.path("sw.csv"), "--solver", "modal", "--grip", "hand,free"], "solver", true),
+        // options a command does not use are refused, with the reason
+        case(&["simulate", "--series-dt", "1e-4"], "series-dt", false),
+        case(&["simulate", "--series-end", "0.02"], "series-end", false),
+        case(&["speed", "--swing", "30", "--v1", "20"], "v1", false),
+        case(&["speed", "--swing", "30", "--swing-path-deg", "20", "--angle-deg", "10"], "angle-deg", false),
+        case(&["speed", "--swing", "30", "--spin-rpm", "1000"], "spin-rpm", false),
+        case(&["modes", "--ks", "2e4"], "ks", false),
+        case(&["modes", "--x", "0.1"], "x", false),
+        case(&["racket", "tweener", "--list"], "racket", false),
+        // options after the swept pairs, and unknown keys, say so
+        case(&["sweep", "--x", "0.1,0.2", "--out", &s.path("late.csv")], "go before the --KEY SPEC pairs", false),
+        case(&["sweep", "--x", "0.1", "--quiet"], "go before the --KEY SPEC pairs", false),
+        case(&["sweep", "--xx", "0.1"], "unknown parameter", false),
+        // every problem of a racket file at once
+        case(&["simulate", "--racket", &many_racket], "3 problems", false),
     ]);
     assert!(cases.len() >= 30);
 

@@ -80,7 +80,10 @@ fn csv_and_text_formats_carry_the_same_e_a() {
     let row: Vec<&str> = lines.next().unwrap().split(',').collect();
     let i = head.iter().position(|h| *h == "e_a").unwrap();
     let e_csv: f64 = row[i].parse().unwrap();
-    assert_relative_eq!(e_csv, simulate(&Params::default()).unwrap().e_a, max_relative = 1e-15);
+    // the command line's default impact: the centre of the string face, on the axis
+    let (p, _) = racket_impact::racket::resolve(None, &Default::default()).unwrap();
+    assert_eq!((p.impact.x, p.impact.r), (0.16, 0.0));
+    assert_relative_eq!(e_csv, simulate(&p).unwrap().e_a, max_relative = 1e-15);
     let txt = run(&["simulate"]);
     assert!(String::from_utf8(txt.stdout).unwrap().lines().any(|l| l.starts_with("e_a ")));
 }
@@ -125,11 +128,28 @@ fn series_file_holds_time_force_and_every_energy_term() {
     }
     let last_t: f64 = text.lines().last().unwrap().split(',').next().unwrap().parse().unwrap();
     assert!(last_t >= 0.02 - 1e-4, "series ends at {last_t}");
+    // every row records the impact it belongs to (the default: the face centre, on the axis)
+    let columns: Vec<&str> = head.split(',').collect();
+    let row: Vec<&str> = text.lines().last().unwrap().split(',').collect();
+    let at = |c: &str| row[columns.iter().position(|h| *h == c).unwrap()].parse::<f64>().unwrap();
+    assert_eq!((at("x_m"), at("r_m"), at("ks_n_per_m")), (0.16, 0.0, 4e4));
+    assert!(at("v1_m_per_s") > 7.0);
+}
+
+#[test]
+fn the_csv_of_one_impact_records_its_parameters() {
+    let out = run(&["simulate", "--format", "csv", "--x", "0.2", "--r", "-0.03", "--ks", "3e4", "--v1", "12"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    let mut lines = text.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let row: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let at = |c: &str| row[head.iter().position(|h| *h == c).unwrap()];
+    assert_eq!([at("x_m"), at("r_m"), at("ks_n_per_m"), at("v1_m_per_s")], ["0.2", "-0.03", "30000", "12"]);
 }
 
 #[test]
 fn modes_reports_125_hz() {
-    let out = run(&["modes", "--format", "json", "--load", "node"]);
+    let out = run(&["modes", "--format", "json"]);
     assert!(out.status.success());
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let f1 = v["frequencies_hz"][0].as_f64().unwrap();
@@ -152,7 +172,14 @@ fn a_recontact_is_reported_on_stderr_and_in_the_json() {
     assert!(out.status.success());
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["recontact"].as_bool(), Some(true));
-    assert!(String::from_utf8_lossy(&out.stderr).starts_with("warning: the vibrating frame met the ball again"));
+    let err = String::from_utf8_lossy(&out.stderr);
+    // (ks = 1e6 N/m is beyond real strings: warned too)
+    assert_eq!(
+        err.lines().filter(|l| l.starts_with("warning: the vibrating frame met the ball again")).count(),
+        1,
+        "{err}"
+    );
+    assert!(err.lines().all(|l| l.starts_with("warning: ")), "{err}");
 }
 
 #[test]
@@ -165,7 +192,8 @@ fn sweep_streams_the_cartesian_product_in_order_and_matches_simulate() {
     let text = std::fs::read_to_string(&path).unwrap();
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(lines.len(), 11);
-    assert!(lines[0].starts_with("ks_n_per_m,x_m,load,e_a,tau_s"));
+    // the swept columns, then the impact's recorded parameters, then the results
+    assert!(lines[0].starts_with("ks_n_per_m,x_m,load,r_m,v1_m_per_s,e_a,tau_s"), "{}", lines[0]);
     let row: Vec<&str> = lines[7].split(',').collect(); // ks 4e4, x = 0.1
     assert_eq!((row[0], row[1]), ("4e4", "0.1"));
     // sweeps default to the modal solver and say so in the last column
@@ -173,10 +201,12 @@ fn sweep_streams_the_cartesian_product_in_order_and_matches_simulate() {
     let mut p = Params::default();
     p.numerics.load = LoadRule::Node;
     p.impact.x = 0.1;
+    p.impact.r = 0.0; // the default impact is on the long axis
+    assert_eq!((row[3], row[4]), ("0", &*p.impact.v1.to_string()));
     p.strings.ks = 4e4;
     p.numerics.solver = racket_impact::params::SolverKind::Modal;
     // numbers are written exactly (shortest round-trip form)
-    assert_eq!(row[3].parse::<f64>().unwrap(), simulate(&p).unwrap().e_a);
+    assert_eq!(row[5].parse::<f64>().unwrap(), simulate(&p).unwrap().e_a);
     // the explicit reference on request, and wherever a variant needs it
     let out = run(&["sweep", "--solver", "fd", "--x", "0.1"]);
     let text = String::from_utf8(out.stdout).unwrap();
@@ -184,8 +214,8 @@ fn sweep_streams_the_cartesian_product_in_order_and_matches_simulate() {
     p.numerics.load = LoadRule::Hat;
     let fd: Vec<&str> = text.lines().nth(1).unwrap().split(',').collect();
     assert_eq!(fd.last(), Some(&"fd"));
-    // (a swept key: `--solver fd` is the first column)
-    assert_eq!(fd[2].parse::<f64>().unwrap(), simulate(&p).unwrap().e_a);
+    // (a swept key: `--solver fd` is the first column; e_a after x, r, ks, v1)
+    assert_eq!(fd[5].parse::<f64>().unwrap(), simulate(&p).unwrap().e_a);
     let out = run(&["sweep", "--grip", "free,hand", "--x", "0.1"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(String::from_utf8(out.stdout).unwrap().lines().skip(1).all(|l| l.ends_with(",fd")));

@@ -4,6 +4,9 @@
 use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
+use racket_impact::params::keys;
+use racket_impact::params::spec::sig;
+use racket_impact::params::Params;
 use racket_impact::study::Sources;
 use racket_impact::{Error, Result};
 
@@ -35,6 +38,65 @@ pub fn write_stdout(bytes: &[u8]) -> Result<()> {
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => std::process::exit(0),
         other => other.map_err(|e| Error::io("<stdout>", e)),
     }
+}
+
+/// Set by the global `--quiet`: no warnings.
+static QUIET: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Silence the warnings (`--quiet`).
+pub fn set_quiet(quiet: bool) {
+    QUIET.store(quiet, std::sync::atomic::Ordering::Relaxed);
+}
+
+/// One `warning:` line on stderr, unless `--quiet`. Warnings never change a result or the exit
+/// code.
+pub fn warn(message: &str) {
+    if !QUIET.load(std::sync::atomic::Ordering::Relaxed) {
+        eprintln!("warning: {message}");
+    }
+}
+
+/// Warn, once each, about every parameter of `params` outside its usual range (the ranges are
+/// declared with the parameters) and a first frame frequency no racket has.
+pub fn warn_params<'a>(params: impl IntoIterator<Item = &'a Params>) {
+    let mut said: Vec<String> = Vec::new();
+    for p in params {
+        let f1 = racket_impact::model::basis::Basis::of(&p.racket, p.numerics.segments).omega[0]
+            / (2.0 * std::f64::consts::PI);
+        let (lo, hi) = keys::USUAL_F1_HZ;
+        let frequency = (!(lo..=hi).contains(&f1)).then(|| {
+            format!(
+                "first frame frequency f1 = {} Hz is outside the usual {lo}..{hi} Hz of rackets (from EI, mass and length; computed anyway)",
+                sig(f1, 4)
+            )
+        });
+        for line in keys::unusual(p).into_iter().chain(frequency) {
+            // one line per parameter, the first unusual value it takes
+            let key = line.split(' ').next().unwrap_or_default().to_string();
+            if !said.contains(&key) {
+                warn(&line);
+                said.push(key);
+            }
+        }
+    }
+}
+
+/// Warn when the largest twist at the end of an impact is beyond the small-angle model.
+pub fn warn_twist(theta_end_deg: f64) {
+    if theta_end_deg.abs() > keys::SMALL_TWIST_DEG {
+        warn(&format!(
+            "twist theta_end = {} deg is beyond the small-angle model's usual |theta| <= {} deg (computed anyway; check ks, ix and r)",
+            sig(theta_end_deg, 3),
+            keys::SMALL_TWIST_DEG
+        ));
+    }
+}
+
+/// The parameter keys set in `overrides` (flags or a config file), as spelled on the command
+/// line.
+pub fn given_keys(overrides: &racket_impact::params::Overrides) -> Vec<&'static str> {
+    let value = serde_json::to_value(overrides).unwrap_or_default();
+    racket_impact::params::Overrides::KEYS.into_iter().filter(|k| value.get(k).is_some_and(|v| !v.is_null())).collect()
 }
 
 /// Output format.

@@ -9,7 +9,7 @@ use racket_impact::render::map_files::Outputs;
 use racket_impact::study::map::{MapRequest, Quantity};
 use racket_impact::Result;
 
-use super::common::{out, outln, Common, Format, Progress};
+use super::common::{out, outln, warn, warn_params, warn_twist, Common, Format, Progress};
 
 /// What each quantity is, in the help.
 fn quantity_help(q: Quantity) -> &'static str {
@@ -91,9 +91,21 @@ pub fn run(a: MapArgs) -> Result<()> {
         Format::Json => out!("{json}"),
         Format::Csv => out!("{csv}"),
     }
+    warn_params(configs.iter().map(|(_, p)| p));
+    let theta = ["theta_deg", "theta_deg_a", "theta_deg_b"]
+        .iter()
+        .filter_map(|c| map.table.column(c))
+        .flatten()
+        .filter(|v| v.is_finite())
+        .max_by(|a, b| a.abs().total_cmp(&b.abs()));
+    if let Some(theta) = theta {
+        warn_twist(theta);
+    }
     let n_re = map.recontacts();
     if n_re > 0 {
-        eprintln!("warning: {n_re} map points have a re-contact after separation (flagged in the recontact column)");
+        warn(&format!(
+            "warning: {n_re} map points have a re-contact after separation (flagged in the recontact column)"
+        ));
     }
     Ok(())
 }

@@ -4,7 +4,7 @@ use clap::Args;
 use racket_impact::model::beam::Beam;
 use racket_impact::{Error, Result};
 
-use super::common::{out, Common, Format};
+use super::common::{given_keys, out, warn_params, Common, Format};
 
 #[derive(Args, Debug)]
 pub struct ModesArgs {
@@ -17,6 +17,14 @@ pub struct ModesArgs {
 
 /// The free racket's eigenfrequencies and mode-1 nodes.
 pub fn run(a: ModesArgs) -> Result<()> {
+    let used = ["length", "mass", "ei", "segments"];
+    if let Some(key) = given_keys(&a.common.overrides.0).into_iter().find(|k| !used.contains(k)) {
+        return Err(Error::invalid(
+            key,
+            "(given)",
+            "modes does not use it: the free racket's modes depend only on --racket, --length, --mass, --ei and --segments",
+        ));
+    }
     let params = a.common.sources().params()?;
     let n = params.numerics.segments;
     if a.count == 0 || a.count > 20 || a.count > n - 1 {
@@ -57,5 +65,6 @@ pub fn run(a: ModesArgs) -> Result<()> {
         }
     };
     out!("{text}");
+    warn_params([&params]);
     Ok(())
 }

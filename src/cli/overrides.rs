@@ -5,7 +5,7 @@ use clap::builder::{PossibleValue, PossibleValuesParser};
 use clap::{value_parser, Arg, ArgAction, ArgMatches, Command, FromArgMatches};
 use racket_impact::params::keys;
 use racket_impact::params::spec::{ParamSpec, Values};
-use racket_impact::params::Overrides;
+use racket_impact::params::{Overrides, Params};
 
 /// The parameter flags (`--x`, `--ks`, ...), in the order of their declaration.
 #[derive(Debug, Clone, Default)]
@@ -13,12 +13,12 @@ pub struct OverrideArgs(pub Overrides);
 
 /// The clap argument of one parameter: `--KEY <KEY>` with its help; numbers may be negative
 /// (the validation names the range), choices list their names.
-fn arg(spec: &ParamSpec) -> Arg {
+fn arg(spec: &ParamSpec, defaults: &Params) -> Arg {
     let arg = Arg::new(spec.key)
         .long(spec.key)
         .value_name(spec.key.to_uppercase().replace('-', "_"))
         .action(ArgAction::Set)
-        .help(spec.help());
+        .help(help(spec, defaults));
     match spec.values {
         Values::Number => arg.value_parser(value_parser!(f64)).allow_hyphen_values(true),
         Values::Count => arg.value_parser(value_parser!(usize)).allow_hyphen_values(true),
@@ -32,9 +32,34 @@ fn arg(spec: &ParamSpec) -> Arg {
     }
 }
 
+/// The help line with the default the commands use, read from the parameters the commands
+/// start from (the paper's racket hit at its face centre).
+fn help(spec: &ParamSpec, defaults: &Params) -> String {
+    let value = keys::value_text(spec.key, defaults).unwrap_or_default();
+    let unit = if spec.unit.is_empty() || value.parse::<f64>().is_err() || matches!(spec.values, Values::Choice(_)) {
+        String::new()
+    } else {
+        format!(" {}", spec.unit)
+    };
+    let note = match spec.key {
+        "x" => ", the centre of the string face; with --racket, the centre of its head",
+        "r" => ", on the long axis",
+        "dt" => ", the converged automatic step",
+        "ks" | "mass" | "length" | "ei" | "ix" | "half-width" | "mb" | "k1" | "p" => {
+            ", the paper's; with --racket, the racket file's"
+        }
+        _ => "",
+    };
+    format!("{} [default: {value}{unit}{note}]", spec.help())
+}
+
 impl clap::Args for OverrideArgs {
     fn augment_args(cmd: Command) -> Command {
-        keys::ALL.iter().fold(cmd, |cmd, spec| cmd.arg(arg(spec)))
+        let defaults = match racket_impact::racket::resolve(None, &Overrides::default()) {
+            Ok((p, _)) => p,
+            Err(_) => Params::default(),
+        };
+        keys::ALL.iter().fold(cmd, |cmd, spec| cmd.arg(arg(spec, &defaults)))
     }
 
     fn augment_args_for_update(cmd: Command) -> Command {

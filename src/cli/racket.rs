@@ -1,6 +1,7 @@
 //! `racket`: fit a racket description (file or preset) to the model and show the match.
 
 use clap::Args;
+use racket_impact::params::spec::sig;
 use racket_impact::racket::{self, Fitted};
 use racket_impact::{Error, Result};
 
@@ -24,6 +25,9 @@ pub struct RacketArgs {
 /// List the presets, or fit one racket and show how well it matches.
 pub fn run(a: RacketArgs) -> Result<()> {
     if a.list {
+        if let Some(arg) = &a.racket {
+            return Err(Error::invalid("racket", arg, "--list lists every preset: give a racket or --list, not both"));
+        }
         return list(a.segments);
     }
     let Some(arg) = a.racket.as_deref() else {
@@ -64,14 +68,14 @@ fn text(fitted: &Fitted) -> String {
     let r = &fitted.racket;
     let mut s = format!("{}\n", fitted.report);
     s.push_str(&format!(
-        "model: L = {} m, M = {} kg, EI = {:.6} N m^2{}, Ix = {} kg m^2, ks = {:.6} N/m, ball {} kg\n",
-        r.length,
-        r.mass,
-        r.ei,
+        "model: L = {} m, M = {} kg, EI = {} N m^2{}, Ix = {} kg m^2, ks = {} N/m, ball {} kg\n",
+        sig(r.length, 6),
+        sig(r.mass, 6),
+        sig(r.ei, 6),
         if r.profile.is_some() { " (times the stiffness profile)" } else { "" },
-        r.ix,
-        fitted.strings.ks,
-        fitted.ball.mass
+        sig(r.ix, 6),
+        sig(fitted.strings.ks, 6),
+        sig(fitted.ball.mass, 6)
     ));
     if let Some(h) = r.head_length {
         s.push_str(&format!(

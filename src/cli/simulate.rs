@@ -6,7 +6,12 @@ use clap::Args;
 use racket_impact::solve::{Model, SeriesOptions};
 use racket_impact::{Error, Result};
 
-use super::common::{out, Common, Format};
+use super::common::{out, warn, warn_params, warn_twist, Common, Format};
+
+/// Sample spacing of the time series unless given, s.
+const DEFAULT_SERIES_DT: f64 = 2.0e-5;
+/// Least end time of the time series unless given, s.
+const DEFAULT_SERIES_END: f64 = 0.0;
 
 #[derive(Args, Debug)]
 pub struct SimulateArgs {
@@ -16,10 +21,10 @@ pub struct SimulateArgs {
     #[arg(long)]
     pub series: Option<PathBuf>,
     /// Sample spacing of the time series, s
-    #[arg(long, default_value_t = 2.0e-5, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = DEFAULT_SERIES_DT, allow_hyphen_values = true)]
     pub series_dt: f64,
     /// Extend the time series to at least this time, s
-    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = DEFAULT_SERIES_END, allow_hyphen_values = true)]
     pub series_end: f64,
 }
 
@@ -29,6 +34,15 @@ pub fn run(a: SimulateArgs) -> Result<()> {
     let params = a.common.sources().params()?;
     if let Some(path) = &a.series {
         racket_impact::render::io::check_output_dir("series", path)?;
+    }
+    if a.series.is_none() {
+        for (flag, given, default) in
+            [("series-dt", a.series_dt, DEFAULT_SERIES_DT), ("series-end", a.series_end, DEFAULT_SERIES_END)]
+        {
+            if given != default {
+                return Err(Error::invalid(flag, given, "is used only with --series FILE (the time series)"));
+            }
+        }
     }
     if !(a.series_dt.is_finite() && a.series_dt > 0.0) {
         return Err(Error::invalid("series-dt", a.series_dt, "sample spacing must be a finite number > 0 s"));
@@ -56,15 +70,17 @@ pub fn run(a: SimulateArgs) -> Result<()> {
             v["f1_hz"] = f1_hz.into();
             format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?)
         }
-        Format::Csv => racket_impact::render::impact::result_csv(&result),
+        Format::Csv => racket_impact::render::impact::result_csv(&params, &result),
         Format::Text => racket_impact::render::impact::result_text(&params, &result),
     };
     if let (Some(path), Some(rows)) = (&a.series, &series) {
-        racket_impact::render::impact::write_series(path, rows)?;
+        racket_impact::render::impact::write_series(path, &params, rows)?;
     }
     out!("{text}");
+    warn_params([&params]);
+    warn_twist(result.theta_end_deg);
     if result.recontact {
-        eprintln!("warning: the vibrating frame met the ball again after separation (re-contact not modelled)");
+        warn("the vibrating frame met the ball again after separation (re-contact not modelled)");
     }
     Ok(())
 }

@@ -5,15 +5,17 @@ use clap::{Args, ValueEnum};
 use racket_impact::study::speed::{SpeedRequest, SpeedUnit};
 use racket_impact::Result;
 
-use super::common::{out, Common, Format};
+use super::common::{out, warn_params, warn_twist, Common, Format};
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
 pub enum UnitArg {
-    /// kilometres per hour
+    /// kilometres per hour (also kph, km/h)
+    #[value(alias = "kph", alias = "km/h")]
     Kmh,
     /// miles per hour
     Mph,
-    /// metres per second
+    /// metres per second (also m/s, mps)
+    #[value(alias = "m/s", alias = "mps")]
     Ms,
 }
 
@@ -41,10 +43,12 @@ pub struct SpeedArgs {
     /// Unit of the speeds
     #[arg(long, value_enum, default_value_t = UnitArg::Kmh)]
     pub unit: UnitArg,
-    /// Compare these string tensions, lb (e.g. 50,60); the first is the reference
+    /// Compare string tensions, lb: T (A = the configuration as given, against A at T) or
+    /// T1,T2,... (A at T1, against A at each other tension); k_s = 4e4 N/m * T / 60 lb
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub compare_tension_lb: Vec<f64>,
-    /// Compare these rackets (files or presets, e.g. light,players); the first is the reference
+    /// Compare against these rackets (files or presets, e.g. light,players): each against A =
+    /// --racket (or the paper's), which is the first row
     #[arg(long, value_delimiter = ',')]
     pub compare_racket: Vec<String>,
     /// Swing path angle above the horizontal, degrees (-80..=80): > 0 brushes up the back of
@@ -75,5 +79,11 @@ pub fn run(a: SpeedArgs) -> Result<()> {
         Format::Text => comparison.text(),
     };
     out!("{text}");
+    warn_params(comparison.rows.iter().map(|r| &r.params));
+    if let Some(theta) =
+        comparison.rows.iter().map(|r| r.result.theta_end_deg).max_by(|a, b| a.abs().total_cmp(&b.abs()))
+    {
+        warn_twist(theta);
+    }
     Ok(())
 }

@@ -4,11 +4,12 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use racket_impact::params::Overrides;
+use racket_impact::params::spec::Values;
+use racket_impact::params::{keys, Overrides};
 use racket_impact::study::sweep::Sweep;
 use racket_impact::Result;
 
-use super::common::{write_stdout, Progress};
+use super::common::{warn_params, warn_twist, write_stdout, Progress};
 
 #[derive(Args, Debug)]
 pub struct SweepArgs {
@@ -31,13 +32,37 @@ pub fn long_about() -> String {
     format!(
         "Run the cartesian product of ranges or lists of any parameters, in parallel, as CSV\n\n\
          After the options, give any parameter as `--KEY SPEC`, where SPEC is a value (0.1), a list \
-         (2e4,4e4 or node,hat), a range start:stop:count or a log range start:stop:count:log. Keys: {}. \
+         (2e4,4e4 or node,hat), a range start:stop:count or a log range start:stop:count:log. Keys, with \
+         the default of a key not given (see `simulate --help`; a racket's own values with --racket): {}. \
          Options (--out, --config, --racket) go before the pairs. Sweeps use the modal solver (~30x \
          faster, within 2e-5 of fd) unless --solver is given or a hand grip or stiffening strings need \
          fd; the last CSV column names the solver. Example: racket-impact sweep --out s.csv --x \
          0.02:0.60:50 --ks 2e4,4e4 --load node",
-        Overrides::KEYS.join(" ")
+        keys_with_defaults()
     )
+}
+
+/// Every key with the default a sweep uses when it is neither swept nor in the config file
+/// (`x (0.16 m)`).
+fn keys_with_defaults() -> String {
+    let defaults = racket_impact::racket::resolve(None, &Overrides::default()).map(|(p, _)| p).unwrap_or_default();
+    keys::ALL
+        .iter()
+        .map(|spec| {
+            let value = keys::value_text(spec.key, &defaults).unwrap_or_default();
+            let numeric = value.parse::<f64>().is_ok();
+            let unit = if spec.unit.is_empty() || !numeric || matches!(spec.values, Values::Choice(_)) {
+                ""
+            } else {
+                spec.unit
+            };
+            if spec.key == keys::SOLVER.key {
+                return format!("{} (modal, see below)", spec.key);
+            }
+            format!("{} ({})", spec.key, format!("{value} {unit}").trim_end())
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// Run the sweep, writing the header and then each finished chunk's rows.
@@ -57,14 +82,30 @@ pub fn run(a: SweepArgs) -> Result<()> {
             None => write_stdout(bytes),
         }
     };
-    emit(&csv_lines(&[sweep.header()]))?;
-    let outcome = sweep.run(|rows| emit(&csv_lines(rows)), |done| progress.update(done));
+    let header = sweep.header();
+    let theta_column = header.iter().position(|c| c == "theta_end_deg");
+    emit(&csv_lines(&[header]))?;
+    let mut theta_max = 0.0f64;
+    let outcome = sweep.run(
+        |rows| {
+            for row in rows {
+                let theta = theta_column.and_then(|i| row[i].parse::<f64>().ok()).unwrap_or(0.0);
+                if theta.abs() > theta_max.abs() {
+                    theta_max = theta;
+                }
+            }
+            emit(&csv_lines(rows))
+        },
+        |done| progress.update(done),
+    );
     drop(progress);
     outcome?; // on error the temporary file is dropped, the target untouched
-    match file {
-        Some(f) => f.commit(),
-        None => Ok(()),
+    if let Some(f) = file {
+        f.commit()?;
     }
+    warn_params(sweep.representatives()?.iter());
+    warn_twist(theta_max);
+    Ok(())
 }
 
 /// CSV lines (fields quoted only where needed), one writer for them all.

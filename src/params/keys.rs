@@ -18,34 +18,34 @@ declare_params! {
         what "off-axis distance", unit "m", column "r_m", rule;
     /// String-plane stiffness, N/m (1 ..= 1e12)
     KS ks: f64 = "ks" at strings.ks,
-        what "string-plane stiffness", unit "N/m", column "ks_n_per_m", within(1.0, 1.0e12);
+        what "string-plane stiffness", unit "N/m", column "ks_n_per_m", within(1.0, 1.0e12), usual(5.0e3, 2.0e5);
     /// Frame bending stiffness EI, N m^2 (1e-2 ..= 1e9)
     EI ei: f64 = "ei" at racket.ei,
         what "bending stiffness EI", unit "N m^2", column "ei_n_m2", within(1.0e-2, 1.0e9);
     /// Racket mass, kg (1e-3 ..= 1e6)
     MASS mass: f64 = "mass" at racket.mass,
-        what "racket mass", unit "kg", column "mass_kg", within(1.0e-3, 1.0e6);
+        what "racket mass", unit "kg", column "mass_kg", within(1.0e-3, 1.0e6), usual(0.15, 1.0);
     /// Racket length, m (0.05 ..= 5)
     LENGTH length: f64 = "length" at racket.length,
-        what "racket length", unit "m", column "length_m", within(0.05, 5.0);
+        what "racket length", unit "m", column "length_m", within(0.05, 5.0), usual(0.4, 1.0);
     /// Moment of inertia about the long axis, kg m^2 (1e-7 ..= 1e4)
     IX ix: f64 = "ix" at racket.ix,
-        what "moment of inertia about the long axis", unit "kg m^2", column "ix_kg_m2", within(1.0e-7, 1.0e4);
+        what "moment of inertia about the long axis", unit "kg m^2", column "ix_kg_m2", within(1.0e-7, 1.0e4), usual(3.0e-4, 6.0e-3);
     /// Half-width of the string face, m (1e-3 ..= 1): the largest |r|
     HALF_WIDTH half_width: f64 = "half-width" at racket.half_width,
-        what "string-face half-width", unit "m", column "half_width_m", within(1.0e-3, 1.0);
+        what "string-face half-width", unit "m", column "half_width_m", within(1.0e-3, 1.0), usual(0.05, 0.2);
     /// Ball mass, kg (1e-4 ..= 10)
     MB mb: f64 = "mb" at ball.mass,
-        what "ball mass", unit "kg", column "mb_kg", within(1.0e-4, 10.0);
+        what "ball mass", unit "kg", column "mb_kg", within(1.0e-4, 10.0), usual(0.02, 0.2);
     /// Ball compression stiffness k1, N/m (1 ..= 1e9)
     K1 k1: f64 = "k1" at ball.k1,
-        what "ball compression stiffness", unit "N/m", column "k1_n_per_m", within(1.0, 1.0e9);
+        what "ball compression stiffness", unit "N/m", column "k1_n_per_m", within(1.0, 1.0e9), usual(5.0e3, 2.0e5);
     /// Ball hysteresis exponent p (1 < p <= 10)
     P p: f64 = "p" at ball.p,
-        what "hysteresis exponent", unit "", column "p", rule;
+        what "hysteresis exponent", unit "", column "p", rule, usual(1.2, 5.0);
     /// Incident ball speed, m/s (1e-3 ..= 1e3)
     V1 v1: f64 = "v1" at impact.v1,
-        what "incident ball speed", unit "m/s", column "v1_m_per_s", within(1.0e-3, 1.0e3);
+        what "incident ball speed", unit "m/s", column "v1_m_per_s", within(1.0e-3, 1.0e3), usual(0.0, 70.0);
     /// Number of beam segments N (4..=400)
     SEGMENTS segments: usize = "segments" at numerics.segments,
         what "number of beam segments", unit "", column "segments", rule;
@@ -84,26 +84,46 @@ declare_params! {
         what "grip length", unit "m", column "grip_length_m", rule;
     /// Incidence angle from the string-plane normal, degrees (0 ..= 85; default 0)
     ANGLE_DEG angle_deg: f64 = "angle-deg" at oblique.angle_deg,
-        what "incidence angle", unit "deg", column "angle_deg", within(0.0, 85.0);
+        what "incidence angle", unit "deg", column "angle_deg", within(0.0, 85.0), usual(0.0, 80.0);
     /// In-plane direction of the incoming ball, degrees from the long axis towards the handle; 90 = across the face to +r (-360 ..= 360; default 0)
     AZIMUTH_DEG azimuth_deg: f64 = "azimuth-deg" at oblique.azimuth_deg,
         what "azimuth", unit "deg", column "azimuth_deg", within(-360.0, 360.0);
     /// Incoming spin, rpm; topspin > 0 (-2e4 ..= 2e4; default 0)
     SPIN_RPM spin_rpm: f64 = "spin-rpm" at oblique.spin_rpm,
-        what "incoming spin", unit "rpm", column "spin_rpm", within(-2.0e4, 2.0e4);
+        what "incoming spin", unit "rpm", column "spin_rpm", within(-2.0e4, 2.0e4), usual(-6.0e3, 6.0e3);
     /// Friction coefficient of ball on strings (0 ..= 2; default 0.4)
     MU mu: f64 = "mu" at oblique.mu,
-        what "friction coefficient", unit "", column "mu", within(0.0, 2.0);
+        what "friction coefficient", unit "", column "mu", within(0.0, 2.0), usual(0.0, 1.0);
     /// Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9; default 2e4)
     KT kt: f64 = "kt" at oblique.kt,
         what "tangential stiffness", unit "N/m", column "kt_n_per_m", within(1.0, 1.0e9);
     /// Ball radius, m (1e-3 ..= 1; default 0.033)
     BALL_RADIUS ball_radius: f64 = "ball-radius" at oblique.ball_radius,
-        what "ball radius", unit "m", column "ball_radius_m", within(1.0e-3, 1.0);
+        what "ball radius", unit "m", column "ball_radius_m", within(1.0e-3, 1.0), usual(0.015, 0.05);
     /// Ball moment of inertia over m_b R^2 (0 < alpha <= 1; default 0.55)
     BALL_INERTIA_FACTOR ball_inertia_factor: f64 = "ball-inertia-factor" at oblique.ball_inertia_factor,
         what "ball inertia factor", unit "", column "ball_inertia_factor", rule;
 }
+
+/// The impact point a new user expects when none is given: the centre of the string face on
+/// the long axis ([`Racket::face_centre`](super::Racket::face_centre), `r = 0`).
+pub fn face_centre_impact(params: &mut Params) {
+    params.impact.x = params.racket.face_centre();
+    params.impact.r = 0.0;
+}
+
+/// One line for each parameter of `params` outside its usual range
+/// ([`ParamSpec::usual`]): valid, computed, but probably a typo or a unit slip.
+pub fn unusual(params: &Params) -> Vec<String> {
+    ALL.iter().filter_map(|spec| spec.unusual(value_number(spec.key, params)?)).collect()
+}
+
+/// Usual range of the frame's first free-free bending frequency, Hz (wooden frames about
+/// 100 Hz, stiff composite ones up to about 200 Hz; the paper's 125 Hz).
+pub const USUAL_F1_HZ: (f64, f64) = (60.0, 300.0);
+
+/// Largest twist at the end of the impact the small-angle model (Eq 7) is meant for, degrees.
+pub const SMALL_TWIST_DEG: f64 = 15.0;
 
 /// The declaration of `key`, if it is a parameter.
 pub fn find(key: &str) -> Option<&'static ParamSpec> {

@@ -4,9 +4,14 @@
 use serde::{Deserialize, Serialize};
 
 use super::keys;
-use super::spec::{positive, within};
+use super::spec::{positive, sig, within};
 use super::{drop_speed, DROP_HEIGHT_100_IN};
 use crate::error::{Error, Result};
+
+/// Length of the string face of a racket without a head outline (the paper's), m: an ellipse
+/// this long from the tip, whose centre, 16 cm from the tip, is the paper's "centre of the
+/// strings" at the mode-1 node (15.8 cm in the paper, 15.9 cm on the N = 39 beam).
+pub const DEFAULT_FACE_LENGTH: f64 = 0.32;
 
 /// Allowed range (min, max) of the relative bending stiffness of a [`Profile`] knot.
 pub const STIFFNESS_REL: (f64, f64) = (1.0e-3, 1.0e3);
@@ -125,6 +130,8 @@ pub struct Impact {
 
 impl Default for Impact {
     /// The Fig 4 impact: x = 10 cm, r = 5 cm, at the 100-inch drop speed (results scale with v1).
+    /// (The command line's default point is the centre of the string face instead:
+    /// [`keys::face_centre_impact`](super::keys::face_centre_impact).)
     fn default() -> Self {
         Impact { x: 0.10, r: 0.05, v1: drop_speed(DROP_HEIGHT_100_IN) }
     }
@@ -166,7 +173,7 @@ impl Racket {
                 return Err(Error::invalid(
                     "head-length",
                     h,
-                    format!("string-face length must satisfy 0 < head-length <= L = {} m", self.length),
+                    format!("string-face length must satisfy 0 < head-length <= L = {} m", sig(self.length, 6)),
                 ));
             }
         }
@@ -174,6 +181,13 @@ impl Racket {
             p.validate()?;
         }
         Ok(())
+    }
+
+    /// The centre of the string face along the racket, m from the tip: the middle of the head
+    /// outline, or for a racket without one the middle of the default face
+    /// ([`DEFAULT_FACE_LENGTH`], at most the racket's length): 16 cm on the paper's racket.
+    pub fn face_centre(&self) -> f64 {
+        0.5 * self.head_length.unwrap_or(DEFAULT_FACE_LENGTH.min(self.length))
     }
 
     /// Half-width of the string face at `x` (m from the tip), m; `None` off the face along x.
@@ -221,8 +235,8 @@ impl Impact {
         keys::X.finite(self.x)?;
         let Some(half) = racket.face_half_width(self.x) else {
             let msg = match racket.head_length {
-                None => format!("impact point must lie on the racket, 0 <= x <= L = {} m", racket.length),
-                Some(h) => format!("impact point must lie on the string face, 0 <= x <= head-length = {h} m"),
+                None => format!("impact point must lie on the racket, 0 <= x <= L = {} m", sig(racket.length, 6)),
+                Some(h) => format!("impact point must lie on the string face, 0 <= x <= head-length = {} m", sig(h, 6)),
             };
             return Err(Error::invalid(keys::X.key, self.x, msg));
         };

@@ -22,6 +22,9 @@ pub struct ParamSpec {
     pub values: Values,
     /// How a value is checked.
     pub check: Check,
+    /// The range real rackets, balls and shots lie in, `(lo, hi)` in the parameter's unit:
+    /// a value outside it is valid (it runs) but earns a warning ([`ParamSpec::unusual`]).
+    pub usual: Option<(f64, f64)>,
 }
 
 /// The kind of value a parameter takes.
@@ -80,6 +83,25 @@ impl ParamSpec {
         }
     }
 
+    /// For a value outside the [`usual`](ParamSpec::usual) range: one line naming the value
+    /// and that range (`ks = 40 N/m is outside the usual 5e3..2e5 N/m of string-plane
+    /// stiffness`); `None` inside it or for a parameter without one.
+    pub fn unusual(&self, v: f64) -> Option<String> {
+        let (lo, hi) = self.usual?;
+        if (lo..=hi).contains(&v) {
+            return None;
+        }
+        let unit = if self.unit.is_empty() { String::new() } else { format!(" {}", self.unit) };
+        Some(format!(
+            "{} = {}{unit} is outside the usual {}..{}{unit} of {} (computed anyway)",
+            self.key,
+            sig(v, 6),
+            sig(lo, 3),
+            sig(hi, 3),
+            self.what
+        ))
+    }
+
     /// "must be a finite number (m)", naming the key.
     pub fn finite(&self, v: f64) -> Result<()> {
         if v.is_finite() {
@@ -93,6 +115,12 @@ impl ParamSpec {
     pub fn positive(&self, v: f64) -> Result<()> {
         positive(self.key, v, self.what, self.unit)
     }
+}
+
+/// `v` rounded to `digits` significant digits, in its shortest form (`36666.7`, `0.16`).
+pub fn sig(v: f64, digits: usize) -> String {
+    let rounded: f64 = format!("{:.*e}", digits.saturating_sub(1), v).parse().unwrap_or(v);
+    rounded.to_string()
 }
 
 /// "`what` must be a finite number > 0 `unit`", naming `field`.
@@ -120,6 +148,56 @@ pub trait FlagValue: Sized {
     const VALUES: Values;
     /// Parse `text` (surrounding spaces ignored) for the parameter `key`.
     fn parse_flag(key: &'static str, text: &str) -> Result<Self>;
+}
+
+/// A parameter's value in [`Params`](super::Params) as the flag would spell it (for the
+/// defaults in `--help`), and as a number where it is one (for the plausibility warnings).
+pub trait ShowValue {
+    /// The value as text (`0.16`, `hat`, `auto` for an unset time step).
+    fn show(&self) -> String;
+    /// The value as a number, if it is one.
+    fn number(&self) -> Option<f64> {
+        None
+    }
+}
+
+impl ShowValue for f64 {
+    fn show(&self) -> String {
+        sig(*self, 6)
+    }
+    fn number(&self) -> Option<f64> {
+        Some(*self)
+    }
+}
+
+impl ShowValue for usize {
+    fn show(&self) -> String {
+        self.to_string()
+    }
+    fn number(&self) -> Option<f64> {
+        Some(*self as f64)
+    }
+}
+
+/// The choice parameters show their name.
+macro_rules! show_by_name {
+    ($($t:ty),*) => {$(
+        impl ShowValue for $t {
+            fn show(&self) -> String {
+                self.name().to_string()
+            }
+        }
+    )*};
+}
+show_by_name!(super::LoadRule, super::SolverKind, super::Frame, super::Grip, super::StringLaw);
+
+impl ShowValue for Option<f64> {
+    fn show(&self) -> String {
+        self.map_or_else(|| "auto".to_string(), |v| v.show())
+    }
+    fn number(&self) -> Option<f64> {
+        *self
+    }
 }
 
 impl FlagValue for f64 {
@@ -159,12 +237,14 @@ pub(crate) fn one_of<T: Copy>(key: &'static str, text: &str, choices: &[(T, &str
 ///
 /// Each entry: the doc line (the flag's help), then
 /// `CONST field: Type = "key" at place.in.params, what "...", unit "...", column "...", check;`
-/// where `check` is `within(lo, hi)`, `rule` or `choice`.
+/// where `check` is `within(lo, hi)`, `rule` or `choice`, optionally followed by
+/// `, usual(lo, hi)`: the range real equipment and shots lie in (outside it: a warning).
 macro_rules! declare_params {
     ($(
         #[doc = $doc:literal]
         $konst:ident $field:ident: $ty:ty = $key:literal at $($place:ident).+,
-        what $what:literal, unit $unit:literal, column $column:literal, $check:ident $(($lo:expr, $hi:expr))?;
+        what $what:literal, unit $unit:literal, column $column:literal, $check:ident $(($lo:expr, $hi:expr))?
+        $(, usual($ulo:expr, $uhi:expr))?;
     )*) => {
         $(
             #[doc = concat!("The `", $key, "` parameter:", $doc)]
@@ -176,8 +256,28 @@ macro_rules! declare_params {
                 column: $column,
                 values: <$ty as FlagValue>::VALUES,
                 check: declare_params!(@check $check $(($lo, $hi))?),
+                usual: declare_params!(@usual $(($ulo, $uhi))?),
             };
         )*
+
+        /// The value of parameter `key` in `params`, as the flag would spell it (`None` for a
+        /// key that is not a parameter).
+        pub fn value_text(key: &str, params: &Params) -> Option<String> {
+            use super::spec::ShowValue;
+            match key {
+                $($key => Some(params.$($place).+.show()),)*
+                _ => None,
+            }
+        }
+
+        /// The value of parameter `key` in `params` as a number, where it is one.
+        pub fn value_number(key: &str, params: &Params) -> Option<f64> {
+            use super::spec::ShowValue;
+            match key {
+                $($key => params.$($place).+.number(),)*
+                _ => None,
+            }
+        }
 
         /// Every parameter, in the order of the flags.
         pub const ALL: [ParamSpec; [$($key),*].len()] = [$($konst),*];
@@ -230,6 +330,8 @@ macro_rules! declare_params {
     (@check within ($lo:expr, $hi:expr)) => { Check::Within($lo, $hi) };
     (@check rule) => { Check::Rule };
     (@check choice) => { Check::Choice };
+    (@usual ($lo:expr, $hi:expr)) => { Some(($lo, $hi)) };
+    (@usual) => { None };
 }
 
 pub(crate) use declare_params;

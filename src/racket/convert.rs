@@ -73,30 +73,83 @@ fn required<T: Copy>(label: &'static str, keys: &[(&'static str, Option<T>)]) ->
     })
 }
 
+/// Where the problems of a racket description are reported together, before the file is known
+/// (its reader puts in the path).
+pub(super) const SEVERAL: &str = "<racket>";
+
+/// The value, or `None` with the problem kept.
+fn keep<T>(errors: &mut Vec<Error>, r: Result<T>) -> Option<T> {
+    r.map_err(|e| errors.push(e)).ok()
+}
+
+/// One problem as it is; several as one line, `N problems: first; second; ...`.
+fn combine(mut errors: Vec<Error>) -> Error {
+    if errors.len() == 1 {
+        return errors.remove(0);
+    }
+    let lines: Vec<String> = errors.iter().map(ToString::to_string).collect();
+    Error::Config { path: SEVERAL.into(), message: format!("{} problems: {}", lines.len(), lines.join("; ")) }
+}
+
 impl RacketSpec {
-    /// The spec checked and in SI units.
+    /// The spec checked and in SI units; every problem is reported (several as one line).
     pub(super) fn resolve(&self) -> Result<Resolved> {
         use ranges::*;
-        let length_cm =
-            match required("length_in/length_cm", &[("length_in", self.length_in), ("length_cm", self.length_cm)])? {
-                ("length_in", v) => check("length_in", v, "racket length", "in", LENGTH_IN)? * 2.54,
-                (_, v) => check("length_cm", v, "racket length", "cm", LENGTH_CM)?,
-            };
-        let length = length_cm / 100.0;
-        let mass_g = self.mass_g.ok_or_else(|| Error::invalid("mass_g", "(missing)", "give the strung mass in g"))?;
-        let mass = check("mass_g", mass_g, "strung mass", "g", MASS_G)? / 1000.0;
-
-        let shape = self.shape(length_cm, length)?;
-        let tw = self.twistweight_kg_cm2.ok_or_else(|| {
-            Error::invalid("twistweight_kg_cm2", "(missing)", "give the twistweight (moment about the long axis)")
-        })?;
-        let ix = check("twistweight_kg_cm2", tw, "twistweight", "kg cm^2", TWISTWEIGHT)? / 1.0e4;
-        let (stiffness, ratio) = self.stiffness()?;
-        let head = self.head(length_cm)?;
-        let knots = self.knots(length_cm, head)?;
-        let ks = self.ks()?;
-        let ball = self.ball()?;
-        Ok(Resolved { length, mass, shape, ix, stiffness, ratio, head, knots, ks, ball })
+        // every independent key is checked, and all the problems reported at once
+        let mut errors: Vec<Error> = Vec::new();
+        let length_cm = keep(
+            &mut errors,
+            match required("length_in/length_cm", &[("length_in", self.length_in), ("length_cm", self.length_cm)]) {
+                Ok(("length_in", v)) => check("length_in", v, "racket length", "in", LENGTH_IN).map(|v| v * 2.54),
+                Ok((_, v)) => check("length_cm", v, "racket length", "cm", LENGTH_CM),
+                Err(e) => Err(e),
+            },
+        );
+        let mass = keep(
+            &mut errors,
+            self.mass_g
+                .ok_or_else(|| Error::invalid("mass_g", "(missing)", "give the strung mass in g"))
+                .and_then(|g| check("mass_g", g, "strung mass", "g", MASS_G))
+                .map(|g| g / 1000.0),
+        );
+        let shape = length_cm.and_then(|l| keep(&mut errors, self.shape(l, l / 100.0)));
+        let ix = keep(
+            &mut errors,
+            self.twistweight_kg_cm2
+                .ok_or_else(|| {
+                    Error::invalid(
+                        "twistweight_kg_cm2",
+                        "(missing)",
+                        "give the twistweight (moment about the long axis)",
+                    )
+                })
+                .and_then(|tw| check("twistweight_kg_cm2", tw, "twistweight", "kg cm^2", TWISTWEIGHT))
+                .map(|tw| tw / 1.0e4),
+        );
+        let stiffness = keep(&mut errors, self.stiffness());
+        let head = length_cm.and_then(|l| keep(&mut errors, self.head(l)));
+        let knots = match (length_cm, head) {
+            (Some(l), Some(head)) => keep(&mut errors, self.knots(l, head)),
+            _ => None,
+        };
+        let ks = keep(&mut errors, self.ks());
+        let ball = keep(&mut errors, self.ball());
+        match (length_cm, mass, shape, ix, stiffness, head, knots, ks, ball) {
+            (
+                Some(l),
+                Some(mass),
+                Some(shape),
+                Some(ix),
+                Some((stiffness, ratio)),
+                Some(head),
+                Some(knots),
+                Some(ks),
+                Some(ball),
+            ) if errors.is_empty() => {
+                Ok(Resolved { length: l / 100.0, mass, shape, ix, stiffness, ratio, head, knots, ks, ball })
+            }
+            _ => Err(combine(errors)),
+        }
     }
 
     /// Balance and swingweight, both or neither.

@@ -206,9 +206,11 @@ fn fit_ei(racket: &Racket, f_hz: f64, segments: usize) -> Result<f64> {
 
 /// Impact parameters for a command: the defaults (the paper's racket, ball and strings with the
 /// `hat` load), replaced by the racket description when one is given (fitted at the segment
-/// count the overrides ask for, else the default 39; a racket with a head outline is hit at
-/// the centre of its face unless `x` and `r` say otherwise), then the config-file and flag overrides
-/// (`overrides` = flags already merged over the config). Validated. Returns the fit too.
+/// count the overrides ask for, else the default 39), hit by default at the centre of the string
+/// face on the long axis ([`keys::face_centre_impact`](params::keys::face_centre_impact): the
+/// head outline's centre, or 16 cm from the tip on a racket without one) unless `x` and `r` say
+/// otherwise, then the config-file and flag overrides (`overrides` = flags already merged over
+/// the config). Validated. Returns the fit too.
 pub fn resolve(spec: Option<&RacketSpec>, overrides: &params::Overrides) -> Result<(params::Params, Option<Fitted>)> {
     let mut p = params::Params::default();
     let fitted = match spec {
@@ -217,15 +219,11 @@ pub fn resolve(spec: Option<&RacketSpec>, overrides: &params::Overrides) -> Resu
             p.racket = f.racket;
             p.strings = f.strings;
             p.ball = f.ball;
-            if let Some(h) = f.racket.head_length {
-                // a racket with a head outline is hit, by default, at the centre of its face
-                p.impact.x = 0.5 * h;
-                p.impact.r = 0.0;
-            }
             Some(f)
         }
         None => None,
     };
+    params::keys::face_centre_impact(&mut p);
     overrides.apply(&mut p);
     p.validate()?;
     Ok((p, fitted))

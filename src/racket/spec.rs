@@ -146,7 +146,12 @@ impl RacketSpec {
     pub fn from_toml_bytes(path: &Path, bytes: &[u8]) -> Result<Self> {
         let spec: RacketSpec =
             params::parse_toml(path, bytes, "give at least length_cm, mass_g, twistweight_kg_cm2, frequency_hz")?;
-        spec.validate()?;
+        spec.validate().map_err(|e| match e {
+            crate::Error::Config { path: several, message } if several.as_os_str() == super::convert::SEVERAL => {
+                crate::Error::Config { path: path.into(), message }
+            }
+            other => other,
+        })?;
         Ok(spec)
     }
 

@@ -15,20 +15,20 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
         "impact: x = {} m (force at {:.4} m, {} load, N = {}), r = {} m, v1 = {} m/s\n\
          racket: L = {} m, M = {} kg, EI = {} N m^2, Ix = {} kg m^2; strings ks = {} N/m; \
          ball mb = {} kg, k1 = {} N/m, p = {}\n",
-        p.impact.x,
+        fmt_sig(p.impact.x, 6),
         r.x_load_m,
         p.numerics.load.name(),
         p.numerics.segments,
-        p.impact.r,
+        fmt_sig(p.impact.r, 6),
         fmt_sig(p.impact.v1, 6),
-        p.racket.length,
-        p.racket.mass,
-        p.racket.ei,
-        p.racket.ix,
-        p.strings.ks,
-        p.ball.mass,
-        p.ball.k1,
-        p.ball.p
+        fmt_sig(p.racket.length, 6),
+        fmt_sig(p.racket.mass, 6),
+        fmt_sig(p.racket.ei, 6),
+        fmt_sig(p.racket.ix, 6),
+        fmt_sig(p.strings.ks, 6),
+        fmt_sig(p.ball.mass, 6),
+        fmt_sig(p.ball.k1, 6),
+        fmt_sig(p.ball.p, 6)
     );
     if p.variants != crate::params::Variants::default() {
         s.push_str(&format!("model: {}\n", p.variants.label()));
@@ -63,8 +63,8 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
 }
 
 /// The result as a one-row CSV with the field names of SPEC.md section 2 as the header
-/// (full precision).
-pub fn result_csv(r: &ImpactResult) -> String {
+/// (full precision), then the impact it describes ([`recorded`]).
+pub fn result_csv(params: &Params, r: &ImpactResult) -> String {
     let v = serde_json::to_value(r).unwrap_or_default();
     let mut head = Vec::new();
     let mut row = Vec::new();
@@ -74,11 +74,23 @@ pub fn result_csv(r: &ImpactResult) -> String {
             row.push(v.to_string());
         }
     }
+    for (column, value) in recorded(params) {
+        head.push(column.to_string());
+        row.push(value.to_string());
+    }
     format!("{}\n{}\n", head.join(","), row.join(","))
 }
 
-/// The time series as a table.
-pub fn series_table(rows: &[SeriesRow]) -> Table {
+/// The parameters every CSV of one impact records, column and value: the impact point, the
+/// string bed and the ball speed.
+pub fn recorded(p: &Params) -> [(&'static str, f64); 4] {
+    use crate::params::keys::{KS, R, V1, X};
+    [(X.column, p.impact.x), (R.column, p.impact.r), (KS.column, p.strings.ks), (V1.column, p.impact.v1)]
+}
+
+/// The time series as a table; every row ends with the impact it belongs to ([`recorded`]).
+pub fn series_table(params: &Params, rows: &[SeriesRow]) -> Table {
+    let fixed = recorded(params);
     let mut t = Table::new(
         "series",
         &[
@@ -95,6 +107,10 @@ pub fn series_table(rows: &[SeriesRow]) -> Table {
             "ke_spin",
             "hand",
             "total",
+            fixed[0].0,
+            fixed[1].0,
+            fixed[2].0,
+            fixed[3].0,
         ],
     );
     for r in rows {
@@ -113,12 +129,12 @@ pub fn series_table(rows: &[SeriesRow]) -> Table {
             r.hand,
             r.total,
         ];
-        t.rows.push(vals.iter().map(|&v| Value::Num(v)).collect());
+        t.rows.push(vals.iter().chain(fixed.iter().map(|(_, v)| v)).map(|&v| Value::Num(v)).collect());
     }
     t
 }
 
 /// Write the time series CSV atomically.
-pub fn write_series(path: &Path, rows: &[SeriesRow]) -> Result<()> {
-    crate::render::io::write_atomic(path, series_table(rows).to_csv().as_bytes())
+pub fn write_series(path: &Path, params: &Params, rows: &[SeriesRow]) -> Result<()> {
+    crate::render::io::write_atomic(path, series_table(params, rows).to_csv().as_bytes())
 }

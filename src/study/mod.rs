@@ -46,6 +46,19 @@ pub fn config_file(path: Option<&Path>) -> Result<Overrides> {
     path.map_or_else(|| Ok(Overrides::default()), Overrides::from_toml_file)
 }
 
+/// A racket argument as a short name: the paper's racket, a preset as is, a file by the
+/// `name` it gives (else its file stem).
+pub fn racket_label(arg: Option<&str>) -> String {
+    match arg {
+        None => "paper racket".to_string(),
+        Some(a) if crate::racket::preset_names().contains(&a) => a.to_string(),
+        Some(a) => crate::racket::load(a)
+            .ok()
+            .and_then(|spec| spec.name)
+            .unwrap_or_else(|| Path::new(a).file_stem().and_then(|s| s.to_str()).unwrap_or(a).to_string()),
+    }
+}
+
 /// The comparison options of `speed` and `map`: tensions or rackets, not both; each tension in
 /// range.
 pub fn check_comparison(tensions_lb: &[f64], rackets_given: bool) -> Result<()> {

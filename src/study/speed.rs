@@ -42,9 +42,10 @@ pub struct SpeedRequest {
     pub incoming: f64,
     /// The unit of the speeds.
     pub unit: SpeedUnit,
-    /// Compare these string tensions, lb; the first is the reference.
+    /// Compare string tensions, lb: T (the configuration as given against it at T) or
+    /// T1,T2,... (at T1, the reference, against each of the others).
     pub compare_tension_lb: Vec<f64>,
-    /// Compare these rackets (files or presets); the first is the reference.
+    /// Compare these rackets (files or presets) against the configuration's (the reference).
     pub compare_racket: Vec<String>,
     /// Swing path angle above the horizontal, degrees (0: the paper's straight-on swing).
     pub path_deg: f64,
@@ -91,6 +92,7 @@ impl SpeedRequest {
         }
         let (v_racket, v_in) = (self.swing * self.unit.si, self.incoming * self.unit.si);
         check_comparison(&self.compare_tension_lb, !self.compare_racket.is_empty())?;
+        self.check_unused()?;
         let mut rows = Vec::new();
         for (label, racket, tension) in self.variants() {
             let (mut p, _) = self.sources.resolve(racket.as_deref())?;
@@ -125,20 +127,46 @@ impl SpeedRequest {
         self.path_deg != 0.0 || self.incoming_spin_rpm != 0.0
     }
 
-    /// The variants: (label, racket argument, tension).
+    /// The variants: (label, racket argument, tension). A is the configuration as given (the
+    /// `--racket`, else the paper's) and every comparison is against it, as in `map`: each
+    /// `--compare-racket`, or one tension T (A as given against A at T), or several tensions
+    /// (A at the first against A at each of the others).
     fn variants(&self) -> Vec<(String, Option<String>, Option<f64>)> {
         let racket = &self.sources.racket;
+        let name = crate::study::racket_label(racket.as_deref());
+        let at = |t: f64| (format!("{name} at {t} lb"), racket.clone(), Some(t));
         let mut variants = Vec::new();
-        for &t in &self.compare_tension_lb {
-            variants.push((format!("{t} lb"), racket.clone(), Some(t)));
-        }
-        for r in &self.compare_racket {
-            variants.push((r.clone(), Some(r.clone()), None));
-        }
-        if variants.is_empty() {
-            variants.push((racket.clone().unwrap_or_else(|| "paper".into()), racket.clone(), None));
+        match self.compare_tension_lb[..] {
+            [] => {
+                variants.push((name.clone(), racket.clone(), None));
+                for r in &self.compare_racket {
+                    variants.push((crate::study::racket_label(Some(r)), Some(r.clone()), None));
+                }
+            }
+            [t] => {
+                variants.push((format!("{name} as given"), racket.clone(), None));
+                variants.push(at(t));
+            }
+            ref many => variants.extend(many.iter().map(|&t| at(t))),
         }
         variants
+    }
+
+    /// Refuse the parameters `speed` sets itself: the ball speed (from `--swing` and
+    /// `--incoming`) and the incidence and spin (from `--swing-path-deg` and
+    /// `--incoming-spin-rpm`), from the flags or the config file.
+    fn check_unused(&self) -> Result<()> {
+        let given = self.sources.flags.clone().or(crate::study::config_file(self.sources.config.as_deref())?);
+        let set: [(&'static str, Option<f64>, &str); 4] = [
+            ("v1", given.v1, "the ball speed comes from --swing and --incoming"),
+            ("angle-deg", given.angle_deg, "the incidence comes from --swing-path-deg"),
+            ("azimuth-deg", given.azimuth_deg, "the incidence comes from --swing-path-deg"),
+            ("spin-rpm", given.spin_rpm, "the ball's spin comes from --incoming-spin-rpm"),
+        ];
+        match set.iter().find(|(_, v, _)| v.is_some()) {
+            Some((key, Some(v), why)) => Err(Error::invalid(key, v, format!("speed does not use it: {why}"))),
+            _ => Ok(()),
+        }
     }
 }
 

@@ -14,6 +14,16 @@ use crate::params::{keys, Overrides, Params};
 use crate::solve::outcome::{Field, Get, FIELDS};
 use crate::solve::{simulate, ImpactResult};
 
+/// A number in its shortest exact form (`ryu`), zero of either sign as "0" as in the other
+/// tables.
+fn number_text(v: f64) -> String {
+    if v == 0.0 {
+        "0".to_string()
+    } else {
+        ryu::Buffer::new().format(v).to_string()
+    }
+}
+
 /// Impacts computed per parallel chunk (bounded memory, deterministic order).
 pub const CHUNK: usize = 4096;
 /// The largest sweep accepted.
@@ -101,6 +111,19 @@ pub struct Sweep {
     pub axes: Vec<Axis>,
 }
 
+/// The options of the `sweep` command, which go before the `--KEY SPEC` pairs.
+pub const OPTIONS: [&str; 4] = ["out", "config", "racket", "quiet"];
+
+/// The parameters every sweep row records, swept or not (the impact point, the string bed and
+/// the ball speed), and for a sweep of oblique or spinning balls the incidence and spin too.
+pub fn recorded_keys(oblique: bool) -> Vec<&'static str> {
+    let mut v = vec![keys::X.key, keys::R.key, keys::KS.key, keys::V1.key];
+    if oblique {
+        v.extend([keys::ANGLE_DEG.key, keys::SPIN_RPM.key]);
+    }
+    v
+}
+
 /// Column name of a parameter, with its SI unit (`unknown` for a key that is not a parameter).
 pub fn column_name(key: &str) -> &'static str {
     keys::find(key).map_or("unknown", |spec| spec.column)
@@ -121,17 +144,8 @@ pub fn result_columns(oblique: bool) -> impl Iterator<Item = &'static str> {
 /// as the same `f64` (`ryu`: `0.25`, `1.5e-7`, `3.0`): exact, and without the noise digits of a
 /// fixed 17; a flag as 0 or 1.
 fn result_fields<'a>(r: &'a ImpactResult, p: &Params, oblique: bool) -> impl Iterator<Item = String> + 'a {
-    let mut buffer = ryu::Buffer::new();
     let fields = swept(oblique).map(move |f| match f.get {
-        // (zero of either sign as "0", as in the other tables)
-        Get::Number(g) => {
-            let v = g(r);
-            if v == 0.0 {
-                "0".to_string()
-            } else {
-                buffer.format(v).to_string()
-            }
-        }
+        Get::Number(g) => number_text(g(r)),
         Get::Flag(g) => u8::from(g(r)).to_string(),
     });
     fields.chain([p.numerics.solver.name().to_string()])
@@ -144,6 +158,13 @@ impl Sweep {
     /// [`default_solver`] unless given. Every point is validated before anything runs.
     pub fn from_pairs(racket: Option<&str>, config: Option<&Path>, pairs: &[String]) -> Result<Sweep> {
         let mut base = crate::study::config_file(config)?;
+        if let Some(option) = pairs.iter().find(|t| t.strip_prefix("--").is_some_and(|k| OPTIONS.contains(&k))) {
+            return Err(Error::invalid(
+                "sweep",
+                option,
+                "options (--out, --config, --racket, --quiet) go before the --KEY SPEC pairs",
+            ));
+        }
         if pairs.len() % 2 != 0 || pairs.is_empty() {
             return Err(Error::invalid(
                 "sweep",
@@ -156,23 +177,54 @@ impl Sweep {
             let key = pair[0].strip_prefix("--").ok_or_else(|| {
                 Error::invalid("sweep", &pair[0], "expected --KEY before each SPEC (e.g. --x 0.02:0.60:50)")
             })?;
+            if OPTIONS.contains(&key) {
+                return Err(Error::invalid(
+                    "sweep",
+                    &pair[0],
+                    "options (--out, --config, --racket, --quiet) go before the --KEY SPEC pairs",
+                ));
+            }
+            if keys::find(key).is_none() {
+                return Err(Error::invalid(
+                    "sweep",
+                    &pair[0],
+                    format!("unknown parameter (known: {})", Overrides::KEYS.join(", ")),
+                ));
+            }
             if axes.iter().any(|ax| ax.key == key) {
                 return Err(Error::invalid("sweep", key, "each parameter may be given once"));
             }
             axes.push(parse_spec(key, &pair[1])?);
         }
-        let defaults = match racket {
-            Some(arg) => {
-                let spec = crate::racket::load(arg)?;
-                let only_n = Overrides { segments: base.segments, ..Overrides::default() };
-                crate::racket::resolve(Some(&spec), &only_n)?.0
-            }
-            None => Params::default(),
-        };
+        // the defaults of every command: the racket (or the paper's), hit at its face centre
+        let spec = racket.map(crate::racket::load).transpose()?;
+        let only_n = Overrides { segments: base.segments, ..Overrides::default() };
+        let defaults = crate::racket::resolve(spec.as_ref(), &only_n)?.0;
         base.solver = default_solver(&base, &axes);
         let sweep = Sweep { defaults, base, axes };
         sweep.validate_all()?; // a bad value anywhere fails before anything is written
         Ok(sweep)
+    }
+
+    /// One impact's parameters per value of each axis (the other axes at their first value):
+    /// every value each parameter takes, without the whole product (for the plausibility
+    /// warnings).
+    pub fn representatives(&self) -> Result<Vec<Params>> {
+        let (first, _) = self.point(0)?;
+        let mut out = vec![first];
+        for axis in &self.axes {
+            for v in &axis.values {
+                let mut o = self.base.clone();
+                for other in &self.axes {
+                    o.set(&other.key, &other.values[0])?;
+                }
+                o.set(&axis.key, v)?;
+                let mut p = self.defaults;
+                o.apply(&mut p);
+                out.push(p);
+            }
+        }
+        Ok(out)
     }
 
     /// Number of impacts.
@@ -196,8 +248,15 @@ impl Sweep {
 
     /// The CSV header.
     pub fn header(&self) -> Vec<String> {
-        let results = result_columns(self.is_oblique()).map(String::from);
-        self.axes.iter().map(|a| column_name(&a.key).to_string()).chain(results).collect()
+        let oblique = self.is_oblique();
+        let results = result_columns(oblique).map(String::from);
+        let fixed = self.fixed_keys(oblique).into_iter().map(|k| column_name(k).to_string());
+        self.axes.iter().map(|a| column_name(&a.key).to_string()).chain(fixed).chain(results).collect()
+    }
+
+    /// The [`recorded_keys`] that are not swept: their columns follow the swept ones.
+    pub fn fixed_keys(&self, oblique: bool) -> Vec<&'static str> {
+        recorded_keys(oblique).into_iter().filter(|k| !self.axes.iter().any(|a| a.key == *k)).collect()
     }
 
     /// The parameters of impact `i` (row-major, first axis slowest) and its axis values.
@@ -235,6 +294,7 @@ impl Sweep {
             return Err(Error::invalid("sweep", total, format!("a sweep may have at most {MAX_POINTS} impacts")));
         }
         let oblique = self.is_oblique();
+        let fixed = self.fixed_keys(oblique);
         let mut start = 0u64;
         while start < total {
             let end = (start + CHUNK as u64).min(total);
@@ -243,7 +303,13 @@ impl Sweep {
                 .map(|i| {
                     let (p, vals) = self.point(i)?;
                     let r = simulate(&p)?;
-                    Ok(vals.into_iter().map(str::to_string).chain(result_fields(&r, &p, oblique)).collect())
+                    let fixed = fixed.iter().map(|k| number_text(keys::value_number(k, &p).unwrap_or(f64::NAN)));
+                    Ok(vals
+                        .into_iter()
+                        .map(str::to_string)
+                        .chain(fixed)
+                        .chain(result_fields(&r, &p, oblique))
+                        .collect())
                 })
                 .collect::<Result<_>>()?;
             sink(&rows)?;
@@ -302,7 +368,10 @@ mod tests {
             )
             .unwrap();
         assert_eq!(rows.len(), 6);
-        let e_a: f64 = rows[4][2].parse().unwrap();
+        // swept ks, x; then the recorded r and v1; then the results
+        assert_eq!(sweep.header()[..5], ["ks_n_per_m", "x_m", "r_m", "v1_m_per_s", "e_a"]);
+        assert_eq!(rows[4][2], "0.05", "r of the default (Fig 4) parameters is recorded");
+        let e_a: f64 = rows[4][4].parse().unwrap();
         assert_eq!(e_a, simulate(&p).unwrap().e_a);
     }
 }

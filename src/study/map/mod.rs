@@ -57,8 +57,8 @@ pub use quantity::Quantity;
 pub use request::{MapOutcome, MapRequest};
 
 /// Length of the default face of a racket without a head outline, m (the paper's "centre of
-/// the strings" is its centre, 16 cm from the tip).
-pub const DEFAULT_FACE_LENGTH: f64 = 0.32;
+/// the strings" is its centre, 16 cm from the tip); declared with the racket's parameters.
+pub use crate::params::DEFAULT_FACE_LENGTH;
 /// Fewest grid points along either axis.
 pub const MIN_GRID: usize = 2;
 /// Most grid points along either axis.

@@ -9,7 +9,7 @@ use crate::error::{Error, Result};
 use crate::params::{ks_from_tension_lb, Params};
 use crate::render::heatmap::HeatMap;
 use crate::render::table::Table;
-use crate::study::{check_comparison, config_file, Sources};
+use crate::study::{check_comparison, config_file, racket_label, Sources};
 
 /// A map of one configuration, or the difference of two.
 #[derive(Debug, Clone)]
@@ -173,14 +173,5 @@ impl MapRequest {
         config.r = Some(0.0);
         let spec = racket.map(crate::racket::load).transpose()?;
         Ok(crate::racket::resolve(spec.as_ref(), &flags.clone().or(config))?.0)
-    }
-}
-
-/// A racket argument as a short name: a preset as is, a file by its stem.
-pub fn racket_label(arg: Option<&str>) -> String {
-    match arg {
-        None => "paper racket".to_string(),
-        Some(a) if crate::racket::preset_names().contains(&a) => a.to_string(),
-        Some(a) => std::path::Path::new(a).file_stem().and_then(|s| s.to_str()).unwrap_or(a).to_string(),
     }
 }

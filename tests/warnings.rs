@@ -1,0 +1,154 @@
+//! Implausible but valid inputs: they run, give the same result as with `--quiet`, exit 0, and
+//! print exactly one `warning:` line on stderr naming the value and the usual range; `--quiet`
+//! silences it. And the defaults a new user meets: `--help` shows them, the default impact is
+//! the centre of the string face, `speed` compares against A and shows both sides.
+
+use std::process::{Command, Output};
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_racket-impact")).args(args).output().expect("binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8(o.stdout.clone()).unwrap()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8(o.stderr.clone()).unwrap()
+}
+
+/// `args` warns once with every one of `words`, the result is the quiet run's, exit 0.
+fn warns_once(args: &[&str], words: &[&str]) {
+    let loud = run(args);
+    let quiet = run(&[&["--quiet"], args].concat());
+    assert_eq!(loud.status.code(), Some(0), "{args:?}: {}", stderr(&loud));
+    assert_eq!(quiet.status.code(), Some(0), "{args:?}");
+    let err = stderr(&loud);
+    let lines: Vec<&str> = err.lines().filter(|l| l.starts_with("warning:")).collect();
+    assert_eq!(lines.len(), 1, "{args:?}: {err}");
+    for w in words {
+        assert!(lines[0].contains(w), "{args:?}: '{w}' not in {}", lines[0]);
+    }
+    assert!(stderr(&quiet).is_empty(), "{args:?}: --quiet still printed {}", stderr(&quiet));
+    assert_eq!(stdout(&loud), stdout(&quiet), "{args:?}: the warning changed the result");
+}
+
+#[test]
+fn implausible_values_run_and_warn_once() {
+    // a stiffness in kN/m or lb, not N/m
+    warns_once(&["simulate", "--ks", "40", "--format", "json"], &["ks = 40 N/m", "5000..200000 N/m"]);
+    warns_once(&["simulate", "--ks", "5e5"], &["ks = 500000 N/m"]);
+    warns_once(&["simulate", "--mass", "0.1"], &["mass = 0.1 kg", "0.15..1 kg"]);
+    warns_once(&["simulate", "--v1", "90"], &["v1 = 90 m/s", "0..70 m/s"]);
+    warns_once(&["simulate", "--mu", "1.5", "--angle-deg", "30"], &["mu = 1.5", "0..1"]);
+    warns_once(&["simulate", "--angle-deg", "84", "--v1", "20"], &["angle-deg = 84 deg", "0..80 deg"]);
+    // a frame frequency no racket has: EI 20 on the paper's frame is about 46 Hz
+    warns_once(&["simulate", "--ei", "20"], &["f1 = ", "60..300 Hz"]);
+    warns_once(&["modes", "--ei", "5000"], &["f1 = ", "60..300 Hz"]);
+    // a twist beyond the small-angle model, with every input in its usual range
+    warns_once(&["simulate", "--x", "0.16", "--r", "0.12", "--ix", "5e-4", "--v1", "40"], &["theta_end = ", "15 deg"]);
+    warns_once(&["speed", "--swing", "100", "--ks", "40"], &["ks = 40 N/m"]);
+    warns_once(&["sweep", "--ks", "40,4e4", "--x", "0.1"], &["ks = 40 N/m"]);
+}
+
+#[test]
+fn a_racket_file_with_a_mass_typo_warns() {
+    let dir = std::env::temp_dir().join(format!("racket-impact-warn-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("typo.toml");
+    std::fs::write(
+        &path,
+        "name = \"typo\"\nlength_cm = 68.6\nmass_g = 30\ntwistweight_kg_cm2 = 14\nfrequency_hz = 150\n",
+    )
+    .unwrap();
+    warns_once(&["simulate", "--racket", path.to_str().unwrap()], &["mass = 0.03 kg"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn usual_values_do_not_warn() {
+    for args in [
+        vec!["simulate"],
+        vec!["simulate", "--x", "0.10", "--r", "0.05", "--load", "node"],
+        vec!["simulate", "--racket", "tweener"],
+        vec!["speed", "--racket", "tweener", "--swing", "100", "--incoming", "60"],
+        vec!["modes"],
+    ] {
+        let o = run(&args);
+        assert!(o.status.success() && o.stderr.is_empty(), "{args:?}: {}", stderr(&o));
+    }
+}
+
+#[test]
+fn help_shows_every_default() {
+    let help = stdout(&run(&["simulate", "--help"]));
+    for key in racket_impact::params::Overrides::KEYS {
+        let line = help.lines().skip_while(|l| !l.trim_start().starts_with(&format!("--{key} "))).nth(1).unwrap_or("");
+        assert!(line.contains("[default: "), "--{key}: {line}");
+    }
+    assert!(help.contains("[default: 0.16 m, the centre of the string face"), "{help}");
+    assert!(help.contains("[default: 40000 N/m"), "{help}");
+    let sweep = stdout(&run(&["sweep", "--help"]));
+    assert!(sweep.contains("x (0.16 m), r (0 m), ks (40000 N/m)"), "{sweep}");
+}
+
+#[test]
+fn the_default_impact_is_the_centre_of_the_face_on_the_axis() {
+    let v: serde_json::Value = serde_json::from_str(&stdout(&run(&["simulate", "--format", "json"]))).unwrap();
+    assert_eq!((v["params"]["impact"]["x"].as_f64(), v["params"]["impact"]["r"].as_f64()), (Some(0.16), Some(0.0)));
+    assert_eq!(v["theta_end_deg"].as_f64(), Some(0.0));
+    // a racket file: the centre of its head outline
+    let v: serde_json::Value =
+        serde_json::from_str(&stdout(&run(&["simulate", "--racket", "tweener", "--format", "json"]))).unwrap();
+    let head = v["params"]["racket"]["head_length"].as_f64().unwrap();
+    assert_eq!(v["params"]["impact"]["x"].as_f64(), Some(0.5 * head));
+    assert_eq!(v["params"]["impact"]["r"].as_f64(), Some(0.0));
+}
+
+#[test]
+fn speed_compares_each_racket_or_tension_against_a_and_shows_both() {
+    let text = stdout(&run(&["speed", "--racket", "tweener", "--compare-racket", "players", "--swing", "100"]));
+    let rows: Vec<&str> = text.lines().skip(2).collect();
+    assert_eq!(rows.len(), 2, "{text}");
+    assert!(rows[0].starts_with("tweener ") && rows[0].contains("+0.00 %"), "{text}");
+    assert!(rows[1].starts_with("players "), "{text}");
+    // one tension: A as given against A at T
+    let text = stdout(&run(&["speed", "--swing", "100", "--compare-tension-lb", "50"]));
+    let rows: Vec<&str> = text.lines().skip(2).collect();
+    assert_eq!(rows.len(), 2, "{text}");
+    assert!(rows[0].starts_with("paper racket as given") && rows[1].starts_with("paper racket at 50 lb"), "{text}");
+    // kph is km/h
+    assert_eq!(
+        stdout(&run(&["speed", "--swing", "100", "--unit", "kph"])),
+        stdout(&run(&["speed", "--swing", "100", "--unit", "kmh"]))
+    );
+}
+
+#[test]
+fn a_racket_is_labelled_with_its_name() {
+    let dir = std::env::temp_dir().join(format!("racket-impact-name-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("frame_v2.toml");
+    std::fs::write(
+        &path,
+        "name = \"My frame\"\nlength_cm = 68.6\nmass_g = 300\ntwistweight_kg_cm2 = 14\nfrequency_hz = 150\n",
+    )
+    .unwrap();
+    let text = stdout(&run(&["speed", "--racket", path.to_str().unwrap(), "--swing", "100"]));
+    assert!(text.lines().nth(2).is_some_and(|l| l.starts_with("My frame ")), "{text}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn text_output_prints_meaningful_digits() {
+    let text = stdout(&run(&["simulate", "--racket", "tweener"]));
+    assert!(text.contains("ks = 36666.7 N/m"), "{text}");
+    assert!(!text.contains("666666"), "{text}");
+}
+
+#[test]
+fn sweep_rows_record_the_impact() {
+    let text = stdout(&run(&["sweep", "--ks", "2e4", "--angle-deg", "30"]));
+    let head = text.lines().next().unwrap();
+    assert!(head.starts_with("ks_n_per_m,angle_deg,x_m,r_m,v1_m_per_s,spin_rpm,e_a"), "{head}");
+}
