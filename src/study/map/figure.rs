@@ -14,16 +14,25 @@ impl Face {
 }
 
 impl FaceMap {
-    /// The table: x_m, r_m, every quantity's column, recontact (0/1); one row per evaluated
+    /// The table: x_m, r_m, the fixed ks and v1 (and an oblique ball's angle and spin), every
+    /// quantity's column, recontact (0/1); one row per evaluated
     /// point, row-major (x slowest).
     pub fn table(&self) -> Table {
-        let oblique = !self.params.oblique.is_normal();
-        let mut cols = vec!["x_m", "r_m"];
+        let p = &self.params;
+        let oblique = !p.oblique.is_normal();
+        // every row names its whole impact: the point, and what the map holds fixed
+        let mut cols = vec!["x_m", "r_m", "ks_n_per_m", "v1_m_per_s"];
+        if oblique {
+            cols.extend(["angle_deg", "spin_rpm"]);
+        }
         cols.extend(Quantity::in_table(oblique).map(|q| q.column()));
         cols.push("recontact");
         let mut t = Table::new("map", &cols);
         for (x, r, res) in self.points() {
-            let mut row: Vec<Value> = vec![x.into(), r.into()];
+            let mut row: Vec<Value> = vec![x.into(), r.into(), p.strings.ks.into(), p.impact.v1.into()];
+            if oblique {
+                row.extend([Value::from(p.oblique.angle_deg), Value::from(p.oblique.spin_rpm)]);
+            }
             row.extend(Quantity::in_table(oblique).map(|q| Value::Num(q.of(res))));
             row.push(Value::Int(i64::from(res.recontact)));
             // the row has one value per column, so push cannot fail
@@ -123,12 +132,15 @@ fn subtitle(p: &Params, faces: &[Face], grid: &Grid, evaluated: usize) -> String
 }
 
 impl DiffMap {
-    /// The table: x_m, r_m, `<q>_a`, `<q>_b`, `<q>_b_minus_a`, recontact_a, recontact_b; one row
+    /// The table: x_m, r_m, ks of A and B, v1, `<q>_a`, `<q>_b`, `<q>_b_minus_a`, recontact_a, recontact_b; one row
     /// per point inside both faces, row-major.
     pub fn table(&self, q: Quantity) -> Table {
         let c = q.column();
         let (ca, cb, cd) = (format!("{c}_a"), format!("{c}_b"), format!("{c}_b_minus_a"));
-        let mut t = Table::new("map_diff", &["x_m", "r_m", &ca, &cb, &cd, "recontact_a", "recontact_b"]);
+        let cols =
+            ["x_m", "r_m", "ks_a_n_per_m", "ks_b_n_per_m", "v1_m_per_s", &ca, &cb, &cd, "recontact_a", "recontact_b"];
+        let mut t = Table::new("map_diff", &cols);
+        let (pa, pb) = (&self.a.params, &self.b.params);
         for (k, (ra, rb)) in self.a.results.iter().zip(&self.b.results).enumerate() {
             if let (Some(ra), Some(rb)) = (ra, rb) {
                 let (x, r) = self.a.grid.point(k);
@@ -136,6 +148,9 @@ impl DiffMap {
                 let _ = t.push(vec![
                     x.into(),
                     r.into(),
+                    pa.strings.ks.into(),
+                    pb.strings.ks.into(),
+                    pa.impact.v1.into(),
                     va.into(),
                     vb.into(),
                     (vb - va).into(),
