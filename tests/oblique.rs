@@ -260,3 +260,19 @@ fn the_swing_frame_transformation_is_galilean() {
         Swing { racket_speed: 30.0, path_deg: -25.0, incoming: 20.0, incoming_spin_rpm: 0.0 }.hit(&base).unwrap();
     assert!(rel(down.spin_rpm, -up.spin_rpm, 0.0) < 1e-12 && rel(down.launch_deg, -up.launch_deg, 0.0) < 1e-12);
 }
+
+#[test]
+fn a_face_map_of_an_oblique_ball_shows_its_spin_and_a_normal_one_has_no_spin_column() {
+    use racket_impact::study::map::{FaceMap, Quantity};
+    let q: Quantity = "spin".parse().unwrap();
+    assert_eq!(q, Quantity::Spin);
+    let mut p = centre(30.0, 0.0, 0.4);
+    p.oblique.azimuth_deg = 90.0;
+    let m = FaceMap::compute(&p, 5, 3, &mut |_| {}).unwrap();
+    let t = m.table();
+    let spin = t.column("spin_out_rpm").unwrap();
+    assert!(!spin.is_empty() && spin.iter().all(|s| s.is_finite() && *s > 0.0), "{spin:?}");
+    assert_eq!(t.column("angle_deg").unwrap()[0], 30.0);
+    let normal = FaceMap::compute(&centre(0.0, 0.0, 0.4), 5, 3, &mut |_| {}).unwrap().table();
+    assert!(normal.column("spin_out_rpm").is_none());
+}

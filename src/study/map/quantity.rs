@@ -70,7 +70,7 @@ impl Quantity {
             Quantity::Theta => "theta_deg",
             Quantity::FVib => "f_vib",
             Quantity::Power => "power_pct",
-            Quantity::Spin => "spin_rpm",
+            Quantity::Spin => "spin_out_rpm",
             Quantity::ReboundAngle => "rebound_angle_deg",
         }
     }
@@ -138,7 +138,7 @@ impl Quantity {
 impl std::str::FromStr for Quantity {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self> {
-        Quantity::ALL.into_iter().find(|q| q.name() == s).ok_or_else(|| {
+        Quantity::every().find(|q| q.name() == s).ok_or_else(|| {
             Error::invalid(
                 "quantity",
                 s,
