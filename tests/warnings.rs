@@ -152,3 +152,14 @@ fn sweep_rows_record_the_impact() {
     let head = text.lines().next().unwrap();
     assert!(head.starts_with("ks_n_per_m,angle_deg,x_m,r_m,v1_m_per_s,spin_rpm,e_a"), "{head}");
 }
+
+#[test]
+fn map_says_when_a_config_files_impact_point_is_not_used() {
+    let dir = tempfile::tempdir().unwrap();
+    let cfg = dir.path().join("c.toml");
+    std::fs::write(&cfg, "x = 0.1\nks = 3e4\n").unwrap();
+    let out = dir.path().join("m.csv");
+    let (cfg, out) = (cfg.to_str().unwrap(), out.to_str().unwrap());
+    let args = ["map", "--config", cfg, "--nx", "3", "--nr", "3", "--format", "csv", "--out", out];
+    warns_once(&args, &["x and r of the config file are not used by map"]);
+}

@@ -66,6 +66,11 @@ pub fn run(a: MapArgs) -> Result<()> {
         compare_tension_lb: a.compare_tension_lb,
     };
     request.check()?;
+    // a config file may be shared with simulate: its impact point is not refused, but said to be unused
+    let config = racket_impact::study::config_file(a.common.config.as_deref())?;
+    if config.x.is_some() || config.r.is_some() {
+        warn("x and r of the config file are not used by map: the grid sets the impact point");
+    }
     let outputs = Outputs::for_csv(&a.out.unwrap_or_else(|| request.default_csv()))?;
     let (configs, total) = request.configurations()?;
 
@@ -103,9 +108,7 @@ pub fn run(a: MapArgs) -> Result<()> {
     }
     let n_re = map.recontacts();
     if n_re > 0 {
-        warn(&format!(
-            "warning: {n_re} map points have a re-contact after separation (flagged in the recontact column)"
-        ));
+        warn(&format!("{n_re} map points have a re-contact after separation (flagged in the recontact column)"));
     }
     Ok(())
 }
