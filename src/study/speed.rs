@@ -179,40 +179,22 @@ impl SpeedComparison {
     /// The comparison as a table (speeds in the request's unit).
     pub fn table(&self) -> Result<Table> {
         let unit = self.request.unit;
-        let mut t = Table::new(
-            "speed",
-            &[
-                "variant",
-                "x_m",
-                "r_m",
-                "ks_n_per_m",
-                "e_a",
-                "tau_ms",
-                "theta_deg",
-                "ball_speed_out",
-                "change_pct",
-                "unit",
-            ],
-        );
+        let mut cols = vec![
+            "variant",
+            "x_m",
+            "r_m",
+            "ks_n_per_m",
+            "e_a",
+            "tau_ms",
+            "theta_deg",
+            "ball_speed_out",
+            "change_pct",
+            "unit",
+        ];
         if self.request.is_stroke() {
-            t = Table::new(
-                "speed",
-                &[
-                    "variant",
-                    "x_m",
-                    "r_m",
-                    "ks_n_per_m",
-                    "e_a",
-                    "tau_ms",
-                    "theta_deg",
-                    "ball_speed_out",
-                    "change_pct",
-                    "unit",
-                    "launch_deg",
-                    "spin_rpm",
-                ],
-            );
+            cols.extend(["launch_deg", "spin_rpm"]);
         }
+        let mut t = Table::new("speed", &cols);
         for SpeedRow { label, params: p, result: r, v_out, launch } in &self.rows {
             let mut row = vec![
                 Value::Text(label.clone()),
