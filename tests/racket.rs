@@ -276,3 +276,19 @@ fn load_takes_a_preset_name_then_a_file_and_lists_the_presets_otherwise() {
         assert!(msg.contains(name), "{msg}");
     }
 }
+
+#[test]
+fn a_racket_file_may_set_the_friction_of_its_strings() {
+    let base = "length_cm = 68.6\nmass_g = 300\ntwistweight_kg_cm2 = 14\nfrequency_hz = 150\n";
+    let spec = parse(&format!("{base}mu = 0.3\n")).unwrap();
+    let (p, fitted) = racket::resolve(Some(&spec), &Default::default()).unwrap();
+    assert_eq!(p.oblique.mu, 0.3);
+    assert_eq!(fitted.unwrap().params(p.impact, p.numerics).oblique.mu, 0.3);
+    // a flag still wins over the file
+    let mut flags = racket_impact::params::Overrides::default();
+    flags.set("mu", "0.5").unwrap();
+    assert_eq!(racket::resolve(Some(&spec), &flags).unwrap().0.oblique.mu, 0.5);
+    // and a bad value names the key and its range
+    let msg = parse(&format!("{base}mu = 5\n")).unwrap().to_racket(39).unwrap_err().to_string();
+    assert!(msg.contains("invalid mu = 5") && msg.contains("<= mu <="), "{msg}");
+}

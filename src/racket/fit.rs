@@ -21,6 +21,8 @@ pub struct Fitted {
     pub strings: Strings,
     /// The ball.
     pub ball: Ball,
+    /// The friction of a ball on these strings, if the file gives it.
+    pub mu: Option<f64>,
     /// Targets beside what the discrete model has.
     pub report: FitReport,
 }
@@ -29,6 +31,10 @@ impl Fitted {
     /// Full impact parameters: this racket, strings and ball with the given impact and
     /// numerics (use the same `segments` as the fit for an exact match of the targets).
     pub fn params(&self, impact: params::Impact, numerics: params::Numerics) -> params::Params {
+        let mut oblique = params::Oblique::default();
+        if let Some(mu) = self.mu {
+            oblique.mu = mu;
+        }
         params::Params {
             ball: self.ball,
             strings: self.strings,
@@ -36,7 +42,7 @@ impl Fitted {
             impact,
             numerics,
             variants: Default::default(),
-            oblique: Default::default(),
+            oblique,
         }
     }
 }
@@ -68,8 +74,11 @@ impl RacketSpec {
         let strings = Strings { ks: r.ks };
         strings.validate()?;
         r.ball.validate()?;
+        if let Some(mu) = self.mu {
+            params::keys::MU.check(mu)?;
+        }
         let report = self.report(&r, &racket, segments);
-        Ok(Fitted { racket, strings, ball: r.ball, report })
+        Ok(Fitted { racket, strings, ball: r.ball, mu: self.mu, report })
     }
 }
 
@@ -219,6 +228,9 @@ pub fn resolve(spec: Option<&RacketSpec>, overrides: &params::Overrides) -> Resu
             p.racket = f.racket;
             p.strings = f.strings;
             p.ball = f.ball;
+            if let Some(mu) = f.mu {
+                p.oblique.mu = mu;
+            }
             Some(f)
         }
         None => None,

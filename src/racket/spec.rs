@@ -73,6 +73,9 @@ pub struct RacketSpec {
     pub string_bed_n_per_m: Option<f64>,
     /// Dynamic-tension meter reading, kp/cm, taken as `k_s` directly (an assumption).
     pub dt_kp_cm: Option<f64>,
+    /// Coefficient of friction of a ball on these strings, for oblique impacts (0..=2); absent =
+    /// the default of `--mu` (SPEC.md section 6).
+    pub mu: Option<f64>,
     /// The ball; absent = the paper's ball.
     pub ball: Option<BallSpec>,
 }
