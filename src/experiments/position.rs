@@ -10,6 +10,7 @@ use super::{
 };
 use super::{paper_label, paper_points, paper_value};
 use crate::error::Result;
+use crate::params::DEFAULT_FACE_LENGTH;
 use crate::render::plot::{Band, Chart, Curve, LineStyle, VLine};
 use crate::render::table::fmt_sig;
 use crate::render::table::{Table, Value};
@@ -40,10 +41,10 @@ pub fn sweep_values(r: &ImpactResult) -> Vec<Value> {
     [r.e_a, r.f_ball, r.f_vib, r.f_vib_peak_pe, r.tau_s, r.peak_force_n].into_iter().map(Into::into).collect()
 }
 
-/// Length of the string face from the tip, m: the default face of the string-face maps
-/// (`study::map::DEFAULT_FACE_LENGTH`), as the paper's racket has no head outline. The position
-/// figures shade it.
-pub const STRING_FACE_LENGTH: f64 = 0.32;
+/// Length of the string face from the tip, m: the default face of the string-face maps and of
+/// the default impact point ([`DEFAULT_FACE_LENGTH`]), as the paper's racket has no head
+/// outline. The position figures shade it.
+pub const STRING_FACE_LENGTH: f64 = DEFAULT_FACE_LENGTH;
 
 /// Palette colours of the sweep curves: e_A, f(ball), f(vib), tau.
 pub const SWEEP_COLORS: [usize; 4] = [0, 1, 2, 6];
