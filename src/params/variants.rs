@@ -7,109 +7,67 @@ use super::spec::{one_of, within, Choice, FlagValue, Values};
 use super::{Racket, SolverKind};
 use crate::error::{Error, Result};
 
-/// How the frame is modelled.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]
-#[serde(rename_all = "lowercase")]
-pub enum Frame {
-    /// The paper's flexible beam.
-    #[default]
-    Beam,
-    /// The textbook rigid racket (effective mass at the impact point, plus twist), in closed form.
-    Rigid,
+/// Declares a choice enum from one list: each variant with its config name and what it means
+/// (its doc and its help line), the default; and from that its `ALL`, `CHOICES`, `name` and
+/// flag parsing.
+macro_rules! choice_enum {
+    ($(#[doc = $doc:literal])+ $name:ident (default $default:ident) { $($variant:ident = $key:literal: $help:literal,)+ }) => {
+        $(#[doc = $doc])+
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+        #[serde(rename_all = "lowercase")]
+        pub enum $name {
+            $(#[doc = $help] $variant,)+
+        }
+
+        impl Default for $name {
+            fn default() -> Self {
+                $name::$default
+            }
+        }
+
+        impl $name {
+            /// Every value, in the order of [`Self::CHOICES`].
+            pub const ALL: [$name; [$($key),+].len()] = [$($name::$variant),+];
+            /// The names on the command line and in configs, with what they mean.
+            pub const CHOICES: &'static [Choice] = &[$(Choice { name: $key, help: Some($help) }),+];
+
+            /// The name used on the command line and in configs.
+            pub fn name(self) -> &'static str {
+                Self::CHOICES[self as usize].name
+            }
+        }
+
+        impl FlagValue for $name {
+            const VALUES: Values = Values::Choice($name::CHOICES);
+            fn parse_flag(key: &'static str, text: &str) -> Result<Self> {
+                let names: Vec<($name, &str)> = $name::ALL.into_iter().map(|v| (v, v.name())).collect();
+                one_of(key, text, &names)
+            }
+        }
+    };
 }
 
-impl Frame {
-    /// Every value, in the order of [`Frame::CHOICES`].
-    pub const ALL: [Frame; 2] = [Frame::Beam, Frame::Rigid];
-    /// The names on the command line and in configs, with what they mean.
-    pub const CHOICES: &'static [Choice] = &[
-        Choice { name: "beam", help: Some("The paper's flexible beam") },
-        Choice {
-            name: "rigid",
-            help: Some("The textbook rigid racket (effective mass at the impact point, plus twist), in closed form"),
-        },
-    ];
-
-    /// The name used on the command line and in configs.
-    pub fn name(self) -> &'static str {
-        Self::CHOICES[self as usize].name
+choice_enum! {
+    /// How the frame is modelled.
+    Frame (default Beam) {
+        Beam = "beam": "The paper's flexible beam",
+        Rigid = "rigid": "The textbook rigid racket (effective mass at the impact point, plus twist), in closed form",
     }
 }
 
-impl FlagValue for Frame {
-    const VALUES: Values = Values::Choice(Frame::CHOICES);
-    fn parse_flag(key: &'static str, text: &str) -> Result<Self> {
-        let names: Vec<(Frame, &str)> = Frame::ALL.into_iter().map(|v| (v, v.name())).collect();
-        one_of(key, text, &names)
+choice_enum! {
+    /// How the racket is held.
+    Grip (default Free) {
+        Free = "free": "The paper's freely suspended racket",
+        Hand = "hand": "A hand: springs and dampers spread over the grip length from the butt",
     }
 }
 
-/// How the racket is held.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]
-#[serde(rename_all = "lowercase")]
-pub enum Grip {
-    /// The paper's freely suspended racket.
-    #[default]
-    Free,
-    /// A hand: springs and dampers spread over the grip length from the butt.
-    Hand,
-}
-
-impl Grip {
-    /// Every value, in the order of [`Grip::CHOICES`].
-    pub const ALL: [Grip; 2] = [Grip::Free, Grip::Hand];
-    /// The names on the command line and in configs, with what they mean.
-    pub const CHOICES: &'static [Choice] = &[
-        Choice { name: "free", help: Some("The paper's freely suspended racket") },
-        Choice { name: "hand", help: Some("A hand: springs and dampers spread over the grip length from the butt") },
-    ];
-
-    /// The name used on the command line and in configs.
-    pub fn name(self) -> &'static str {
-        Self::CHOICES[self as usize].name
-    }
-}
-
-impl FlagValue for Grip {
-    const VALUES: Values = Values::Choice(Grip::CHOICES);
-    fn parse_flag(key: &'static str, text: &str) -> Result<Self> {
-        let names: Vec<(Grip, &str)> = Grip::ALL.into_iter().map(|v| (v, v.name())).collect();
-        one_of(key, text, &names)
-    }
-}
-
-/// The string bed's force law.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]
-#[serde(rename_all = "lowercase")]
-pub enum StringLaw {
-    /// The paper's constant `k_s`.
-    #[default]
-    Linear,
-    /// `F = k_s Y_s (1 + s (Y_s / d)^2)`: the secant stiffness grows by the fraction `s` at the
-    /// deflection `d` (the paper quotes about 10 % for large deflections).
-    Stiffening,
-}
-
-impl StringLaw {
-    /// Every value, in the order of [`StringLaw::CHOICES`].
-    pub const ALL: [StringLaw; 2] = [StringLaw::Linear, StringLaw::Stiffening];
-    /// The names on the command line and in configs, with what they mean.
-    pub const CHOICES: &'static [Choice] = &[
-        Choice { name: "linear", help: Some("The paper's constant `k_s`") },
-        Choice { name: "stiffening", help: Some("`F = k_s Y_s (1 + s (Y_s / d)^2)`: the secant stiffness grows by the fraction `s` at the deflection `d` (the paper quotes about 10 % for large deflections)") },
-    ];
-
-    /// The name used on the command line and in configs.
-    pub fn name(self) -> &'static str {
-        Self::CHOICES[self as usize].name
-    }
-}
-
-impl FlagValue for StringLaw {
-    const VALUES: Values = Values::Choice(StringLaw::CHOICES);
-    fn parse_flag(key: &'static str, text: &str) -> Result<Self> {
-        let names: Vec<(StringLaw, &str)> = StringLaw::ALL.into_iter().map(|v| (v, v.name())).collect();
-        one_of(key, text, &names)
+choice_enum! {
+    /// The string bed's force law.
+    StringLaw (default Linear) {
+        Linear = "linear": "The paper's constant `k_s`",
+        Stiffening = "stiffening": "`F = k_s Y_s (1 + s (Y_s / d)^2)`: the secant stiffness grows by the fraction `s` at the deflection `d` (the paper quotes about 10 % for large deflections)",
     }
 }
 

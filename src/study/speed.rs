@@ -239,6 +239,9 @@ impl SpeedComparison {
 
     /// The comparison as text: the swing, then one line per variant.
     pub fn text(&self) -> String {
+        if self.request.is_stroke() {
+            return self.stroke_text();
+        }
         let (req, unit) = (&self.request, self.request.unit);
         let mut s = format!(
             "swing {} {u} at the impact point, incoming ball {} {u}: v_out = e_A v_in + (1 + e_A) v_racket\n",
@@ -250,9 +253,6 @@ impl SpeedComparison {
             "{:<22} {:>7} {:>6} {:>9} {:>8} {:>8} {:>9} {:>12} {:>9}\n",
             "variant", "x cm", "r cm", "ks N/m", "e_A", "tau ms", "theta deg", "ball out", "change"
         ));
-        if req.is_stroke() {
-            return self.stroke_text();
-        }
         for SpeedRow { label, params: p, result: r, v_out, .. } in &self.rows {
             s.push_str(&format!(
                 "{:<22} {:>7.1} {:>6.1} {:>9.0} {:>8.4} {:>8.3} {:>9.2} {:>7.1} {:<4} {:>+8.2} %\n",
