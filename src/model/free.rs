@@ -26,6 +26,10 @@ pub const ENERGY_TAIL: f64 = 1.0e-10;
 pub const AMPLITUDE_TAIL: f64 = 1.0e-6;
 /// Sample spacing, radians of the fastest sampled mode.
 pub const PHASE_PER_SAMPLE: f64 = 0.25;
+/// A candidate peak is polished only if the peak of its local quadratic is within this fraction
+/// of the best value found (the quadratic's error is far below it: the parabola step leaves the
+/// candidate within about 1e-3 of a sample spacing of the peak).
+const QUADRATIC_MARGIN: f64 = 1e-6;
 
 /// Each mode's phasor at one time: `q_k` and `q_k'/w_k`.
 #[derive(Debug, Clone)]
@@ -77,7 +81,7 @@ const fn ratios(offset: f64) -> [f64; 11] {
 
 /// Taylor terms of `sin` and `cos` for rounding-level accuracy up to `|x| = x_max` (the first
 /// neglected term is at most 1.6e-24, at `x_max = 1`), or 0 beyond 1.
-fn series_terms(x_max: f64) -> usize {
+pub(crate) fn series_terms(x_max: f64) -> usize {
     match x_max {
         x if x <= 1e-4 => 2,
         x if x <= 1e-3 => 3,
@@ -91,7 +95,7 @@ fn series_terms(x_max: f64) -> usize {
 
 /// `(sin x, cos x)` by `terms` terms of their Taylor series ([`series_terms`]), or by
 /// `sin_cos` when `terms` is 0.
-fn small_sin_cos(x: f64, terms: usize) -> (f64, f64) {
+pub(crate) fn small_sin_cos(x: f64, terms: usize) -> (f64, f64) {
     if terms == 0 {
         return x.sin_cos();
     }
@@ -237,8 +241,9 @@ impl FreeVibration {
         let whole_m = ((2.0 * half / spacing).ceil() as usize).max(2);
         let whole_dt = 2.0 * half / whole_m as f64;
         let (mut back, mut whole_step) = (None, None);
-        // (time, value, sample spacing, phasors) of each sampled peak after the parabola step
-        let mut candidates: Vec<(f64, f64, f64, Phasors)> = Vec::new();
+        // (time, value, sample spacing, the peak of the local quadratic, phasors) of each
+        // sampled peak after the parabola step
+        let mut candidates: Vec<(f64, f64, f64, f64, Phasors)> = Vec::new();
         // one window over [t0, t1] when the dominant mode does not bound the peak, else one
         // around each maximum; the buffers are reused from window to window
         let windows = if half.is_infinite() { 1 } else { peaks.len() };
@@ -296,19 +301,38 @@ impl FreeVibration {
                     ph.rotate(&step);
                 }
                 ph.rotate_small(&self.omega[..k], shift * dt);
-                let value = self.pe_of(&ph).max(v[i]);
+                let (pe, d1, d2) = self.derivatives(&ph);
+                let value = pe.max(v[i]);
                 best = best.max(value);
-                candidates.push((lo + (i as f64 + shift) * dt, value, dt, ph));
+                let quadratic = if d2 < 0.0 { pe - 0.5 * d1 * d1 / d2 } else { f64::INFINITY };
+                candidates.push((lo + (i as f64 + shift) * dt, value, dt, quadratic, ph));
             }
         }
         // the parabola step is good to about 1e-3 of the peak; polish the candidates that could
-        // still be the largest by Newton on dPE/dt = 0 (analytic derivatives)
-        for (t, value, dt, ph) in candidates {
-            if value >= best * (1.0 - 1e-2) {
+        // still be the largest by Newton on dPE/dt = 0 (analytic derivatives), the highest local
+        // quadratic first: a candidate whose quadratic peaks below the best found so far (by
+        // more than its error, of the order of the cube of the parabola's miss) cannot hold it
+        candidates.sort_by(|a, b| b.3.total_cmp(&a.3));
+        for (t, value, dt, quadratic, ph) in candidates {
+            if value >= best * (1.0 - 1e-2) && quadratic >= best * (1.0 - QUADRATIC_MARGIN) {
                 best = best.max(self.newton_peak(t, ph, (t - 2.0 * dt).max(t0), (t + 2.0 * dt).min(t1)));
             }
         }
         best
+    }
+
+    /// Bending energy of phasors, J, and its first and second time derivatives.
+    fn derivatives(&self, ph: &Phasors) -> (f64, f64, f64) {
+        let (mut pe, mut d1, mut d2) = (0.0, 0.0, 0.0);
+        for i in 0..ph.q.len() {
+            let w = self.omega[i];
+            let (q, qd) = (ph.q[i], w * ph.p[i]);
+            let w2 = w * w;
+            pe += 0.5 * w2 * q * q;
+            d1 += w2 * q * qd;
+            d2 += w2 * (qd * qd - w2 * q * q);
+        }
+        (pe, d1, d2)
     }
 
     /// The largest bending energy found by Newton steps on `dPE/dt = 0` from `t`, where the
@@ -317,15 +341,7 @@ impl FreeVibration {
         let k = ph.q.len();
         let mut best: f64 = 0.0;
         for _ in 0..4 {
-            let (mut pe, mut d1, mut d2) = (0.0, 0.0, 0.0);
-            for i in 0..k {
-                let w = self.omega[i];
-                let (q, qd) = (ph.q[i], w * ph.p[i]);
-                let w2 = w * w;
-                pe += 0.5 * w2 * q * q;
-                d1 += w2 * q * qd;
-                d2 += w2 * (qd * qd - w2 * q * q);
-            }
+            let (pe, d1, d2) = self.derivatives(&ph);
             best = best.max(pe);
             if d2 >= 0.0 || d1 == 0.0 {
                 break;

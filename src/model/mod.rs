@@ -7,5 +7,6 @@ pub mod beam;
 pub mod contact;
 pub mod coupling;
 pub mod free;
+pub mod rank_one;
 pub mod reduced;
 pub mod tangential;

@@ -71,6 +71,11 @@ impl Follower {
         Follower(setup.map(Setup::start))
     }
 
+    /// Whether there is a tangential contact to follow.
+    pub fn is_active(&self) -> bool {
+        self.0.is_some()
+    }
+
     /// Advance over one piece of the normal force history.
     #[inline]
     pub fn advance(&mut self, piece: impl FnOnce() -> ForcePiece) {
@@ -107,7 +112,8 @@ impl Follower {
         r.spin_out_rpm = omega / RPM;
         r.rebound_angle_deg = v2_t.atan2(r.v2_n).to_degrees();
         r.e_t = if w_in == 0.0 { f64::NAN } else { -t.slip() / w_in };
-        r.slip_fraction = t.slide_time / r.tau_s;
+        // (the pieces' lengths add up to the contact time only to rounding)
+        r.slip_fraction = (t.slide_time / r.tau_s).min(1.0);
         r.f_friction = t.friction_loss / e_in;
         r.f_ball_spin = 0.5 * inertia * omega * omega / e_in;
         r.f_racket_inplane = inplane / e_in;

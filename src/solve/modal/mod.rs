@@ -7,79 +7,79 @@
 //! ones; `g` its amplitude at the load point, `-1/sqrt(m_b)` for the ball), and the total
 //! compression is `Y_T = -sum g q - R F`.
 //!
-//! Over each step of length `h` the contact force is the cubic Hermite polynomial through its
-//! values and rates at both ends, `F0, D0` (known) and `F1, D1` (unknown), and every coordinate
-//! is advanced *exactly* under it:
+//! Until maximum compression the contact is a linear spring (Eq 9), so the compression phase is
+//! solved in closed form: the coupled modes of ball, strings and frame are found once per
+//! prepared model (a rank-one secular equation, [`crate::model::rank_one`]) and the run finds the
+//! time of maximum compression and every coordinate there (`compression`). No step is taken
+//! before it, so no error is made there, and the steps start where the force's rate is zero on
+//! both sides and the expansion law (Eq 10) takes over.
+//!
+//! From there, over each step of length `h` the contact force is the cubic Hermite polynomial
+//! through its values and rates at both ends, `F0, D0` (known) and `F1, D1` (unknown), and every
+//! coordinate is advanced *exactly* under it:
 //! ```text
 //! q(h) = cos(w h) q0 + sin(w h)/w v0 + g (a_F0 F0 + a_D0 D0 + a_F1 F1 + a_D1 D1)
 //! ```
 //! (and the same for `v(h)`), with the eight response coefficients of each mode computed once per
 //! step length (`responses`: a power series for `w h <= 1`, the polynomial particular solution
 //! otherwise). `Y_T(h)` and `Y_T'(h)` are then affine in `(F1, D1)`, so the implicit step is the
-//! contact law at the end of the step, `F1 = F(Y_T)` and `D1 = F'(Y_T) Y_T'`: a constant 2 x 2
-//! linear solve in compression (Eq 9) and, in expansion (Eq 10), Newton on the expansion law with
-//! the rate updated from each iterate (its coupling is of order `(w h)^4`).
-//! The force is continuous with a continuous rate through maximum compression (both sides have
-//! `F' = 0` there), so one polynomial per step keeps the scheme fourth order; the step is set by
-//! the stiffest contact oscillation, not by the stiffest beam mode. Two places need shorter
-//! steps: the step holding maximum compression (the second rate of the force jumps there) and,
-//! on soft strings, the end of the contact, where the expansion law bends sharply. Every step
-//! that ends in expansion is therefore checked: where the cubic misses the contact law at the
-//! step's midpoint (and at its quarter points where the force falls below a quarter of its start
-//! or the ball leaves) by more than the tolerance (as an impulse error), it is taken again as two
-//! half steps, down to 1/64 of the base step. A step at that finest level is accepted as it is,
-//! so the tolerance is a target, not a bound; the agreement tests measure what it achieves.
+//! contact law at the end of the step, `F1 = F(Y_T)` and `D1 = F'(Y_T) Y_T'`: Newton on the
+//! expansion law with the rate updated from each iterate (its coupling is of order `(w h)^4`).
+//! One polynomial per step keeps the scheme fourth order; the step is set by the stiffest contact
+//! oscillation, not by the stiffest beam mode. On soft strings the end of the contact needs
+//! shorter steps, where the expansion law bends sharply, so every step is checked: where the
+//! cubic misses the contact law at the step's midpoint (and at its quarter points where the
+//! force falls below a quarter of its start or the ball leaves) by more than the tolerance (as an
+//! impulse error), it is taken again at half the length, down to 1/64 of the starting step; a
+//! step that misses by less than a sixty-fourth of the tolerance lets the next one be twice as
+//! long again (never longer than the starting step). A step at the finest level is accepted as
+//! it is, so the tolerance is a target, not a bound; the agreement tests measure what it achieves.
 //!
 //! Only modes below a cut-off are kept; the flexibility of the others at the load point is added
-//! as a static correction `Y_T -= R F`. Phase switch and separation are interpolated as in
-//! [`crate::solve::fd`]; after separation the free vibration is evaluated in closed form for the
-//! paper's peak bending PE and for re-contact.
+//! as a static correction `Y_T -= R F`. Separation is interpolated as in [`crate::solve::fd`];
+//! after separation the free vibration is evaluated in closed form for the paper's peak bending
+//! PE and for re-contact.
 //!
 //! The contact law's end-of-step solve is the law's own ([`ImplicitLaw`](crate::model::contact::ImplicitLaw)); the coordinates'
 //! amplitudes at the contact point come from the same coupling as the explicit solver's
 //! ([`crate::model::coupling::Coupling`]). Files: this one prepares the model and reports the
-//! result, `steps` builds the step tables, `run` takes the steps.
+//! result, `compression` solves the compression phase, `steps` builds the step tables, `run`
+//! takes the steps.
 //!
 //! Where the time goes (callgrind instruction counts, repeatable on a loaded machine; the Fig 4
-//! impact at N 39 on a prepared model, 14 coordinates, 41 base steps of which 7 split, 50
-//! predictions and 45 accepted steps; about 152,000 instructions an impact, some 20 us):
+//! impact at N 39 on a prepared model, 14 coordinates, 26 steps from maximum compression of
+//! which 8 at refined levels; about 124,000 instructions an impact, against 152,000 when the
+//! compression phase was stepped too):
 //! ```text
-//! stepping the contact                 ~100k  (65 %)
-//!   predict: 14 coordinates + Y_T sums   33k   (the exact propagation: two 4-term sums a coordinate)
-//!   correct: end force + modal energy    22k   (the energy ledger needs the energy every step)
-//!   expansion law, Newton + powers       11k
-//!   step check (midpoint powf, cubics)   14k   (6k of it the powf of the inverted law)
-//!   ledger, bookkeeping, splitting       20k
-//! peak bending PE after separation      39k  (25 %: windowed sampling, Newton polish, sin_cos)
-//! re-contact check                      12k  ( 8 %)
-//! allocation (about 25 per impact)     ~10k  (spread over the above, mostly the two after separation)
+//! compression phase in closed form      10k  (bracket by rotated phasors, Newton, the state)
+//! stepping from maximum compression     61k
+//!   predict: 14 coordinates + Y_T sums   16k
+//!   correct: end force + modal energy    10k
+//!   expansion law, Newton + powers       10k
+//!   step check, ledger, bookkeeping      25k
+//! peak bending PE after separation      30k  (windowed sampling, Newton polish of the best)
+//! re-contact check                      10k
+//! allocation                            ~6k
 //! ```
-//! Result assembly is below 1 %. The same impact at 30 deg with 2000 rpm adds the tangential
-//! law, about 45k more (it was 57k with a `sin_cos` per grip sample; the samples now rotate the
-//! spring's phasor and a grip piece whose friction limit stays above the spring's amplitude is
-//! not sampled). In a sweep every point prepares its own model, about 90k more an impact, a
-//! third of it the step tables of the base and refined levels (a `sin_cos` and a response
-//! series per coordinate and level); writing the CSV row costs about 3k (1.5 %). The floor of this design is the step
-//! count: 50 predictions and 45 corrections of 14 coordinates are already about 25k flops before the
-//! contact solve; reaching 2 us needs fewer steps (a higher-order force history between the
-//! two located events, which the design note below found no faster as built) and a peak-PE
-//! search bounded from the modal energies, not a cheaper inner loop.
 //!
 //! Design note: a quintic force history (carrying `F''` too, 6th order) was tried. Its steps can
 //! be twice as long for the same accuracy, but each costs about 1.5 times as much, its set-up
-//! twice as much, and the two places above still need split steps, so it was no faster.
+//! twice as much, and the end of the contact still needs split steps, so it was no faster.
 
+mod compression;
 mod run;
 mod steps;
 
 use crate::error::{Error, Result};
 use crate::model::contact::{ContactLaw, Cross, Phase};
 use crate::model::free::FreeVibration;
+use crate::model::tangential::ForcePiece;
 use crate::params::Params;
 use crate::solve::fd::Model;
 use crate::solve::oblique::Follower;
 use crate::solve::outcome::ImpactResult;
 use crate::solve::Solver;
+use compression::Compression;
 use run::{End, Run};
 use steps::Grid;
 
@@ -100,9 +100,10 @@ pub struct Resolution {
 pub const DEFAULT_RESOLUTION: Resolution =
     Resolution { mode_cutoff: 50.0, phase_per_step: 0.1, impulse_tolerance: 1e-7 };
 
-/// Levels of step refinement below the base step, and the ratio between levels.
-const LEVELS: usize = 7;
-const REFINE: usize = 2;
+/// Step levels, each half the step of the one before: the coarsest is `4` times the step the
+/// resolution names (`START`, where the steps begin), the finest `1/64` of it.
+const LEVELS: usize = 9;
+const START: usize = 2;
 
 /// Number of rigid coordinates ahead of the flexible modes: ball, translation, rotation, twist.
 const RIGID: usize = 4;
@@ -121,8 +122,10 @@ pub struct ModalModel {
     residual: f64,
     /// Largest impulse error allowed per step, N s.
     impulse_tolerance: f64,
-    /// Step tables: the base step, then each level `REFINE` times shorter (built when needed).
+    /// Step tables of each level (built when first needed).
     grids: [std::sync::OnceLock<Grid>; LEVELS],
+    /// The compression phase in closed form.
+    compression: Compression,
 }
 
 impl ModalModel {
@@ -162,16 +165,27 @@ impl ModalModel {
         }
         let omega: Vec<f64> = lam.iter().map(|l| l.sqrt()).collect();
         let impulse_tolerance = res.impulse_tolerance * mb * base.params.impact.v1;
-        let m = ModalModel { base, law, lam, omega, g, residual, impulse_tolerance, grids: Default::default() };
+        let compression = Compression::new(&lam, &g, law.compression_stiffness(), residual, mb);
+        let m = ModalModel {
+            base,
+            law,
+            lam,
+            omega,
+            g,
+            residual,
+            impulse_tolerance,
+            grids: Default::default(),
+            compression,
+        };
         let grid = Grid::new(&m, h);
-        let _ = m.grids[0].set(grid);
+        let _ = m.grids[START].set(grid);
         Ok(m)
     }
 
     /// The step tables of a refinement level.
     fn grid(&self, level: usize) -> &Grid {
         self.grids[level].get_or_init(|| {
-            let h = self.grids[0].get().expect("base grid").h / (REFINE as f64).powi(level as i32);
+            let h = self.grids[START].get().expect("start grid").h * 2f64.powi(START as i32 - level as i32);
             Grid::new(self, h)
         })
     }
@@ -181,45 +195,54 @@ impl ModalModel {
         self.lam.len() - RIGID
     }
 
-    /// The base step, s.
+    /// The step at maximum compression, where the steps begin, s.
     pub fn step(&self) -> f64 {
-        self.grid(0).h
+        self.grid(START).h
     }
 
-    /// Run the impact.
+    /// Run the impact: the compression phase in closed form, then steps from maximum
+    /// compression to separation.
     pub fn run(&self) -> Result<ImpactResult> {
         let p = &self.base.params;
-        let (mb, v1) = (p.ball.mass, p.impact.v1);
+        let v1 = p.impact.v1;
         let n = self.lam.len();
-        let ks = self.law.compression_stiffness();
+        let limit = self.base.time_limit_s;
         let mut s = State { q: vec![0.0; n], v: vec![0.0; n] };
-        s.v[0] = mb.sqrt() * v1;
-        // F = ks Y_T with Y_T' = v1 - R F' at first touch
-        let d0 = ks * v1 / (1.0 + ks * self.residual);
+        let mut tangential = Follower::new(self.base.oblique.as_ref());
+        let max = if tangential.is_active() {
+            let mut feed = |h: f64, a: (f64, f64), b: (f64, f64)| {
+                tangential.advance(|| ForcePiece::hermite(h, a, b));
+            };
+            self.compression.at_max(v1, limit, &mut s, Some((self.step(), &mut feed)))
+        } else {
+            self.compression.at_max(v1, limit, &mut s, None)
+        };
+        let max = max.ok_or(Error::ImpactDidNotEnd { limit_s: limit })?;
+        let y0 = self.law.ball_compression_at_max(max.yt);
+        let at_max =
+            End { f: max.f, d: 0.0, yt: max.yt, ytd: 0.0, phase: Phase::Expansion { y0 }, u: (1.0, 1.0), t_max: max.t };
         let mut run = Run {
             m: self,
             next: s.clone(),
             s,
-            at: End { f: 0.0, d: d0, yt: 0.0, ytd: d0 / ks, phase: Phase::Compression, u: (0.0, 0.0), t_max: 0.0 },
-            t: 0.0,
-            peak_force: 0.0,
+            at: at_max,
+            t: max.t,
+            peak_force: max.f,
             energy_err: 0.0,
             momentum_err: 0.0,
             separated: None,
-            tangential: Follower::new(self.base.oblique.as_ref()),
+            tangential,
+            level: START,
         };
-        let limit = self.base.time_limit_s;
+        let modal_energy = self.energy(&run.s);
+        run.ledger(&at_max, modal_energy);
         while run.separated.is_none() {
             if run.t > limit {
                 return Err(Error::ImpactDidNotEnd { limit_s: limit });
             }
-            run.advance(0)?;
+            run.advance()?;
         }
         let (tau, theta) = run.separated.unwrap_or_default();
-        let y0 = match run.at.phase {
-            Phase::Expansion { y0 } => y0,
-            Phase::Compression => 0.0,
-        };
         let mut result = self.finish(
             &run.s,
             run.t - tau,

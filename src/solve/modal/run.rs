@@ -6,9 +6,13 @@
 use crate::error::Result;
 use crate::model::contact::{ContactLaw, ImplicitLaw, Phase};
 use crate::model::tangential::ForcePiece;
-use crate::solve::hermite::{hermite_eval, hermite_max, hermite_root};
+use crate::solve::hermite::{hermite_eval, hermite_root};
 use crate::solve::modal::steps::{sum4, Grid, COS, Q_RESPONSE, SIN_W, V_RESPONSE, W_SIN};
-use crate::solve::modal::{ModalModel, State, LEVELS, REFINE};
+use crate::solve::modal::{ModalModel, State, LEVELS, START};
+
+/// A step that misses the law by less than this fraction of the tolerance lets the next be twice
+/// as long.
+const GROW: f64 = 1.0 / 64.0;
 use crate::solve::oblique::Follower;
 
 /// The contact at the end of a step.
@@ -41,93 +45,69 @@ pub(super) struct Run<'a> {
     pub separated: Option<(f64, f64)>,
     /// The tangential contact of an oblique or spinning ball.
     pub tangential: Follower,
+    /// The step level of the next step.
+    pub level: usize,
 }
 
 impl Run<'_> {
-    /// Take one step of the given level, or, if its force history misses the contact law by
-    /// more than the tolerance, `REFINE` steps of the next level.
-    pub fn advance(&mut self, level: usize) -> Result<()> {
+    /// Take one step: at the current level, or, where its force history misses the contact law
+    /// by more than the tolerance, at the finest level needed (down to the finest, which is
+    /// accepted as it is). A step that misses by less than a sixty-fourth of the tolerance lets
+    /// the next one be twice as long (the miss of a cubic history grows as the fifth power of
+    /// the step).
+    pub fn advance(&mut self) -> Result<()> {
         let m = self.m;
-        let grid = m.grid(level);
-        let a = self.at;
-        let pred = m.predict(grid, &self.s, a.f, a.d, &mut self.next);
-        let (end, switch) = self.end_of_step(grid, pred)?;
-        if let (Phase::Expansion { y0 }, true) = (end.phase, level + 1 < LEVELS) {
-            if self.miss(grid, &end, switch, y0) * grid.h > m.impulse_tolerance {
-                for _ in 0..REFINE {
-                    self.advance(level + 1)?;
-                    if self.separated.is_some() {
-                        break;
-                    }
-                }
-                return Ok(());
+        loop {
+            let grid = m.grid(self.level);
+            let a = self.at;
+            let pred = m.predict(grid, &self.s, a.f, a.d, &mut self.next);
+            let end = self.end_of_step(grid, pred)?;
+            let miss = self.miss(grid, &end) * grid.h / m.impulse_tolerance;
+            if miss > 1.0 && self.level + 1 < LEVELS {
+                self.level += 1;
+                continue;
             }
+            self.accept(grid, end);
+            if miss < GROW && self.level > START {
+                self.level -= 1;
+            }
+            return Ok(());
         }
-        self.accept(grid, end);
-        Ok(())
     }
 
-    /// The contact at the end of the step from the prediction `(Y_hat, Yd_hat)`, and the
-    /// fraction of the step where maximum compression falls if it falls in this step.
-    fn end_of_step(&self, grid: &Grid, (yh, ydh): (f64, f64)) -> Result<(End, Option<f64>)> {
-        let m = self.m;
-        let h = grid.h;
-        let c = &m.law;
-        let ks = c.compression_stiffness();
+    /// The contact at the end of the step from the prediction `(Y_hat, Yd_hat)` (the steps start
+    /// at maximum compression: every step is in expansion).
+    fn end_of_step(&self, grid: &Grid, (yh, ydh): (f64, f64)) -> Result<End> {
+        let c = &self.m.law;
         let a = self.at;
         let mut end = a;
-        let (mut f1, mut d1) = match a.phase {
-            Phase::Compression => {
-                let [m0, m1] = grid.compression;
-                (m0[0] * yh + m0[1] * ydh, m1[0] * yh + m1[1] * ydh)
-            }
-            Phase::Expansion { y0 } => {
-                let start = c.expansion_start(y0, a.u, a.ytd, h);
-                let e = c.expansion_end(&grid.coupling, y0, (yh, ydh), start, a.d)?.unwrap_or_default();
-                end.u = e.u;
-                (e.f, e.d)
-            }
-        };
-        let mut switch = None;
-        if a.phase == Phase::Compression && d1 <= 0.0 {
-            // maximum compression within this step: Y_T = F/ks on its compression side
-            let (sm, ytm) = hermite_max(a.yt, a.ytd, f1 / ks, d1 / ks, h);
-            end.t_max = self.t + sm * h;
-            let y0 = c.ball_compression_at_max(ytm);
-            end.phase = Phase::Expansion { y0 };
-            let e = c.expansion_end(&grid.coupling, y0, (yh, ydh), (1.0, 1.0), 0.0)?.unwrap_or_default();
-            end.u = e.u;
-            (f1, d1) = (e.f, e.d);
-            switch = Some(sm);
-        }
+        let y0 = a.y0();
+        let start = c.expansion_start(y0, a.u, a.ytd, grid.h);
+        let e = c.expansion_end(&grid.coupling, y0, (yh, ydh), start, a.d)?.unwrap_or_default();
+        end.u = e.u;
         let k = &grid.coupling;
-        end.f = f1;
-        end.d = d1;
-        end.yt = yh - k.bf * f1 - k.bd * d1;
-        end.ytd = ydh - k.cf * f1 - k.cd * d1;
-        Ok((end, switch))
+        end.f = e.f;
+        end.d = e.d;
+        end.yt = yh - k.bf * e.f - k.bd * e.d;
+        end.ytd = ydh - k.cf * e.f - k.cd * e.d;
+        Ok(end)
     }
 
-    /// How far the cubic force history of a step ending in expansion (maximum compression of
-    /// `y0` m) misses the contact law, N: at the midpoint, and at the quarter points too where
-    /// the force falls to a quarter of its start or the ball leaves (there the law nears zero at
-    /// an unknown point, the cubic can dip below zero after it, and the midpoint alone can miss
-    /// that).
-    fn miss(&self, grid: &Grid, end: &End, switch: Option<f64>, y0: f64) -> f64 {
+    /// How far the cubic force history of a step misses the contact law, N: at the midpoint, and
+    /// at the quarter points too where the force falls to a quarter of its start or the ball
+    /// leaves (there the law nears zero at an unknown point, the cubic can dip below zero after
+    /// it, and the midpoint alone can miss that).
+    fn miss(&self, grid: &Grid, end: &End) -> f64 {
         let (a, h) = (&self.at, grid.h);
         let c = &self.m.law;
-        let ks = c.compression_stiffness();
+        let y0 = a.y0();
         let f1 = end.f;
         let points: &[f64] = if f1 < 0.25 * a.f { &[0.25, 0.5, 0.75] } else { &[0.5] };
         let mut miss: f64 = 0.0;
         for &s in points {
             let ym = hermite_eval(a.yt, a.ytd, end.yt, end.ytd, h, s);
             let cubic = hermite_eval(a.f, a.d, f1, end.d, h, s);
-            let at = match switch {
-                Some(sm) if sm > s => cubic - ks * ym,
-                _ => c.expansion_miss(y0, ym, cubic),
-            };
-            miss = miss.max(at.abs());
+            miss = miss.max(c.expansion_miss(y0, ym, cubic).abs());
         }
         miss
     }
@@ -135,32 +115,51 @@ impl Run<'_> {
     /// Take the step to `end`: the coordinates, the time, the ledger and the separation.
     fn accept(&mut self, grid: &Grid, end: End) {
         let m = self.m;
-        let (h, c, a) = (grid.h, &m.law, self.at);
+        let (h, a) = (grid.h, self.at);
         let (f1, d1) = (end.f, end.d);
         let modal_energy = m.correct(grid, &mut self.next, f1, d1);
         std::mem::swap(&mut self.s, &mut self.next);
         self.t += h;
         self.peak_force = self.peak_force.max(f1);
-        let p = &m.base.params;
-        let (mb, v1) = (p.ball.mass, p.impact.v1);
-        let e0 = 0.5 * mb * v1 * v1;
-        let st = c.state_at_force(end.phase, f1, end.u);
-        let e =
-            modal_energy + c.ball_energy_with_loss(end.phase, &st) + c.string_energy(&st) + 0.5 * m.residual * f1 * f1;
-        self.energy_err = self.energy_err.max((e - e0).abs() / e0);
-        let pm = mb.sqrt() * self.s.v[0] + self.s.v[1] / m.g[1];
-        self.momentum_err = self.momentum_err.max((pm - mb * v1).abs() / (mb * v1));
-        if matches!(end.phase, Phase::Expansion { .. }) && f1 <= 0.0 {
+        self.ledger(&end, modal_energy);
+        if f1 <= 0.0 {
             let sc = hermite_root(a.yt, a.ytd, end.yt, end.ytd, h);
             // twist angle at the crossing (`next` now holds the state before the step)
-            let theta =
-                hermite_eval(self.next.q[3], self.next.v[3], self.s.q[3], self.s.v[3], h, sc) / p.racket.ix.sqrt();
+            let ix = m.base.params.racket.ix;
+            let theta = hermite_eval(self.next.q[3], self.next.v[3], self.s.q[3], self.s.v[3], h, sc) / ix.sqrt();
             self.separated = Some((self.t - h + sc * h, theta));
             self.tangential.advance(|| ForcePiece { h: sc * h, ..ForcePiece::hermite(h, (a.f, a.d), (f1, d1)) });
         } else {
             self.tangential.advance(|| ForcePiece::hermite(h, (a.f, a.d), (f1, d1)));
         }
         self.at = end;
+    }
+
+    /// The largest energy and momentum errors so far, with the state `s` at `end` (whose
+    /// coordinates carry `modal_energy`).
+    pub fn ledger(&mut self, end: &End, modal_energy: f64) {
+        let (m, c) = (self.m, &self.m.law);
+        let p = &m.base.params;
+        let (mb, v1) = (p.ball.mass, p.impact.v1);
+        let e0 = 0.5 * mb * v1 * v1;
+        let st = c.state_at_force(end.phase, end.f, end.u);
+        let e = modal_energy
+            + c.ball_energy_with_loss(end.phase, &st)
+            + c.string_energy(&st)
+            + 0.5 * m.residual * end.f * end.f;
+        self.energy_err = self.energy_err.max((e - e0).abs() / e0);
+        let pm = mb.sqrt() * self.s.v[0] + self.s.v[1] / m.g[1];
+        self.momentum_err = self.momentum_err.max((pm - mb * v1).abs() / (mb * v1));
+    }
+}
+
+impl End {
+    /// The ball's compression at maximum compression, m.
+    fn y0(&self) -> f64 {
+        match self.phase {
+            Phase::Expansion { y0 } => y0,
+            Phase::Compression => unreachable!("the modal steps start at maximum compression"),
+        }
     }
 }
 
@@ -209,9 +208,13 @@ impl ModalModel {
             q[j] += qf[j] * f1 + qd[j] * d1;
             v[j] += vf[j] * f1 + vd[j] * d1;
         }
-        // kinetic plus potential
-        let lam = &self.lam[..n];
-        let e = sum4(n, |j| v[j] * v[j] + lam[j] * q[j] * q[j]);
-        0.5 * e
+        self.energy(out)
+    }
+
+    /// The coordinates' energy, kinetic plus potential, J.
+    pub(super) fn energy(&self, s: &State) -> f64 {
+        let n = self.lam.len();
+        let (q, v, lam) = (&s.q[..n], &s.v[..n], &self.lam[..n]);
+        0.5 * sum4(n, |j| v[j] * v[j] + lam[j] * q[j] * q[j])
     }
 }

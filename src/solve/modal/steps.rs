@@ -2,7 +2,7 @@
 //! coordinate under a cubic Hermite force history (free part and the responses to the end
 //! values and rates of the force), and how the end force and rate move the end compression.
 
-use crate::model::contact::{ContactLaw, StepCoupling};
+use crate::model::contact::StepCoupling;
 use crate::solve::modal::ModalModel;
 
 /// The exact step of every coordinate under the cubic force history, one column per
@@ -37,8 +37,6 @@ pub(super) struct Grid {
     pub steps: Steps,
     /// How the end force and rate move the end compression (static correction included).
     pub coupling: StepCoupling,
-    /// Compression: `(F1, D1) = M (Y_hat, Yd_hat)`.
-    pub compression: [[f64; 2]; 2],
 }
 
 impl Grid {
@@ -62,12 +60,7 @@ impl Grid {
         let bd = dot(&m.g, st.col(Q_RESPONSE + 3));
         let cf = dot(&m.g, st.col(V_RESPONSE + 2));
         let cd = dot(&m.g, st.col(V_RESPONSE + 3)) + m.residual;
-        // F1 = ks (Y_hat - bf F1 - bd D1), D1 = ks (Yd_hat - cf F1 - cd D1)
-        let ks = m.law.compression_stiffness();
-        let (a11, a12, a21, a22) = (1.0 + ks * bf, ks * bd, ks * cf, 1.0 + ks * cd);
-        let det = a11 * a22 - a12 * a21;
-        let compression = [[ks * a22 / det, -ks * a12 / det], [-ks * a21 / det, ks * a11 / det]];
-        Grid { h, steps: st, coupling: StepCoupling { bf, bd, cf, cd }, compression }
+        Grid { h, steps: st, coupling: StepCoupling { bf, bd, cf, cd } }
     }
 }
 

@@ -1,0 +1,220 @@
+//! The compression phase in closed form.
+//!
+//! Until maximum compression the paper's contact is a linear spring (Eq 9: `F = k Y_T`, `k` the
+//! ball and strings in series), and with the static correction of the truncated modes
+//! (`Y_T = -g.q - R F`) the force is `F = -kappa g.q`, `kappa = k / (1 + k R)`. Every coordinate
+//! then obeys `q'' + (Lambda + kappa g g^T) q = 0`: a linear system whose modes, the *coupled*
+//! modes of ball, strings and frame, are found once per prepared model (the eigenpairs of
+//! `Lambda + kappa g g^T` that the spring couples, [`crate::model::rank_one`]; the part of the
+//! ball's arrival they do not carry is a rigid motion the spring does not feel). The ball arrives with the
+//! frame at rest, so each coupled mode `k` moves as `c_k v1 sin(s_k t) / s_k` (or `c_k v1 t` for
+//! a rigid motion of frequency 0) and the compression rate is
+//! `Y_T'(t) = v1 sum_k a_k cos(s_k t)`.
+//!
+//! The run finds the first zero of `Y_T'` (the time of maximum compression): samples a few
+//! tenths of a radian of the fastest mode that moves the contact apart (each coupled mode's
+//! phasor rotated, no trigonometric call per sample), then Newton's method inside the bracket;
+//! and evaluates every coordinate and rate there exactly. No step of the compression phase is
+//! taken, so no error is made in it: the stepping starts at maximum compression, where the
+//! force's rate is zero on both sides and the expansion law takes over.
+
+use crate::model::free::{series_terms, small_sin_cos};
+use crate::model::rank_one::coupled_modes;
+use crate::solve::modal::State;
+
+/// Coupled modes whose share of the compression rate is below this fraction of the total are
+/// not resolved by the sampling (they are in every evaluation; they only cannot add a zero of
+/// the rate between samples, being far too small to turn it).
+const RATE_TAIL: f64 = 1e-3;
+/// Sample spacing, radians of the fastest resolved coupled mode, and at most of the dominant one.
+const PHASE_PER_SAMPLE: f64 = 0.5;
+const DOMINANT_PHASE_PER_SAMPLE: f64 = 0.25;
+
+/// The coupled modes of the compression phase, per unit incident speed.
+#[derive(Debug, Clone)]
+pub(super) struct Compression {
+    /// Coordinates.
+    n: usize,
+    /// Frequencies of the coupled modes, rad/s (0 for a rigid motion).
+    sigma: Vec<f64>,
+    /// Mode shapes (orthonormal), mode `k` at `z[k n..(k + 1) n]`.
+    z: Vec<f64>,
+    /// Each mode's velocity amplitude per unit incident speed.
+    c: Vec<f64>,
+    /// Each mode's share of the compression rate per unit incident speed (`sum a_k = Y_T'(0)`).
+    a: Vec<f64>,
+    /// Contact stiffness in compression, N/m (`F = k Y_T`).
+    k: f64,
+    /// The sample spacing, s, and each mode's rotation over it.
+    spacing: f64,
+    rotation: Vec<(f64, f64)>,
+}
+
+/// Where the force history goes, piece by piece: `(h, (F0, F0'), (F1, F1'))`.
+pub(super) type ForceSink<'a> = &'a mut dyn FnMut(f64, (f64, f64), (f64, f64));
+
+/// The state at maximum compression (per the incident speed given to [`Compression::at_max`]).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct AtMax {
+    /// Time from first touch, s.
+    pub t: f64,
+    /// Total compression `Y_T`, m, and the contact force, N.
+    pub yt: f64,
+    pub f: f64,
+}
+
+impl Compression {
+    /// The coupled modes of coordinates with `w^2 = lam`, load-point amplitudes `g`, the ball
+    /// first (`g[0] = -1/sqrt(m_b)`), a contact of stiffness `k` in compression and the truncated
+    /// modes' static flexibility `residual` in series.
+    pub fn new(lam: &[f64], g: &[f64], k: f64, residual: f64, ball_mass: f64) -> Self {
+        let n = lam.len();
+        let kappa = k / (1.0 + k * residual);
+        let (mut sigma, mut z, mut c, mut a) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        // the ball arrives with unit speed: `v(0) = sqrt(m_b) e_0`; what the coupled modes do not
+        // carry of it is a rigid motion the spring does not feel
+        let mut rest = vec![0.0; n];
+        rest[0] = ball_mass.sqrt();
+        for mode in coupled_modes(lam, g, kappa) {
+            let shape = &mode.shape;
+            let ck = shape[0] * ball_mass.sqrt();
+            let gz: f64 = shape.iter().zip(g).map(|(z, g)| z * g).sum();
+            sigma.push(mode.mu.max(0.0).sqrt());
+            z.extend(shape);
+            c.push(ck);
+            a.push(-gz * ck / (1.0 + k * residual));
+            for (r, s) in rest.iter_mut().zip(shape) {
+                *r -= ck * s;
+            }
+        }
+        let free = rest.iter().map(|r| r * r).sum::<f64>().sqrt();
+        if free > 0.0 {
+            sigma.push(0.0);
+            z.extend(rest.iter().map(|r| r / free));
+            c.push(free);
+            a.push(0.0);
+        }
+        let n_modes = sigma.len();
+        let total: f64 = a.iter().map(|a| a.abs()).sum();
+        let dominant = (0..n_modes).max_by(|&i, &j| a[i].abs().total_cmp(&a[j].abs())).unwrap_or(0);
+        let fastest = (0..n_modes).filter(|&i| a[i].abs() >= RATE_TAIL * total).map(|i| sigma[i]).fold(0.0, f64::max);
+        let spacing = (PHASE_PER_SAMPLE / fastest).min(DOMINANT_PHASE_PER_SAMPLE / sigma[dominant]);
+        let rotation = sigma.iter().map(|s| (s * spacing).sin_cos()).collect();
+        Compression { n, sigma, z, c, a, k, spacing, rotation }
+    }
+
+    /// `(Y_T', Y_T'')` per unit incident speed from each mode's phasor `(sin, cos)(s_k t)`.
+    fn rate(&self, phasors: &[(f64, f64)]) -> (f64, f64) {
+        let (mut d1, mut d2) = (0.0, 0.0);
+        for ((a, s), &(sn, cs)) in self.a.iter().zip(&self.sigma).zip(phasors) {
+            d1 += a * cs;
+            d2 -= a * s * sn;
+        }
+        (d1, d2)
+    }
+
+    /// Advance every mode's phasor by `dt` (short rotations by their Taylor series, long ones
+    /// by `sin_cos`).
+    fn rotate(&self, phasors: &mut [(f64, f64)], dt: f64) {
+        for (p, s) in phasors.iter_mut().zip(&self.sigma) {
+            let x = s * dt;
+            let (sn, cs) = small_sin_cos(x, series_terms(x.abs()));
+            *p = (p.0 * cs + p.1 * sn, p.1 * cs - p.0 * sn);
+        }
+    }
+
+    /// The first maximum of the compression within `limit` seconds, and the state there for an
+    /// incident speed `v1` into `state`; `None` if the compression still grows at `limit`.
+    /// `piece(t0, (F0, F0'), t1, (F1, F1'))` is handed the force history, sample by sample, when
+    /// `pieces` is set (the tangential law follows it).
+    pub fn at_max(&self, v1: f64, limit: f64, state: &mut State, pieces: Option<(f64, ForceSink)>) -> Option<AtMax> {
+        let m = self.sigma.len();
+        let mut ph = vec![(0.0, 1.0); m];
+        // bracket: the first sample where the rate is no longer positive
+        let mut lo = 0.0;
+        let mut d_lo = self.rate(&ph).0;
+        let d_hi = loop {
+            if lo > limit {
+                return None;
+            }
+            for (p, &(s, c)) in ph.iter_mut().zip(&self.rotation) {
+                *p = (p.0 * c + p.1 * s, p.1 * c - p.0 * s);
+            }
+            let d = self.rate(&ph).0;
+            if d <= 0.0 {
+                break d;
+            }
+            (lo, d_lo) = (lo + self.spacing, d);
+        };
+        let mut hi = lo + self.spacing;
+        // Newton inside [lo, hi] from the secant estimate (bisection where it would leave), the
+        // phasors carried along by short rotations
+        let mut t = hi;
+        let mut next = lo + self.spacing * d_lo / (d_lo - d_hi);
+        for _ in 0..60 {
+            self.rotate(&mut ph, next - t);
+            t = next;
+            let (d1, d2) = self.rate(&ph);
+            if d1 > 0.0 {
+                lo = t;
+            } else {
+                hi = t;
+            }
+            let step = if d2 < 0.0 { -d1 / d2 } else { f64::NAN };
+            if step.abs() <= 1e-13 * t {
+                break;
+            }
+            next = if t + step >= lo && t + step <= hi { t + step } else { 0.5 * (lo + hi) };
+        }
+        if let Some((h, piece)) = pieces {
+            self.pieces(v1, t, h, piece);
+        }
+        self.state_at(v1, t, &ph, state);
+        let yt = v1 * self.displacement(t, &ph);
+        Some(AtMax { t, yt, f: self.k * yt })
+    }
+
+    /// `Y_T` per unit incident speed from the phasors at time `t`.
+    fn displacement(&self, t: f64, phasors: &[(f64, f64)]) -> f64 {
+        self.a.iter().zip(&self.sigma).zip(phasors).map(|((a, s), p)| if *s > 0.0 { a * p.0 / s } else { a * t }).sum()
+    }
+
+    /// The coordinates and rates at time `t` (phasors given) for an incident speed `v1`.
+    fn state_at(&self, v1: f64, t: f64, phasors: &[(f64, f64)], state: &mut State) {
+        let n = self.n;
+        state.q[..n].fill(0.0);
+        state.v[..n].fill(0.0);
+        for (k, ((c, s), p)) in self.c.iter().zip(&self.sigma).zip(phasors).enumerate() {
+            let amp_q = v1 * c * if *s > 0.0 { p.0 / s } else { t };
+            let amp_v = v1 * c * p.1;
+            let shape = &self.z[k * n..(k + 1) * n];
+            for ((q, v), z) in state.q[..n].iter_mut().zip(&mut state.v[..n]).zip(shape) {
+                *q += z * amp_q;
+                *v += z * amp_v;
+            }
+        }
+    }
+
+    /// The force history from first touch to `t_max` as pieces of at most `h` seconds.
+    fn pieces(&self, v1: f64, t_max: f64, h: f64, piece: ForceSink) {
+        let count = (t_max / h).ceil().max(1.0) as usize;
+        let dt = t_max / count as f64;
+        let m = self.sigma.len();
+        let rot: Vec<(f64, f64)> = self.sigma.iter().map(|s| (s * dt).sin_cos()).collect();
+        let mut ph = vec![(0.0, 1.0); m];
+        let force = |t: f64, ph: &[(f64, f64)]| {
+            let k = self.k * v1;
+            (k * self.displacement(t, ph), k * self.rate(ph).0)
+        };
+        let mut before = force(0.0, &ph);
+        for i in 0..count {
+            for (p, &(s, c)) in ph.iter_mut().zip(&rot) {
+                *p = (p.0 * c + p.1 * s, p.1 * c - p.0 * s);
+            }
+            let t1 = (i + 1) as f64 * dt;
+            let after = force(t1, &ph);
+            piece(dt, before, after);
+            before = after;
+        }
+    }
+}
