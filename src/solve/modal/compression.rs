@@ -20,6 +20,7 @@
 
 use crate::model::free::{series_terms, small_sin_cos};
 use crate::model::rank_one::coupled_modes;
+use crate::solve::modal::pair::Pair;
 use crate::solve::modal::State;
 
 /// Coupled modes whose share of the compression rate is below this fraction of the total are
@@ -182,15 +183,14 @@ impl Compression {
     /// The coordinates and rates at time `t` (phasors given) for an incident speed `v1`.
     fn state_at(&self, v1: f64, t: f64, phasors: &[(f64, f64)], state: &mut State) {
         let n = self.n;
-        state.q[..n].fill(0.0);
-        state.v[..n].fill(0.0);
+        state.x[..n].fill(Pair::splat(0.0));
         for (k, ((c, s), p)) in self.c.iter().zip(&self.sigma).zip(phasors).enumerate() {
             let amp_q = v1 * c * if *s > 0.0 { p.0 / s } else { t };
             let amp_v = v1 * c * p.1;
             let shape = &self.z[k * n..(k + 1) * n];
-            for ((q, v), z) in state.q[..n].iter_mut().zip(&mut state.v[..n]).zip(shape) {
-                *q += z * amp_q;
-                *v += z * amp_v;
+            let amp = Pair::new(amp_q, amp_v);
+            for (x, &z) in state.x[..n].iter_mut().zip(shape) {
+                *x = x.add(Pair::splat(z).mul(amp));
             }
         }
     }

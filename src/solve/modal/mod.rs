@@ -67,6 +67,7 @@
 //! twice as much, and the end of the contact still needs split steps, so it was no faster.
 
 mod compression;
+mod pair;
 mod run;
 mod steps;
 
@@ -80,6 +81,7 @@ use crate::solve::oblique::Follower;
 use crate::solve::outcome::ImpactResult;
 use crate::solve::Solver;
 use compression::Compression;
+use pair::Pair;
 use run::{End, Run};
 use steps::Grid;
 
@@ -207,7 +209,7 @@ impl ModalModel {
         let v1 = p.impact.v1;
         let n = self.lam.len();
         let limit = self.base.time_limit_s;
-        let mut s = State { q: vec![0.0; n], v: vec![0.0; n] };
+        let mut s = State { x: vec![Pair::splat(0.0); n] };
         let mut tangential = Follower::new(self.base.oblique.as_ref());
         let max = if tangential.is_active() {
             let mut feed = |h: f64, a: (f64, f64), b: (f64, f64)| {
@@ -274,10 +276,10 @@ impl ModalModel {
     ) -> Result<ImpactResult> {
         let p = &self.base.params;
         let e0 = 0.5 * p.ball.mass * p.impact.v1 * p.impact.v1;
-        let e_a = -s.v[0] / (p.ball.mass.sqrt() * p.impact.v1);
+        let e_a = -s.v(0) / (p.ball.mass.sqrt() * p.impact.v1);
         // (a fold from +0: an empty sum of f64 is -0)
         let vib = (RIGID..self.lam.len())
-            .map(|k| 0.5 * (s.v[k] * s.v[k] + self.lam[k] * s.q[k] * s.q[k]))
+            .map(|k| 0.5 * (s.v(k) * s.v(k) + self.lam[k] * s.q(k) * s.q(k)))
             .fold(0.0, |a, b| a + b);
         let (peak_pe, recontact) = self.after_impact(s, since_separation);
         let result = ImpactResult {
@@ -288,8 +290,8 @@ impl ModalModel {
             f_vib: vib / e0,
             f_vib_peak_pe: peak_pe / e0,
             f_hand: 0.0,
-            f_spin: 0.5 * s.v[3] * s.v[3] / e0,
-            f_rigid: 0.5 * (s.v[1] * s.v[1] + s.v[2] * s.v[2]) / e0,
+            f_spin: 0.5 * s.v(3) * s.v(3) / e0,
+            f_rigid: 0.5 * (s.v(1) * s.v(1) + s.v(2) * s.v(2)) / e0,
             f_ke_ball: e_a * e_a,
             peak_force_n: peak_force,
             energy_error: energy_err,
@@ -309,21 +311,31 @@ impl ModalModel {
     /// ([`FreeVibration`]). `s` is the state `lag` seconds after separation.
     fn after_impact(&self, s: &State, lag: f64) -> (f64, bool) {
         let flex = RIGID..self.lam.len();
-        let free = FreeVibration::new(&self.omega[flex.clone()], &s.q[flex.clone()], &s.v[flex.clone()], &self.g[flex]);
+        let (q, v): (Vec<f64>, Vec<f64>) = flex.clone().map(|j| (s.q(j), s.v(j))).unzip();
+        let free = FreeVibration::new(&self.omega[flex.clone()], &q, &v, &self.g[flex]);
         let window = 2.0 / self.base.f1_hz;
         let peak = free.peak_pe(-lag, window - lag);
         // the gap Y_T without the flexible modes: the ball and the rigid racket
-        let gap0 = -(0..RIGID).map(|i| self.g[i] * s.q[i]).sum::<f64>();
-        let rate = -(0..RIGID).map(|i| self.g[i] * s.v[i]).sum::<f64>();
+        let gap0 = -(0..RIGID).map(|i| self.g[i] * s.q(i)).sum::<f64>();
+        let rate = -(0..RIGID).map(|i| self.g[i] * s.v(i)).sum::<f64>();
         (peak, free.meets_ball(gap0, rate, window - lag))
     }
 }
 
-/// The coordinates (mass-normalised, rigid first) and their rates.
+/// The coordinates (mass-normalised, rigid first) and their rates, `[q, q']` each.
 #[derive(Debug, Clone)]
 struct State {
-    q: Vec<f64>,
-    v: Vec<f64>,
+    x: Vec<Pair>,
+}
+
+impl State {
+    fn q(&self, j: usize) -> f64 {
+        self.x[j].get()[0]
+    }
+
+    fn v(&self, j: usize) -> f64 {
+        self.x[j].get()[1]
+    }
 }
 
 impl Solver for ModalModel {

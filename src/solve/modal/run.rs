@@ -7,7 +7,8 @@ use crate::error::Result;
 use crate::model::contact::{ContactLaw, ImplicitLaw, Phase};
 use crate::model::tangential::ForcePiece;
 use crate::solve::hermite::{hermite_eval, hermite_root};
-use crate::solve::modal::steps::{sum4, Grid, COS, Q_RESPONSE, SIN_W, V_RESPONSE, W_SIN};
+use crate::solve::modal::pair::Pair;
+use crate::solve::modal::steps::Grid;
 use crate::solve::modal::{ModalModel, State, LEVELS, START};
 
 /// A step that misses the law by less than this fraction of the tolerance lets the next be twice
@@ -126,7 +127,8 @@ impl Run<'_> {
             let sc = hermite_root(a.yt, a.ytd, end.yt, end.ytd, h);
             // twist angle at the crossing (`next` now holds the state before the step)
             let ix = m.base.params.racket.ix;
-            let theta = hermite_eval(self.next.q[3], self.next.v[3], self.s.q[3], self.s.v[3], h, sc) / ix.sqrt();
+            let (before, after) = (self.next.x[3].get(), self.s.x[3].get());
+            let theta = hermite_eval(before[0], before[1], after[0], after[1], h, sc) / ix.sqrt();
             self.separated = Some((self.t - h + sc * h, theta));
             self.tangential.advance(|| ForcePiece { h: sc * h, ..ForcePiece::hermite(h, (a.f, a.d), (f1, d1)) });
         } else {
@@ -148,7 +150,7 @@ impl Run<'_> {
             + c.string_energy(&st)
             + 0.5 * m.residual * end.f * end.f;
         self.energy_err = self.energy_err.max((e - e0).abs() / e0);
-        let pm = mb.sqrt() * self.s.v[0] + self.s.v[1] / m.g[1];
+        let pm = mb.sqrt() * self.s.v(0) + self.s.v(1) / m.g[1];
         self.momentum_err = self.momentum_err.max((pm - mb * v1).abs() / (mb * v1));
     }
 }
@@ -167,54 +169,33 @@ impl ModalModel {
     /// Advance `s` over one step with the end force and rate zero into `out`; returns
     /// `(Y_T, Y_T')` of that prediction.
     pub(super) fn predict(&self, grid: &Grid, s: &State, f0: f64, d0: f64, out: &mut State) -> (f64, f64) {
-        let n = self.lam.len();
-        let st = &grid.steps;
-        let (q0, v0, q1, v1) = (&s.q[..n], &s.v[..n], &mut out.q[..n], &mut out.v[..n]);
-        let (c, sq, vq) = (&st.col(COS)[..n], &st.col(SIN_W)[..n], &st.col(W_SIN)[..n]);
-        let (qf, qd) = (&st.col(Q_RESPONSE)[..n], &st.col(Q_RESPONSE + 1)[..n]);
-        let (vf, vd) = (&st.col(V_RESPONSE)[..n], &st.col(V_RESPONSE + 1)[..n]);
-        let g = &self.g[..n];
-        // `Y_T` and its rate summed as the coordinates are stepped, in the order of `steps::dot`
-        // (four partial sums, then the tail), so the loop reads each coordinate once
-        let (mut yq, mut yv) = ([0.0; 4], [0.0; 4]);
-        let whole = n - n % 4;
-        for j0 in (0..whole).step_by(4) {
-            for i in 0..4 {
-                let j = j0 + i;
-                q1[j] = c[j] * q0[j] + sq[j] * v0[j] + qf[j] * f0 + qd[j] * d0;
-                v1[j] = vq[j] * q0[j] + c[j] * v0[j] + vf[j] * f0 + vd[j] * d0;
-                yq[i] += g[j] * q1[j];
-                yv[i] += g[j] * v1[j];
-            }
+        let (f0, d0) = (Pair::splat(f0), Pair::splat(d0));
+        let mut y = Pair::splat(0.0);
+        for ((c, x0), x1) in grid.coef.iter().zip(&s.x).zip(&mut out.x) {
+            let (q, v) = x0.spread();
+            let next = c.from_q.mul(q).add(c.from_v.mul(v)).add(c.f0.mul(f0).add(c.d0.mul(d0)));
+            *x1 = next;
+            y = y.add(c.g.mul(next));
         }
-        let (mut tq, mut tv) = (-0.0, -0.0);
-        for j in whole..n {
-            q1[j] = c[j] * q0[j] + sq[j] * v0[j] + qf[j] * f0 + qd[j] * d0;
-            v1[j] = vq[j] * q0[j] + c[j] * v0[j] + vf[j] * f0 + vd[j] * d0;
-            tq += g[j] * q1[j];
-            tv += g[j] * v1[j];
-        }
-        (-((yq[0] + yq[2]) + (yq[1] + yq[3]) + tq), -((yv[0] + yv[2]) + (yv[1] + yv[3]) + tv))
+        let [yq, yv] = y.get();
+        (-yq, -yv)
     }
 
     /// Add the end force and rate to a predicted step; returns the coordinates' energy, J.
     pub(super) fn correct(&self, grid: &Grid, out: &mut State, f1: f64, d1: f64) -> f64 {
-        let n = self.lam.len();
-        let st = &grid.steps;
-        let (q, v) = (&mut out.q[..n], &mut out.v[..n]);
-        let (qf, qd) = (&st.col(Q_RESPONSE + 2)[..n], &st.col(Q_RESPONSE + 3)[..n]);
-        let (vf, vd) = (&st.col(V_RESPONSE + 2)[..n], &st.col(V_RESPONSE + 3)[..n]);
-        for j in 0..n {
-            q[j] += qf[j] * f1 + qd[j] * d1;
-            v[j] += vf[j] * f1 + vd[j] * d1;
+        let (f1, d1) = (Pair::splat(f1), Pair::splat(d1));
+        let mut e = Pair::splat(0.0);
+        for (c, x) in grid.coef.iter().zip(&mut out.x) {
+            let next = x.add(c.f1.mul(f1).add(c.d1.mul(d1)));
+            *x = next;
+            e = e.add(c.lam.mul(next.mul(next)));
         }
-        self.energy(out)
+        let [eq, ev] = e.get();
+        0.5 * (eq + ev)
     }
 
     /// The coordinates' energy, kinetic plus potential, J.
     pub(super) fn energy(&self, s: &State) -> f64 {
-        let n = self.lam.len();
-        let (q, v, lam) = (&s.q[..n], &s.v[..n], &self.lam[..n]);
-        0.5 * sum4(n, |j| v[j] * v[j] + lam[j] * q[j] * q[j])
+        0.5 * (0..s.x.len()).map(|j| s.v(j) * s.v(j) + self.lam[j] * s.q(j) * s.q(j)).sum::<f64>()
     }
 }

@@ -3,30 +3,25 @@
 //! values and rates of the force), and how the end force and rate move the end compression.
 
 use crate::model::contact::StepCoupling;
+use crate::solve::modal::pair::Pair;
 use crate::solve::modal::ModalModel;
 
-/// The exact step of every coordinate under the cubic force history, one column per
-/// coefficient in a single buffer (so the loops over coordinates vectorise and a table is one
-/// allocation): free propagation, `cos(w h)`, `sin(w h)/w`, `-w sin(w h)`, then the position and
-/// the velocity responses to `F0, D0, F1, D1` (already multiplied by the coordinate's `g`).
-#[derive(Debug, Clone)]
-pub(super) struct Steps {
-    pub n: usize,
-    data: Vec<f64>,
-}
-
-/// Columns of [`Steps`].
-pub(super) const COS: usize = 0;
-pub(super) const SIN_W: usize = 1;
-pub(super) const W_SIN: usize = 2;
-pub(super) const Q_RESPONSE: usize = 3;
-pub(super) const V_RESPONSE: usize = 7;
-pub(super) const COLUMNS: usize = 11;
-
-impl Steps {
-    pub fn col(&self, k: usize) -> &[f64] {
-        &self.data[k * self.n..(k + 1) * self.n]
-    }
+/// The exact step of one coordinate under the cubic force history, each coefficient a pair
+/// acting on the coordinate's `[q, q']` at once (so that a step is a few two-wide operations a
+/// coordinate, and the table is read front to back): the free propagation
+/// `[q, q'] = q0 [cos(w h), -w sin(w h)] + q0' [sin(w h)/w, cos(w h)]`, the responses to the
+/// force's end values and rates `F0, D0, F1, D1` (already multiplied by the coordinate's `g`), and
+/// the coordinate's `[g, g]` and `[w^2, 1]` (its energy is half `[w^2, 1] . [q, q']^2`).
+#[derive(Debug, Clone, Copy, Default)]
+pub(super) struct Coef {
+    pub from_q: Pair,
+    pub from_v: Pair,
+    pub f0: Pair,
+    pub d0: Pair,
+    pub f1: Pair,
+    pub d1: Pair,
+    pub g: Pair,
+    pub lam: Pair,
 }
 
 /// The step tables of one step length.
@@ -34,33 +29,43 @@ impl Steps {
 pub(super) struct Grid {
     /// Step, s.
     pub h: f64,
-    pub steps: Steps,
+    /// One [`Coef`] a coordinate.
+    pub coef: Vec<Coef>,
     /// How the end force and rate move the end compression (static correction included).
     pub coupling: StepCoupling,
 }
 
 impl Grid {
     pub fn new(m: &ModalModel, h: f64) -> Grid {
-        let n = m.lam.len();
-        let mut data = vec![0.0; COLUMNS * n];
-        for (j, ((&l, &w), &gj)) in m.lam.iter().zip(&m.omega).zip(&m.g).enumerate() {
-            let (s, c) = (w * h).sin_cos();
-            let (rq, rv) = responses(l, h, (s, c));
-            let (hq, hv) = (hermite(rq, h), hermite(rv, h));
-            data[COS * n + j] = c;
-            data[SIN_W * n + j] = if w > 0.0 { s / w } else { h };
-            data[W_SIN * n + j] = -w * s;
-            for i in 0..4 {
-                data[(Q_RESPONSE + i) * n + j] = gj * hq[i];
-                data[(V_RESPONSE + i) * n + j] = gj * hv[i];
-            }
-        }
-        let st = Steps { n, data };
-        let bf = dot(&m.g, st.col(Q_RESPONSE + 2)) + m.residual;
-        let bd = dot(&m.g, st.col(Q_RESPONSE + 3));
-        let cf = dot(&m.g, st.col(V_RESPONSE + 2));
-        let cd = dot(&m.g, st.col(V_RESPONSE + 3)) + m.residual;
-        Grid { h, steps: st, coupling: StepCoupling { bf, bd, cf, cd } }
+        let coef: Vec<Coef> = m
+            .lam
+            .iter()
+            .zip(&m.omega)
+            .zip(&m.g)
+            .map(|((&lam, &w), &g)| {
+                let (s, c) = (w * h).sin_cos();
+                let (rq, rv) = responses(lam, h, (s, c));
+                let (hq, hv) = (hermite(rq, h), hermite(rv, h));
+                let pair = |i: usize| Pair::new(g * hq[i], g * hv[i]);
+                Coef {
+                    from_q: Pair::new(c, -w * s),
+                    from_v: Pair::new(if w > 0.0 { s / w } else { h }, c),
+                    f0: pair(0),
+                    d0: pair(1),
+                    f1: pair(2),
+                    d1: pair(3),
+                    g: Pair::splat(g),
+                    lam: Pair::new(lam, 1.0),
+                }
+            })
+            .collect();
+        let n = coef.len();
+        let g = |j: usize| m.g[j];
+        let bf = sum4(n, |j| g(j) * coef[j].f1.get()[0]) + m.residual;
+        let bd = sum4(n, |j| g(j) * coef[j].d1.get()[0]);
+        let cf = sum4(n, |j| g(j) * coef[j].f1.get()[1]);
+        let cd = sum4(n, |j| g(j) * coef[j].d1.get()[1]) + m.residual;
+        Grid { h, coef, coupling: StepCoupling { bf, bd, cf, cd } }
     }
 }
 
@@ -76,13 +81,6 @@ pub(super) fn sum4(n: usize, f: impl Fn(usize) -> f64) -> f64 {
     }
     let tail: f64 = (whole..n).map(&f).sum();
     (acc[0] + acc[2]) + (acc[1] + acc[3]) + tail
-}
-
-/// `sum a_i b_i` over the shorter slice.
-pub(super) fn dot(a: &[f64], b: &[f64]) -> f64 {
-    let n = a.len().min(b.len());
-    let (a, b) = (&a[..n], &b[..n]);
-    sum4(n, |i| a[i] * b[i])
 }
 
 /// `q(h)` and `q'(h)` of `q'' + lam q = t^m`, `q(0) = q'(0) = 0`, for `m = 0..=3`.
