@@ -41,9 +41,29 @@ pub(crate) fn hermite_max(p0: f64, m0: f64, p1: f64, m1: f64, h: f64) -> (f64, f
     (s, v.max(p0).max(p1))
 }
 
-/// The zero of the Hermite interpolant in a step where the value goes from > 0 to <= 0.
+/// The zero of the Hermite interpolant in a step where the value goes from > 0 to <= 0: Newton's
+/// method kept inside the bracket (bisection where a step would leave it), to rounding level.
 pub(crate) fn hermite_root(p0: f64, m0: f64, p1: f64, m1: f64, h: f64) -> f64 {
-    bisect(|s| hermite_eval(p0, m0, p1, m1, h, s))
+    let f = |s: f64| hermite_eval(p0, m0, p1, m1, h, s);
+    let (mut lo, mut hi) = (0.0, 1.0);
+    // the secant's zero first
+    let mut s = if p0 > p1 { p0 / (p0 - p1) } else { 0.5 };
+    for _ in 0..100 {
+        let v = f(s);
+        if v > 0.0 {
+            lo = s;
+        } else {
+            hi = s;
+        }
+        let slope = hermite_slope(p0, m0, p1, m1, h, s) * h;
+        let newton = s - v / slope;
+        let next = if newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+        if (next - s).abs() <= 2.0 * f64::EPSILON || hi - lo <= 2.0 * f64::EPSILON {
+            return next;
+        }
+        s = next;
+    }
+    0.5 * (lo + hi)
 }
 
 #[cfg(test)]

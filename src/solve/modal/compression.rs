@@ -46,6 +46,8 @@ pub(super) struct Compression {
     a: Vec<f64>,
     /// Contact stiffness in compression, N/m (`F = k Y_T`).
     k: f64,
+    /// Before this time, s, the compression rate cannot reach zero.
+    t_safe: f64,
     /// The sample spacing, s, and each mode's rotation over it.
     spacing: f64,
     rotation: Vec<(f64, f64)>,
@@ -101,7 +103,14 @@ impl Compression {
         let fastest = (0..n_modes).filter(|&i| a[i].abs() >= RATE_TAIL * total).map(|i| sigma[i]).fold(0.0, f64::max);
         let spacing = (PHASE_PER_SAMPLE / fastest).min(DOMINANT_PHASE_PER_SAMPLE / sigma[dominant]);
         let rotation = sigma.iter().map(|s| (s * spacing).sin_cos()).collect();
-        Compression { n, sigma, z, c, a, k, spacing, rotation }
+        let others = total - a[dominant].abs();
+        let t_safe = if a[dominant] > others && sigma[dominant] > 0.0 {
+            // (a little early, against the rounding of acos)
+            0.999 * (others / a[dominant]).acos() / sigma[dominant]
+        } else {
+            0.0
+        };
+        Compression { n, sigma, z, c, a, k, t_safe, spacing, rotation }
     }
 
     /// `(Y_T', Y_T'')` per unit incident speed from each mode's phasor `(sin, cos)(s_k t)`.
@@ -130,9 +139,16 @@ impl Compression {
     /// `pieces` is set (the tangential law follows it).
     pub fn at_max(&self, v1: f64, limit: f64, state: &mut State, pieces: Option<(f64, ForceSink)>) -> Option<AtMax> {
         let m = self.sigma.len();
+        // no zero of the rate before `t_safe`: there the dominant mode's share still exceeds the
+        // sum of all the others' amplitudes (`a_d cos(s_d t) > sum_(k != d) |a_k|`)
+        let mut lo = self.t_safe;
         let mut ph = vec![(0.0, 1.0); m];
+        if lo > 0.0 {
+            for (p, s) in ph.iter_mut().zip(&self.sigma) {
+                *p = (s * lo).sin_cos();
+            }
+        }
         // bracket: the first sample where the rate is no longer positive
-        let mut lo = 0.0;
         let mut d_lo = self.rate(&ph).0;
         let d_hi = loop {
             if lo > limit {
