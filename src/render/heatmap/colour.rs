@@ -37,10 +37,21 @@ const RDBU: [(u8, u8, u8); 11] = [
 fn lerp_table(table: &[(u8, u8, u8); 11], t: f64) -> RGBColor {
     let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
     let f = t * 10.0;
-    let i = (f.floor() as usize).min(9);
+    // (`f >= 0`: truncation is its floor)
+    let i = (f as usize).min(9);
     let w = f - i as f64;
     let (a, b) = (table[i], table[i + 1]);
-    let mix = |u: u8, v: u8| (f64::from(u) + w * (f64::from(v) - f64::from(u))).round().clamp(0.0, 255.0) as u8;
+    // (rounded half away from zero by its whole part and the rest, as `f64::round` does for
+    // these values in [0, 255], without the library call a baseline x86-64 build makes for it)
+    let mix = |u: u8, v: u8| {
+        let x = (f64::from(u) + w * (f64::from(v) - f64::from(u))).clamp(0.0, 255.0);
+        let whole = x as u8;
+        if x - f64::from(whole) >= 0.5 {
+            whole + 1
+        } else {
+            whole
+        }
+    };
     RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
 }
 

@@ -100,33 +100,62 @@ pub fn contour_segments(xs: &[f64], ys: &[f64], z: &[f64], level: f64) -> Vec<Se
 /// point colours the half cell around it, and nothing beyond); `None` outside the grid or where
 /// the nearest corner has no data.
 pub fn sample(xs: &[f64], ys: &[f64], z: &[f64], x: f64, y: f64) -> Option<f64> {
-    let (nx, ny) = (xs.len(), ys.len());
-    if nx < 2 || ny < 2 || z.len() != nx * ny {
-        return None;
+    let row = Row::at(xs, ys, z, y)?;
+    let mut cursor = 0;
+    row.sample(x, &mut cursor)
+}
+
+/// One row of pixels at height `y`: the grid row and the fraction within it, found once, and
+/// then the value at any `x` ([`sample`], pixel by pixel, without a search per pixel).
+pub struct Row<'a> {
+    xs: &'a [f64],
+    z: &'a [f64],
+    ny: usize,
+    j: usize,
+    u: f64,
+}
+
+impl<'a> Row<'a> {
+    /// The row at `y`, or `None` outside the grid (or for a grid of fewer than 2 x 2 points).
+    pub fn at(xs: &'a [f64], ys: &[f64], z: &'a [f64], y: f64) -> Option<Row<'a>> {
+        let (nx, ny) = (xs.len(), ys.len());
+        if nx < 2 || ny < 2 || z.len() != nx * ny || !(y >= ys[0] && y <= ys[ny - 1]) {
+            return None;
+        }
+        let j = ys.partition_point(|&v| v <= y).clamp(1, ny - 1) - 1;
+        let u = (y - ys[j]) / (ys[j + 1] - ys[j]);
+        Some(Row { xs, z, ny, j, u })
     }
-    if !(x >= xs[0] && x <= xs[nx - 1] && y >= ys[0] && y <= ys[ny - 1]) {
-        return None;
+
+    /// The value at `x`; `cursor` carries the count of grid columns at or left of the last `x`
+    /// asked (start it at 0; with `x` ascending from call to call the search is a step or two).
+    pub fn sample(&self, x: f64, cursor: &mut usize) -> Option<f64> {
+        let (xs, z, ny, j, u) = (self.xs, self.z, self.ny, self.j, self.u);
+        let nx = xs.len();
+        if !(x >= xs[0] && x <= xs[nx - 1]) {
+            return None;
+        }
+        // the number of columns at or left of x, as `partition_point(|v| v <= x)` counts it
+        if *cursor > nx || (*cursor > 0 && xs[*cursor - 1] > x) {
+            *cursor = 0;
+        }
+        while *cursor < nx && xs[*cursor] <= x {
+            *cursor += 1;
+        }
+        let i = (*cursor).clamp(1, nx - 1) - 1;
+        let t = (x - xs[i]) / (xs[i + 1] - xs[i]);
+        let c = [z[i * ny + j], z[(i + 1) * ny + j], z[(i + 1) * ny + j + 1], z[i * ny + j + 1]];
+        if c.iter().all(|k| k.is_finite()) {
+            let bottom = c[0] + t * (c[1] - c[0]);
+            let top = c[3] + t * (c[2] - c[3]);
+            return Some(bottom + u * (top - bottom));
+        }
+        let nearest = match (t < 0.5, u < 0.5) {
+            (true, true) => c[0],
+            (false, true) => c[1],
+            (false, false) => c[2],
+            (true, false) => c[3],
+        };
+        nearest.is_finite().then_some(nearest)
     }
-    let i = xs.partition_point(|&v| v <= x).clamp(1, nx - 1) - 1;
-    let j = ys.partition_point(|&v| v <= y).clamp(1, ny - 1) - 1;
-    let t = (x - xs[i]) / (xs[i + 1] - xs[i]);
-    let u = (y - ys[j]) / (ys[j + 1] - ys[j]);
-    let c = [
-        (0.0, 0.0, z[i * ny + j]),
-        (1.0, 0.0, z[(i + 1) * ny + j]),
-        (1.0, 1.0, z[(i + 1) * ny + j + 1]),
-        (0.0, 1.0, z[i * ny + j + 1]),
-    ];
-    if c.iter().all(|k| k.2.is_finite()) {
-        let bottom = c[0].2 + t * (c[1].2 - c[0].2);
-        let top = c[3].2 + t * (c[2].2 - c[3].2);
-        return Some(bottom + u * (top - bottom));
-    }
-    let nearest = match (t < 0.5, u < 0.5) {
-        (true, true) => c[0].2,
-        (false, true) => c[1].2,
-        (false, false) => c[2].2,
-        (true, false) => c[3].2,
-    };
-    nearest.is_finite().then_some(nearest)
 }

@@ -8,7 +8,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::FontStyle;
 
-use super::{color_range, contour_levels, contour_segments, diverging, sample, viridis};
+use super::{color_range, contour_levels, contour_segments, diverging, viridis, Row};
 use super::{ColorScale, HeatMap, CONTOUR_TARGET};
 use crate::render::plot::{self, AXIS_DESC_SIZE, HEIGHT, TICK_SIZE, WIDTH};
 use crate::render::table::fmt_sig;
@@ -211,12 +211,14 @@ fn draw_shading(
     let plot_rect: Rect = (px_range.start, py_range.start, px_range.end, py_range.end);
     for py in py_range.clone() {
         let y = y1 - (f64::from(py - py_range.start) + 0.5) / ph * (y1 - y0);
+        let Some(row) = Row::at(&map.xs, &map.ys, &map.z, y) else { continue };
+        let mut cursor = 0;
         for px in px_range.clone() {
             let x = x0 + (f64::from(px - px_range.start) + 0.5) / pw * (x1 - x0);
             if !map.clip.iter().all(|e| e.contains(x, y)) {
                 continue;
             }
-            if let Some(v) = sample(&map.xs, &map.ys, &map.z, x, y) {
+            if let Some(v) = row.sample(x, &mut cursor) {
                 root.draw_pixel((px, py), &color(v)).map_err(plot::msg)?;
             }
         }

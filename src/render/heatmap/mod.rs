@@ -38,7 +38,7 @@ use plotters::prelude::*;
 use crate::error::{Error, Result};
 use crate::render::plot::{self, HEIGHT, WIDTH};
 pub use colour::{color_range, diverging, viridis, ColorScale};
-pub use contour::{contour_levels, contour_segments, sample, Seg, CONTOUR_TARGET};
+pub use contour::{contour_levels, contour_segments, sample, Row, Seg, CONTOUR_TARGET};
 
 /// An ellipse with its axes along x and y, centred on y = 0, spanning `x0..x1`.
 #[derive(Clone, Copy, Debug, PartialEq)]
