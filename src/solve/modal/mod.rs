@@ -100,7 +100,7 @@ pub struct Resolution {
 
 /// The default resolution: modal and explicit solvers agree to 1e-4 (tests/modal.rs).
 pub const DEFAULT_RESOLUTION: Resolution =
-    Resolution { mode_cutoff: 50.0, phase_per_step: 0.1, impulse_tolerance: 1e-7 };
+    Resolution { mode_cutoff: 50.0, phase_per_step: 0.1, impulse_tolerance: 2e-8 };
 
 /// Step levels, each half the step of the one before: the coarsest is `4` times the step the
 /// resolution names (`START`, where the steps begin), the finest `1/64` of it.
