@@ -18,24 +18,34 @@ const SAME_POLE: f64 = 1e-12;
 /// A coordinate whose share of `g^2` is below this is not coupled.
 const UNCOUPLED: f64 = 1e-28;
 
-/// The coupled modes: frequency squared `mu` and mode shape (unit length, over all coordinates).
+/// The coupled modes: frequencies squared `mu` (ascending) and mode shapes (unit length, over
+/// all `n` coordinates; mode `k` at `shapes[k n..(k + 1) n]`).
 #[derive(Debug, Clone, PartialEq)]
-pub struct CoupledMode {
-    pub mu: f64,
-    pub shape: Vec<f64>,
+pub struct CoupledModes {
+    pub mu: Vec<f64>,
+    pub shapes: Vec<f64>,
 }
 
-/// A pole of the secular equation: `lam`, the summed weight `g^2`, and its coordinates.
+impl CoupledModes {
+    /// Mode `k`'s shape.
+    pub fn shape(&self, k: usize) -> &[f64] {
+        let n = self.shapes.len() / self.mu.len().max(1);
+        &self.shapes[k * n..(k + 1) * n]
+    }
+}
+
+/// A pole of the secular equation: `lam`, the summed weight `g^2`, and its coordinates (a run of
+/// consecutive ones, the poles ascending).
 struct Pole {
     lam: f64,
     weight: f64,
-    members: Vec<usize>,
+    members: std::ops::Range<usize>,
 }
 
 /// The eigenpairs of `diag(lam) + kappa g g^T` (`kappa > 0`, `lam >= 0` ascending) whose mode has
 /// a part in `g`, ascending. The eigenpairs left out are the coordinates (or combinations of
 /// coordinates at one pole) orthogonal to `g`, unchanged by the spring.
-pub fn coupled_modes(lam: &[f64], g: &[f64], kappa: f64) -> Vec<CoupledMode> {
+pub fn coupled_modes(lam: &[f64], g: &[f64], kappa: f64) -> CoupledModes {
     debug_assert!(lam.windows(2).all(|w| w[0] <= w[1]), "poles must ascend");
     let total: f64 = g.iter().map(|g| g * g).sum();
     let top = lam.iter().fold(0.0f64, |a, &b| a.max(b));
@@ -45,16 +55,19 @@ pub fn coupled_modes(lam: &[f64], g: &[f64], kappa: f64) -> Vec<CoupledMode> {
             continue;
         }
         match poles.last_mut() {
+            // (an uncoupled coordinate between two at the same pole keeps zero in the shape)
             Some(p) if l - p.lam <= SAME_POLE * top => {
                 p.weight += gi * gi;
-                p.members.push(i);
+                p.members.end = i + 1;
             }
-            _ => poles.push(Pole { lam: l, weight: gi * gi, members: vec![i] }),
+            _ => poles.push(Pole { lam: l, weight: gi * gi, members: i..i + 1 }),
         }
     }
-    let m = poles.len();
-    let mut modes = Vec::with_capacity(m);
+    let (n, m) = (lam.len(), poles.len());
+    let mut modes = CoupledModes { mu: Vec::with_capacity(m), shapes: vec![0.0; m * n] };
     let mut delta = vec![0.0; m];
+    // `kappa g^2` of each pole
+    let weight: Vec<f64> = poles.iter().map(|p| kappa * p.weight).collect();
     for k in 0..m {
         // the interval of root k, and the nearer of its poles as the origin
         let lo = poles[k].lam;
@@ -76,16 +89,17 @@ pub fn coupled_modes(lam: &[f64], g: &[f64], kappa: f64) -> Vec<CoupledMode> {
         let mut tau = 0.5 * (a + b);
         for _ in 0..100 {
             // the poles left of the root (through k) and right of it, their sums and slopes
-            let (mut psi, mut dpsi, mut phi, mut dphi) = (0.0, 0.0, 0.0, 0.0);
-            for (i, (d, p)) in delta.iter().zip(&poles).enumerate() {
-                let r = 1.0 / (d - tau);
-                let (t, dt) = (kappa * p.weight * r, kappa * p.weight * r * r);
-                if i <= k {
-                    (psi, dpsi) = (psi + t, dpsi + dt);
-                } else {
-                    (phi, dphi) = (phi + t, dphi + dt);
+            let sums = |range: std::ops::Range<usize>| {
+                let (mut s, mut ds) = (0.0, 0.0);
+                for (d, w) in delta[range.clone()].iter().zip(&weight[range]) {
+                    let r = 1.0 / (d - tau);
+                    let t = w * r;
+                    s += t;
+                    ds += t * r;
                 }
-            }
+                (s, ds)
+            };
+            let ((psi, dpsi), (phi, dphi)) = (sums(0..k + 1), sums(k + 1..m));
             let f = 1.0 + psi + phi;
             if f < 0.0 {
                 a = tau;
@@ -133,16 +147,16 @@ pub fn coupled_modes(lam: &[f64], g: &[f64], kappa: f64) -> Vec<CoupledMode> {
             }
         }
         // the mode: g_i / (lam_i - mu) on each pole, spread over its coordinates along g
-        let mut shape = vec![0.0; lam.len()];
+        let shape = &mut modes.shapes[k * n..(k + 1) * n];
         for (d, p) in delta.iter().zip(&poles) {
             let r = 1.0 / (d - tau);
-            for &i in &p.members {
+            for i in p.members.clone() {
                 shape[i] = g[i] * r;
             }
         }
         let norm = shape.iter().map(|s| s * s).sum::<f64>().sqrt();
         shape.iter_mut().for_each(|s| *s /= norm);
-        modes.push(CoupledMode { mu: o + tau, shape });
+        modes.mu.push(o + tau);
     }
     modes
 }
@@ -164,25 +178,25 @@ mod tests {
         let dense = nalgebra::DMatrix::from_fn(n, n, |i, j| kappa * g[i] * g[j] + if i == j { lam[i] } else { 0.0 });
         let eigen = nalgebra::SymmetricEigen::new(dense.clone());
         // one root per distinct coupled pole: zero, 6.1e5, the two close ones, 4.8e7, 1.3e9
-        assert_eq!(modes.len(), 6);
-        for mode in &modes {
-            let z = nalgebra::DVector::from_vec(mode.shape.clone());
-            let residual = (&dense * &z - mode.mu * &z).norm();
-            assert!(residual <= 1e-12 * 1.3e9, "mu {}: residual {residual:e}", mode.mu);
+        assert_eq!(modes.mu.len(), 6);
+        for (k, &mu) in modes.mu.iter().enumerate() {
+            let z = nalgebra::DVector::from_column_slice(modes.shape(k));
+            let residual = (&dense * &z - mu * &z).norm();
+            assert!(residual <= 1e-12 * 1.3e9, "mu {mu}: residual {residual:e}");
             assert!((z.norm() - 1.0).abs() < 1e-14);
             // the same eigenvalue in the dense spectrum
-            let nearest = eigen.eigenvalues.iter().map(|e| (e - mode.mu).abs()).fold(f64::INFINITY, f64::min);
-            assert!(nearest <= 1e-9 * mode.mu.max(1.0), "mu {}: {nearest:e}", mode.mu);
+            let nearest = eigen.eigenvalues.iter().map(|e| (e - mu).abs()).fold(f64::INFINITY, f64::min);
+            assert!(nearest <= 1e-9 * mu.max(1.0), "mu {mu}: {nearest:e}");
         }
         // rigid poles only (every flexible mode truncated): one coupled mode, kappa |g|^2
         let one = coupled_modes(&[0.0; 3], &[-4.2, 1.1, 0.3], kappa);
-        assert_eq!(one.len(), 1);
+        assert_eq!(one.mu.len(), 1);
         let expected = kappa * (4.2f64 * 4.2 + 1.1 * 1.1 + 0.3 * 0.3);
-        assert!((one[0].mu / expected - 1.0).abs() < 1e-14, "{} vs {expected}", one[0].mu);
+        assert!((one.mu[0] / expected - 1.0).abs() < 1e-14, "{} vs {expected}", one.mu[0]);
         // the modes are orthogonal
-        for (i, a) in modes.iter().enumerate() {
-            for b in &modes[i + 1..] {
-                let dot: f64 = a.shape.iter().zip(&b.shape).map(|(x, y)| x * y).sum();
+        for i in 0..modes.mu.len() {
+            for j in i + 1..modes.mu.len() {
+                let dot: f64 = modes.shape(i).iter().zip(modes.shape(j)).map(|(x, y)| x * y).sum();
                 assert!(dot.abs() < 1e-10, "{dot:e}");
             }
         }

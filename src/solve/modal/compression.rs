@@ -73,23 +73,27 @@ impl Compression {
     pub fn new(lam: &[f64], g: &[f64], k: f64, residual: f64, ball_mass: f64) -> Self {
         let n = lam.len();
         let kappa = k / (1.0 + k * residual);
-        let (mut sigma, mut z, mut c, mut a) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        let modes = coupled_modes(lam, g, kappa);
+        let count = modes.mu.len() + 1;
+        let (mut sigma, mut c, mut a): (Vec<f64>, Vec<f64>, Vec<f64>) =
+            (Vec::with_capacity(count), Vec::with_capacity(count), Vec::with_capacity(count));
         // the ball arrives with unit speed: `v(0) = sqrt(m_b) e_0`; what the coupled modes do not
         // carry of it is a rigid motion the spring does not feel
         let mut rest = vec![0.0; n];
         rest[0] = ball_mass.sqrt();
-        for mode in coupled_modes(lam, g, kappa) {
-            let shape = &mode.shape;
+        for (j, &mu) in modes.mu.iter().enumerate() {
+            let shape = modes.shape(j);
             let ck = shape[0] * ball_mass.sqrt();
             let gz: f64 = shape.iter().zip(g).map(|(z, g)| z * g).sum();
-            sigma.push(mode.mu.max(0.0).sqrt());
-            z.extend(shape);
+            sigma.push(mu.max(0.0).sqrt());
             c.push(ck);
             a.push(-gz * ck / (1.0 + k * residual));
             for (r, s) in rest.iter_mut().zip(shape) {
                 *r -= ck * s;
             }
         }
+        let mut z = modes.shapes;
+        z.reserve(n);
         let free = rest.iter().map(|r| r * r).sum::<f64>().sqrt();
         if free > 0.0 {
             sigma.push(0.0);
