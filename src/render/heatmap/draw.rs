@@ -204,23 +204,37 @@ fn draw_shading(
     cc: &Coords<'_, '_>,
     map: &HeatMap,
     ((x0, x1), (y0, y1)): ((f64, f64), (f64, f64)),
-    color: &dyn Fn(f64) -> RGBColor,
+    color: &(dyn Fn(f64) -> RGBColor + Sync),
 ) -> std::result::Result<Rect, String> {
     let (px_range, py_range) = cc.plotting_area().get_pixel_range();
     let (pw, ph) = (f64::from(px_range.end - px_range.start), f64::from(py_range.end - py_range.start));
     let plot_rect: Rect = (px_range.start, py_range.start, px_range.end, py_range.end);
-    for py in py_range.clone() {
-        let y = y1 - (f64::from(py - py_range.start) + 0.5) / ph * (y1 - y0);
-        let Some(row) = Row::at(&map.xs, &map.ys, &map.z, y) else { continue };
-        let mut cursor = 0;
-        for px in px_range.clone() {
-            let x = x0 + (f64::from(px - px_range.start) + 0.5) / pw * (x1 - x0);
-            if !map.clip.iter().all(|e| e.contains(x, y)) {
-                continue;
+    // each pixel row's colours in parallel (a row depends on nothing but the map), then drawn
+    // in order
+    use rayon::prelude::*;
+    let rows: Vec<Vec<(i32, RGBColor)>> = py_range
+        .clone()
+        .into_par_iter()
+        .map(|py| {
+            let y = y1 - (f64::from(py - py_range.start) + 0.5) / ph * (y1 - y0);
+            let mut out = Vec::new();
+            let Some(row) = Row::at(&map.xs, &map.ys, &map.z, y) else { return out };
+            let mut cursor = 0;
+            for px in px_range.clone() {
+                let x = x0 + (f64::from(px - px_range.start) + 0.5) / pw * (x1 - x0);
+                if !map.clip.iter().all(|e| e.contains(x, y)) {
+                    continue;
+                }
+                if let Some(v) = row.sample(x, &mut cursor) {
+                    out.push((px, color(v)));
+                }
             }
-            if let Some(v) = row.sample(x, &mut cursor) {
-                root.draw_pixel((px, py), &color(v)).map_err(plot::msg)?;
-            }
+            out
+        })
+        .collect();
+    for (py, row) in py_range.clone().zip(rows) {
+        for (px, c) in row {
+            root.draw_pixel((px, py), &c).map_err(plot::msg)?;
         }
     }
     Ok(plot_rect)
