@@ -47,20 +47,32 @@
 //! takes the steps.
 //!
 //! Where the time goes (callgrind instruction counts, repeatable on a loaded machine; the Fig 4
-//! impact at N 39 on a prepared model, 14 coordinates, 26 steps from maximum compression of
-//! which 8 at refined levels; about 124,000 instructions an impact, against 152,000 when the
+//! impact at N 39 on a prepared model, 14 coordinates, 28 steps from maximum compression, some
+//! halved where the force history misses the law, most of those towards the end; about 86,000
+//! instructions an impact, 14-17 us on this machine, against 153,000 and 21-27 us when the
 //! compression phase was stepped too):
 //! ```text
-//! compression phase in closed form      10k  (bracket by rotated phasors, Newton, the state)
-//! stepping from maximum compression     61k
-//!   predict: 14 coordinates + Y_T sums   16k
-//!   correct: end force + modal energy    10k
-//!   expansion law, Newton + powers       10k
-//!   step check, ledger, bookkeeping      25k
-//! peak bending PE after separation      30k  (windowed sampling, Newton polish of the best)
-//! re-contact check                      10k
-//! allocation                            ~6k
+//! compression phase in closed form       9k  (bracket past t_safe, Newton, the state)
+//! steps from maximum compression        45k
+//!   predict + correct, 14 pairs          15k  (two-wide, the table read front to back)
+//!   expansion law, Newton + powers       12k
+//!   step check (exp/ln root), ledger     10k
+//!   bookkeeping, the separation root      8k
+//! peak bending PE after separation      28k  (windows a bound cannot rule out, Newton polish)
+//! re-contact check                      0.3k (a gap that cannot open is not sampled)
+//! allocation, result                    ~4k
 //! ```
+//! The floor of this design is the step count times the coordinates: 28 steps of 14
+//! coordinates, each a prediction, an end-of-step law solve and a correction, are some 30k
+//! instructions however tight the loops, and the peak-PE search another 10-20k: about 5 us on
+//! this machine, not 2. The next ideas are fewer steps at the end of the contact, where the
+//! force falls as `(t_s - t)^p` and a cubic history needs steps of 1/4 to 1/8 (stepping there in
+//! the law's own variable `u`, in which the force is smooth), and fewer coordinates (the modes
+//! above ten times the contact frequency condensed with a dynamic, not only static, correction;
+//! a plain lower cut-off fails the 1e-4 agreement). With set-up, as a sweep runs it (the model
+//! prepared per point: coupled modes 20-25k, step tables 8k a level, three levels built during
+//! the run), an impact costs about 190,000 instructions (231,000 before). The same impact at 30
+//! deg with 2000 rpm costs 142,000 (198,000): the tangential law follows 40-odd force pieces.
 //!
 //! Design note: a quintic force history (carrying `F''` too, 6th order) was tried. Its steps can
 //! be twice as long for the same accuracy, but each costs about 1.5 times as much, its set-up
