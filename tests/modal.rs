@@ -199,3 +199,28 @@ fn modal_solver_converges_to_the_explicit_one_as_its_step_shrinks() {
         assert!(coarse > 10.0 * fine, "x {x}, ks {ks}: {coarse:e} vs {fine:e}");
     }
 }
+
+/// The compression phase in closed form, at its limits: on a frame too heavy and stiff to move,
+/// the ball on the contact spring (`k = k1 k_s / (k1 + k_s)`) reaches maximum compression after
+/// a quarter period, `pi/2 sqrt(m_b / k)`, with force `v1 sqrt(k m_b)`; and the rate of the
+/// compression there is zero by construction, so the modal and explicit solvers place it at the
+/// same time on the paper's racket.
+#[test]
+fn maximum_compression_is_the_closed_form_quarter_period_on_an_immovable_frame() {
+    let mut p = Params::paper();
+    p.numerics.solver = SolverKind::Modal;
+    p.racket.mass = 1e6;
+    p.racket.ix = 1e4;
+    p.racket.ei = 1e9;
+    let r = simulate(&p).unwrap();
+    let k = p.ball.k1 * p.strings.ks / (p.ball.k1 + p.strings.ks);
+    let quarter = 0.5 * std::f64::consts::PI * (p.ball.mass / k).sqrt();
+    assert!((r.t_max_compression_s / quarter - 1.0).abs() < 1e-6, "{} vs {quarter}", r.t_max_compression_s);
+    let peak = p.impact.v1 * (k * p.ball.mass).sqrt();
+    assert!((r.peak_force_n / peak - 1.0).abs() < 1e-6, "{} vs {peak}", r.peak_force_n);
+
+    let mut paper = Params::paper();
+    paper.impact.r = 0.05;
+    let (a, b) = both(&paper);
+    assert!((a.t_max_compression_s - b.t_max_compression_s).abs() < 5e-5 * a.t_max_compression_s, "{a:?} {b:?}");
+}

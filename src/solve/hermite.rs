@@ -81,4 +81,24 @@ mod tests {
             assert_relative_eq!(hermite_slope(f(a), df(a), f(a + h), df(a + h), h, s), df(a + s * h), epsilon = 1e-12);
         }
     }
+
+    #[test]
+    fn roots_and_maxima_of_cubics_are_found_to_rounding() {
+        // (t - r)(t + 1)(t - 3) falls through zero at r in [0, 1] (a cubic: the interpolant is exact)
+        let h = 1.0;
+        for r in [1e-6, 0.013, 0.5, 0.77, 0.999_999] {
+            let f = |t: f64| (t - r) * (t + 1.0) * (t - 3.0);
+            let df = |t: f64| (t + 1.0) * (t - 3.0) + (t - r) * (t - 3.0) + (t - r) * (t + 1.0);
+            let s = hermite_root(f(0.0), df(0.0), f(1.0), df(1.0), h);
+            assert!((s - r).abs() <= 4.0 * f64::EPSILON, "root {r}: {s}");
+        }
+        // a double root at the end (a contact that fades out tangentially): found to where the
+        // cubic is below rounding
+        let s = hermite_root(0.3 * 0.2, 0.3 * (1.0 - 0.4), 0.0, 0.0, 1.0);
+        assert!((s - 1.0).abs() <= 1e-7, "{s}");
+        // the maximum of t (1 - t): at 1/2, 1/4
+        let (sm, vm) = hermite_max(0.0, 1.0, 0.0, -1.0, 1.0);
+        assert_relative_eq!(sm, 0.5, epsilon = 1e-12);
+        assert_relative_eq!(vm, 0.25, epsilon = 1e-12);
+    }
 }
