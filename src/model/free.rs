@@ -19,6 +19,8 @@
 //! [`AMPLITUDE_TAIL`] of the displacement) are left out of the sampling; their contribution is
 //! bounded by that tail.
 
+use crate::model::short_turn::{series_terms, small_sin_cos};
+
 /// Highest modes whose summed energy is below this fraction of the total are not sampled.
 pub const ENERGY_TAIL: f64 = 1.0e-10;
 /// Highest modes whose summed load-point amplitude is below this fraction of the total are not
@@ -27,8 +29,9 @@ pub const AMPLITUDE_TAIL: f64 = 1.0e-6;
 /// Sample spacing, radians of the fastest sampled mode.
 pub const PHASE_PER_SAMPLE: f64 = 0.25;
 /// A candidate peak is polished only if the peak of its local quadratic is within this fraction
-/// of the best value found (the quadratic's error is far below it: the parabola step leaves the
-/// candidate within about 1e-3 of a sample spacing of the peak).
+/// of the best value found: a margin, not a bound (the quadratic's error is far below it, the
+/// parabola step leaving the candidate within about 1e-3 of a sample spacing of the peak; on
+/// 200,000 random vibrations the pruning moved no result by more than 3e-14).
 const QUADRATIC_MARGIN: f64 = 1e-6;
 
 /// Each mode's phasor at one time: `q_k` and `q_k'/w_k`.
@@ -61,52 +64,6 @@ impl Phasors {
             (*q, *p) = (*q * c + *p * s, *p * c - *q * s);
         }
     }
-}
-
-/// `1/((2n)(2n+1))` and `1/((2n-1)(2n))` for `n = 1..=11`: the ratios of successive Taylor
-/// terms of `sin` and `cos`.
-const SIN_RATIO: [f64; 11] = ratios(0.0);
-const COS_RATIO: [f64; 11] = ratios(-1.0);
-
-const fn ratios(offset: f64) -> [f64; 11] {
-    let mut r = [0.0; 11];
-    let mut n = 1;
-    while n <= 11 {
-        let k = 2.0 * n as f64;
-        r[n - 1] = 1.0 / ((k + offset) * (k + 1.0 + offset));
-        n += 1;
-    }
-    r
-}
-
-/// Taylor terms of `sin` and `cos` for rounding-level accuracy up to `|x| = x_max` (the first
-/// neglected term is at most 1.6e-24, at `x_max = 1`), or 0 beyond 1.
-pub(crate) fn series_terms(x_max: f64) -> usize {
-    match x_max {
-        x if x <= 1e-4 => 2,
-        x if x <= 1e-3 => 3,
-        x if x <= 1e-2 => 4,
-        x if x <= 0.1 => 6,
-        x if x <= 0.5 => 9,
-        x if x <= 1.0 => 11,
-        _ => 0,
-    }
-}
-
-/// `(sin x, cos x)` by `terms` terms of their Taylor series ([`series_terms`]), or by
-/// `sin_cos` when `terms` is 0.
-pub(crate) fn small_sin_cos(x: f64, terms: usize) -> (f64, f64) {
-    if terms == 0 {
-        return x.sin_cos();
-    }
-    let x2 = x * x;
-    let (mut s, mut c) = (1.0, 1.0);
-    // sin x = x (1 - x^2/(2 3) (1 - x^2/(4 5) (1 - ...))), cos x = 1 - x^2/(1 2) (1 - x^2/(3 4) (...))
-    for n in (0..terms).rev() {
-        s = 1.0 - x2 * SIN_RATIO[n] * s;
-        c = 1.0 - x2 * COS_RATIO[n] * c;
-    }
-    (x * s, c)
 }
 
 /// The free vibration of the flexible modes from a reference time `t = 0`.
@@ -451,15 +408,6 @@ mod tests {
     }
 
     #[test]
-    fn short_rotations_match_sin_cos() {
-        let xs = (-1000..=1000).map(|i| i as f64 * 1e-3 * 1.0000001);
-        for x in xs.chain([1e-4, 1e-3, 1e-2, 0.1, 0.5].iter().flat_map(|&x| [x, -x, 0.99 * x])) {
-            let (s, c) = small_sin_cos(x, series_terms(x.abs()));
-            assert!((s - x.sin()).abs() <= 2e-16 && (c - x.cos()).abs() <= 2e-16, "{x}");
-        }
-    }
-
-    #[test]
     fn peak_matches_brute_force_for_dominant_and_shared_energy() {
         let omega = [785.0, 2170.0, 4200.0, 6900.0, 30000.0];
         let g = [1.0, -0.8, 0.5, 0.3, 0.1];
@@ -513,5 +461,9 @@ mod tests {
         assert!(!f.meets_ball(-0.5e-3, -1.0, 0.02));
         // moving apart at 1 cm/s: the frame swings back into the ball within a period
         assert!(f.meets_ball(-0.5e-3, -0.01, 0.02));
+        // moving apart at 5 mm/s, slower than the load point can swing (so the rate bound
+        // cannot rule it out and the gap is sampled), but the 10 um swing never closes the gap
+        let small = FreeVibration::new(&[785.0], &[1e-5], &[0.0], &[1.0]);
+        assert!(!small.meets_ball(-0.5e-5, -5e-3, 0.02));
     }
 }

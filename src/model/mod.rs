@@ -9,4 +9,5 @@ pub mod coupling;
 pub mod free;
 pub mod rank_one;
 pub mod reduced;
+pub mod short_turn;
 pub mod tangential;

@@ -1,6 +1,7 @@
-//! Cubic Hermite interpolation within one time step: both time-stepping solvers place the
-//! maximum compression, the separation and the twist angle there from the values and rates at
-//! the step's ends.
+//! Cubic Hermite interpolation within one time step: the explicit solver places the maximum
+//! compression there, and both time-stepping solvers the separation and the twist angle, from
+//! the values and rates at the step's ends (the modal solver finds maximum compression in
+//! closed form).
 
 /// Cubic Hermite interpolant on a step of length `h` with values `p0, p1` and derivatives
 /// `m0, m1`, evaluated at the fraction `s` of the step.

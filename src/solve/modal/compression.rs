@@ -11,21 +11,23 @@
 //! a rigid motion of frequency 0) and the compression rate is
 //! `Y_T'(t) = v1 sum_k a_k cos(s_k t)`.
 //!
-//! The run finds the first zero of `Y_T'` (the time of maximum compression): samples a few
-//! tenths of a radian of the fastest mode that moves the contact apart (each coupled mode's
-//! phasor rotated, no trigonometric call per sample), then Newton's method inside the bracket;
-//! and evaluates every coordinate and rate there exactly. No step of the compression phase is
+//! The run finds the first zero of `Y_T'` (the time of maximum compression): none can come
+//! before the dominant mode's share stops exceeding the sum of the others' amplitudes; from
+//! there it samples every half radian of the fastest mode with a share of the rate (of either
+//! sign; each coupled mode's phasor rotated, no trigonometric call per sample), then Newton's
+//! method inside the bracket; and evaluates every coordinate and rate there exactly. No step of the compression phase is
 //! taken, so no error is made in it: the stepping starts at maximum compression, where the
 //! force's rate is zero on both sides and the expansion law takes over.
 
-use crate::model::free::{series_terms, small_sin_cos};
 use crate::model::rank_one::coupled_modes;
+use crate::model::short_turn::{series_terms, small_sin_cos};
 use crate::solve::modal::pair::Pair;
 use crate::solve::modal::State;
 
 /// Coupled modes whose share of the compression rate is below this fraction of the total are
-/// not resolved by the sampling (they are in every evaluation; they only cannot add a zero of
-/// the rate between samples, being far too small to turn it).
+/// not resolved by the sampling (they are in every evaluation; they are assumed not to add a
+/// zero of the rate between samples, being far too small to turn it anywhere but right next to
+/// the zero the sampling finds).
 const RATE_TAIL: f64 = 1e-3;
 /// Sample spacing, radians of the fastest resolved coupled mode, and at most of the dominant one.
 const PHASE_PER_SAMPLE: f64 = 0.5;
@@ -139,8 +141,8 @@ impl Compression {
 
     /// The first maximum of the compression within `limit` seconds, and the state there for an
     /// incident speed `v1` into `state`; `None` if the compression still grows at `limit`.
-    /// `piece(t0, (F0, F0'), t1, (F1, F1'))` is handed the force history, sample by sample, when
-    /// `pieces` is set (the tangential law follows it).
+    /// `pieces = (h, sink)`: the force history is handed to `sink(h, (F0, F0'), (F1, F1'))` in
+    /// pieces of at most `h` seconds (the tangential law follows it).
     pub fn at_max(&self, v1: f64, limit: f64, state: &mut State, pieces: Option<(f64, ForceSink)>) -> Option<AtMax> {
         let m = self.sigma.len();
         // no zero of the rate before `t_safe`: there the dominant mode's share still exceeds the

@@ -114,10 +114,10 @@ pub struct Resolution {
 pub const DEFAULT_RESOLUTION: Resolution =
     Resolution { mode_cutoff: 50.0, phase_per_step: 0.1, impulse_tolerance: 2e-8 };
 
-/// Step levels, each half the step of the one before: the coarsest is `4` times the step the
-/// resolution names (`START`, where the steps begin), the finest `1/64` of it.
-const LEVELS: usize = 9;
-const START: usize = 2;
+/// Step levels, each half the step of the one before: the coarsest is the step the resolution
+/// names (`START`, where the steps begin and never exceeded), the finest `1/64` of it.
+const LEVELS: usize = 7;
+const START: usize = 0;
 
 /// Number of rigid coordinates ahead of the flexible modes: ball, translation, rotation, twist.
 const RIGID: usize = 4;

@@ -1,6 +1,6 @@
 //! The modal solver's steps: predict every coordinate over a step with the end force and rate
 //! zero, solve the contact law at the end of the step ([`ImplicitLaw`]), check the cubic force
-//! history against the law inside the step (splitting the step where it misses), then add the
+//! history against the law inside the step (halving the step where it misses), then add the
 //! end force and rate and keep the ledger.
 
 use crate::error::Result;
@@ -10,11 +10,11 @@ use crate::solve::hermite::{hermite_eval, hermite_root};
 use crate::solve::modal::pair::Pair;
 use crate::solve::modal::steps::Grid;
 use crate::solve::modal::{ModalModel, State, LEVELS, START};
+use crate::solve::oblique::Follower;
 
 /// A step that misses the law by less than this fraction of the tolerance lets the next be twice
 /// as long.
 const GROW: f64 = 1.0 / 64.0;
-use crate::solve::oblique::Follower;
 
 /// The contact at the end of a step.
 #[derive(Debug, Clone, Copy)]
