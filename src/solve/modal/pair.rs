@@ -3,22 +3,22 @@
 //! build has it); elsewhere two plain numbers. The arithmetic is the same either way (no fused
 //! multiply-add), so results do not depend on the machine.
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
 use std::arch::x86_64::{
     __m128d, _mm_add_pd, _mm_mul_pd, _mm_set1_pd, _mm_setr_pd, _mm_storeu_pd, _mm_unpackhi_pd, _mm_unpacklo_pd,
 };
 
 /// A pair of `f64`.
-#[cfg(target_arch = "x86_64")]
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
 #[derive(Clone, Copy, Debug)]
 #[repr(transparent)]
 pub(super) struct Pair(__m128d);
 
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(not(all(target_arch = "x86_64", target_feature = "sse2")))]
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Pair([f64; 2]);
 
-#[cfg(target_arch = "x86_64")]
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
 impl Pair {
     #[inline(always)]
     pub fn new(a: f64, b: f64) -> Pair {
@@ -60,7 +60,7 @@ impl Pair {
     }
 }
 
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(not(all(target_arch = "x86_64", target_feature = "sse2")))]
 impl Pair {
     #[inline(always)]
     pub fn new(a: f64, b: f64) -> Pair {
