@@ -88,6 +88,8 @@ pub mod render;
 pub mod report;
 pub mod solve;
 pub mod study;
+#[cfg(test)]
+mod test_rng;
 
 pub use error::{Error, Result};
 pub use params::Params;

@@ -429,15 +429,9 @@ mod tests {
 
     #[test]
     fn peak_matches_brute_force_on_random_vibrations() {
-        // a small deterministic generator: 100 vibrations of 2 to 7 modes with random
+        // 100 vibrations of 2 to 7 modes with random
         // frequencies, amplitudes and phases
-        let mut seed: u64 = 0x2545_f491_4f6c_dd1d;
-        let mut rnd = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rnd = crate::test_rng::uniform(0x2545_f491_4f6c_dd1d);
         let mut worst: f64 = 0.0;
         for _ in 0..100 {
             let n = 2 + (rnd() * 6.0) as usize;

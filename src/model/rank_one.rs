@@ -212,13 +212,7 @@ mod tests {
     /// every coupled pair is an eigenpair to rounding and its eigenvalue is the dense one.
     #[test]
     fn coupled_modes_of_random_spectra_are_eigenpairs_to_rounding() {
-        let mut seed: u64 = 0x9e37_79b9_7f4a_7c15;
-        let mut rnd = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rnd = crate::test_rng::uniform(0x9e37_79b9_7f4a_7c15);
         let mut worst: f64 = 0.0;
         for _ in 0..2000 {
             let n = 2 + (rnd() * 12.0) as usize;
