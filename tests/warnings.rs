@@ -18,6 +18,15 @@ fn stderr(o: &Output) -> String {
 }
 
 /// `args` warns once with every one of `words`, the result is the quiet run's, exit 0.
+/// A racket file `name` with `contents` in a scratch folder (removed when the returned guard
+/// is dropped).
+fn racket_file(name: &str, contents: &str) -> (tempfile::TempDir, std::path::PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join(name);
+    std::fs::write(&path, contents).unwrap();
+    (dir, path)
+}
+
 fn warns_once(args: &[&str], words: &[&str]) {
     let loud = run(args);
     let quiet = run(&[&["--quiet"], args].concat());
@@ -53,16 +62,11 @@ fn implausible_values_run_and_warn_once() {
 
 #[test]
 fn a_racket_file_with_a_mass_typo_warns() {
-    let dir = std::env::temp_dir().join(format!("racket-impact-warn-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("typo.toml");
-    std::fs::write(
-        &path,
+    let (_dir, path) = racket_file(
+        "typo.toml",
         "name = \"typo\"\nlength_cm = 68.6\nmass_g = 30\ntwistweight_kg_cm2 = 14\nfrequency_hz = 150\n",
-    )
-    .unwrap();
+    );
     warns_once(&["simulate", "--racket", path.to_str().unwrap()], &["mass = 0.03 kg"]);
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -126,17 +130,12 @@ fn speed_compares_each_racket_or_tension_against_a_and_shows_both() {
 
 #[test]
 fn a_racket_is_labelled_with_its_name() {
-    let dir = std::env::temp_dir().join(format!("racket-impact-name-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("frame_v2.toml");
-    std::fs::write(
-        &path,
+    let (_dir, path) = racket_file(
+        "frame_v2.toml",
         "name = \"My frame\"\nlength_cm = 68.6\nmass_g = 300\ntwistweight_kg_cm2 = 14\nfrequency_hz = 150\n",
-    )
-    .unwrap();
+    );
     let text = stdout(&run(&["speed", "--racket", path.to_str().unwrap(), "--swing", "100"]));
     assert!(text.lines().nth(2).is_some_and(|l| l.starts_with("My frame ")), "{text}");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
