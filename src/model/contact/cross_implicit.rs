@@ -52,7 +52,7 @@ impl ImplicitLaw for Cross {
         if !(u > 0.0 && up > 0.0 && u <= 1.0) {
             // no usable start: the upper bound min(z, 1) of the root
             u = z.min(1.0);
-            up = (p * u.ln()).exp();
+            up = self.pow.power_fast(u);
         }
         let mut inv_u = 1.0 / u;
         for _ in 0..100 {

@@ -48,16 +48,26 @@ impl PowSeries {
         up * s
     }
 
-    /// As [`PowSeries::advance`], but a long move's power through the logarithm, `exp(p ln x)`,
-    /// a few times cheaper than `powf` and as accurate to a few units of rounding (the modal
-    /// solver's choice; the explicit solver keeps `powf`, so that its results do not move).
+    /// As [`PowSeries::advance`], but a long move's power by [`PowSeries::power_fast`] (the
+    /// explicit solver keeps `powf`, so that its results do not move).
     #[inline]
     pub fn advance_fast(&self, u: f64, up: f64, delta: f64) -> (f64, f64) {
         if delta.abs() <= 0.1 {
             return self.advance(u, up, delta);
         }
         let x = u * (1.0 + delta);
-        (x, if x > 0.0 { (self.p * x.ln()).exp() } else { 0.0 })
+        (x, self.power_fast(x))
+    }
+
+    /// `x^p` through the logarithm, `exp(p ln x)` (0 for `x <= 0`): a few times cheaper than
+    /// `powf` and as accurate to a few units of rounding (the modal solver's choice).
+    #[inline]
+    pub fn power_fast(&self, x: f64) -> f64 {
+        if x > 0.0 {
+            (self.p * x.ln()).exp()
+        } else {
+            0.0
+        }
     }
 
     /// The point `u (1 + delta)` and its power by [`PowSeries::step`]: a pair that stays
