@@ -70,8 +70,12 @@ fn params() -> impl Strategy<Value = Params> {
         p.impact.r = r;
         p.strings.ks = 10f64.powf(log_ks);
         p.racket.ei = ei;
-        p.racket.profile =
-            profile.map(|(density, stiffness)| Profile { knots: [0.0, 0.45, 0.72, 1.0], density, stiffness });
+        p.racket.profile = profile.map(|(density, stiffness)| Profile {
+            knots: [0.0, 0.45, 0.72, 1.0],
+            density,
+            stiffness,
+            tilt: [0.0; 2],
+        });
         p.numerics.segments = segments;
         p.numerics.load = if hat { LoadRule::Hat } else { LoadRule::Node };
         p

@@ -70,7 +70,8 @@ pub fn warn_params<'a>(params: impl IntoIterator<Item = &'a Params>) {
                 sig(f1, 4)
             )
         });
-        for line in keys::unusual(p).into_iter().chain(frequency) {
+        let density = racket_impact::racket::density_warning(&p.racket);
+        for line in keys::unusual(p).into_iter().chain(frequency).chain(density) {
             // one line per parameter, the first unusual value it takes
             let key = line.split(' ').next().unwrap_or_default().to_string();
             if !said.contains(&key) {

@@ -1,11 +1,11 @@
 //! `racket`: fit a racket description (file or preset) to the model and show the match.
 
 use clap::Args;
-use racket_impact::params::spec::sig;
+use racket_impact::params::{self, spec::sig};
 use racket_impact::racket::{self, Fitted};
 use racket_impact::{Error, Result};
 
-use super::common::{out, outln, Format};
+use super::common::{out, outln, warn_params, Format};
 
 #[derive(Args, Debug)]
 pub struct RacketArgs {
@@ -34,6 +34,12 @@ pub fn run(a: RacketArgs) -> Result<()> {
         return Err(Error::invalid("racket", "(missing)", "give a racket file or preset name, or --list"));
     };
     let fitted = racket::load(arg)?.to_racket(a.segments)?;
+    // the same warnings as the impact commands give for this racket (unusual values, frequency,
+    // density), at the face centre with the default numerics on the fit's segments
+    let numerics = params::Numerics { segments: a.segments, ..Default::default() };
+    let mut p = fitted.params(params::Impact::default(), numerics);
+    params::keys::face_centre_impact(&mut p);
+    warn_params([&p]);
     let text = match a.format {
         Format::Text => text(&fitted),
         Format::Csv => fitted.report.table().to_csv(),

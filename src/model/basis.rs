@@ -66,9 +66,9 @@ impl Padded {
 static BASES: OnceLock<Mutex<BasisCache>> = OnceLock::new();
 /// The cached bases and the bytes they hold.
 type BasisCache = (HashMap<BasisKey, Arc<Basis>>, usize);
-/// The bits of the segment count, length, mass and EI, and of the profile's knots, densities and
-/// stiffnesses when there is one (no heap: looked up once per impact).
-type BasisKey = ([u64; 4], Option<[u64; 12]>);
+/// The bits of the segment count, length, mass and EI, and of the profile's knots, densities,
+/// stiffnesses and tilt when there is one (no heap: looked up once per impact).
+type BasisKey = ([u64; 4], Option<[u64; 14]>);
 /// The cache is emptied before it would hold more than this many bytes of modes (a sweep over
 /// many rackets on fine beams would otherwise keep N^2 numbers per racket).
 const BASIS_CACHE_BYTES: usize = 32 << 20;
@@ -77,8 +77,8 @@ impl Basis {
     /// The basis of a racket on `segments` segments, from the cache or computed.
     pub fn of(racket: &Racket, segments: usize) -> Arc<Basis> {
         let profile = racket.profile.as_ref().map(|p| {
-            let mut bits = [0; 12];
-            for (b, v) in bits.iter_mut().zip(p.knots.iter().chain(&p.density).chain(&p.stiffness)) {
+            let mut bits = [0; 14];
+            for (b, v) in bits.iter_mut().zip(p.knots.iter().chain(&p.density).chain(&p.stiffness).chain(&p.tilt)) {
                 *b = v.to_bits();
             }
             bits

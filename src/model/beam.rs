@@ -265,14 +265,35 @@ fn lumped_masses(profile: &Profile, n: usize) -> Vec<f64> {
         cuts.push(b);
         for w in cuts.windows(2) {
             let (lo, hi) = (w[0], w[1]);
-            let simpson = |g: &dyn Fn(f64) -> f64| (hi - lo) / 6.0 * (g(lo) + 4.0 * g(0.5 * (lo + hi)) + g(hi));
-            let dens = |f: f64| profile.at(&profile.density, f);
+            // exact for the untilted (piecewise-linear) density; a tilted one by five-point
+            // Gauss-Legendre (exact to degree 9: rounding-level on a piece for any tilt a racket has)
+            let simpson = |g: &dyn Fn(f64) -> f64| {
+                if profile.tilt == [0.0; 2] {
+                    (hi - lo) / 6.0 * (g(lo) + 4.0 * g(0.5 * (lo + hi)) + g(hi))
+                } else {
+                    gauss5(lo, hi, g)
+                }
+            };
+            let dens = |f: f64| profile.density_at(f);
             // the hat of the left node falls from 1 at a to 0 at b; the right node's rises
             mass[seg] += simpson(&|f| dens(f) * (b - f) / h);
             mass[seg + 1] += simpson(&|f| dens(f) * (f - a) / h);
         }
     }
     mass
+}
+
+/// Five-point Gauss-Legendre quadrature of `g` over `lo..hi`.
+fn gauss5(lo: f64, hi: f64, g: &dyn Fn(f64) -> f64) -> f64 {
+    const NODES: [(f64, f64); 5] = [
+        (0.0, 0.568_888_888_888_888_9),
+        (-0.538_469_310_105_683_1, 0.478_628_670_499_366_5),
+        (0.538_469_310_105_683_1, 0.478_628_670_499_366_5),
+        (-0.906_179_845_938_664, 0.236_926_885_056_189_1),
+        (0.906_179_845_938_664, 0.236_926_885_056_189_1),
+    ];
+    let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+    half * NODES.iter().map(|(t, w)| w * g(mid + half * t)).sum::<f64>()
 }
 
 impl Modes {
@@ -346,7 +367,7 @@ mod tests {
 
     #[test]
     fn a_uniform_profile_gives_the_uniform_beam() {
-        let flat = Profile { knots: [0.0, 0.3, 0.55, 1.0], density: [2.0; 4], stiffness: [1.0; 4] };
+        let flat = Profile { knots: [0.0, 0.3, 0.55, 1.0], density: [2.0; 4], stiffness: [1.0; 4], tilt: [0.0; 2] };
         let uniform = Beam::new(&Racket::default(), 39);
         let profiled = Beam::new(&Racket { profile: Some(flat), ..Racket::default() }, 39);
         for i in 0..40 {
@@ -358,7 +379,12 @@ mod tests {
     #[test]
     fn lumping_keeps_the_mass_and_the_first_moment_of_the_density() {
         // hat functions reproduce constants and linear functions exactly
-        let p = Profile { knots: [0.0, 0.37, 0.61, 1.0], density: [1.0, 3.0, 0.5, 2.0], stiffness: [1.0; 4] };
+        let p = Profile {
+            knots: [0.0, 0.37, 0.61, 1.0],
+            density: [1.0, 3.0, 0.5, 2.0],
+            stiffness: [1.0; 4],
+            tilt: [0.0; 2],
+        };
         let m = lumped_masses(&p, 23);
         let fine = 200_000;
         let (mut m0, mut m1) = (0.0, 0.0);
@@ -374,7 +400,7 @@ mod tests {
 
     #[test]
     fn a_stiffer_frame_profile_raises_the_fundamental() {
-        let soft = Profile { knots: [0.0, 0.4, 0.6, 1.0], density: [1.0; 4], stiffness: [1.0; 4] };
+        let soft = Profile { knots: [0.0, 0.4, 0.6, 1.0], density: [1.0; 4], stiffness: [1.0; 4], tilt: [0.0; 2] };
         let stiff = Profile { stiffness: [1.0, 1.5, 1.5, 1.2], ..soft };
         let f = |p| Beam::new(&Racket { profile: Some(p), ..Racket::default() }, 39).modes().frequency_hz(1);
         assert!(f(stiff) > f(soft) * 1.05);

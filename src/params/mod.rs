@@ -32,7 +32,9 @@ pub use keys::Overrides;
 pub use numerics::{check_segments, LoadRule, Numerics, SolverKind, MAX_SEGMENTS, MIN_SEGMENTS};
 pub use oblique::Oblique;
 pub(crate) use overrides::{parse_toml, read_file};
-pub use physical::{ellipse_half_width, Ball, Impact, Profile, Racket, Strings, DEFAULT_FACE_LENGTH, STIFFNESS_REL};
+pub use physical::{
+    ellipse_half_width, Ball, Impact, Profile, Racket, Strings, DEFAULT_FACE_LENGTH, STIFFNESS_REL, TILT_MAX,
+};
 pub use variants::{Frame, Grip, StringLaw, Variants};
 
 /// Acceleration of gravity used for drop tests, m/s^2.

@@ -98,6 +98,22 @@ pub struct Profile {
     pub density: [f64; 4],
     /// Relative bending stiffness at the knots; each 1e-3..=1e3 ([`STIFFNESS_REL`]).
     pub stiffness: [f64; 4],
+    /// Exponential tilt `[t1, t2]` of the density: the piecewise-linear density above times
+    /// `exp(t1 f + t2 f^2)` at the fraction `f` of the length from the tip; each |t| <= 100
+    /// ([`TILT_MAX`]). `[0, 0]` (the default) is no tilt. The racket fit's family
+    /// ([`crate::racket::fit`]): the least-informative (maximum-entropy) density with a given
+    /// mass, balance and swingweight.
+    #[serde(default, skip_serializing_if = "no_tilt")]
+    pub tilt: [f64; 2],
+}
+
+/// Largest |tilt| coefficient of a [`Profile`] (a density ratio of up to e^100 along the
+/// racket: far beyond any racket, a bound that keeps the exponential finite).
+pub const TILT_MAX: f64 = 100.0;
+
+/// Whether a tilt is the default `[0, 0]` (not serialised then).
+fn no_tilt(t: &[f64; 2]) -> bool {
+    *t == [0.0; 2]
 }
 
 impl Profile {
@@ -113,6 +129,16 @@ impl Profile {
         };
         let w = ((f - k[i]) / (k[i + 1] - k[i])).clamp(0.0, 1.0);
         v[i] + w * (v[i + 1] - v[i])
+    }
+
+    /// The relative linear density at the fraction `f` (0 = tip, 1 = butt), tilt included.
+    pub fn density_at(&self, f: f64) -> f64 {
+        let base = self.at(&self.density, f);
+        if no_tilt(&self.tilt) {
+            base
+        } else {
+            base * (self.tilt[0] * f + self.tilt[1] * f * f).exp()
+        }
     }
 }
 
@@ -224,6 +250,9 @@ impl Profile {
         }
         for &e in &self.stiffness {
             within("profile.stiffness", e, "relative bending stiffness", "at every knot", STIFFNESS_REL)?;
+        }
+        for &t in &self.tilt {
+            within("profile.tilt", t, "density tilt coefficient", "each", (-TILT_MAX, TILT_MAX))?;
         }
         Ok(())
     }

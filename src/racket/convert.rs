@@ -2,7 +2,7 @@
 //! groups of alternative keys, with the messages that name the key.
 
 use super::spec::{ranges, RacketSpec, BALANCE_POINT_CM, DEFAULT_HANDLE_LENGTH_CM, DEFAULT_HEAD_END_FRACTION};
-use super::spec::{KP_PER_CM, LB_KG, SQ_IN_CM2};
+use super::spec::{DEFAULT_HEAD_ASPECT, KP_PER_CM, LB_KG, SQ_IN_CM2};
 use crate::error::{Error, Result};
 use crate::params::{self, Ball, Strings};
 use crate::render::table::fmt_sig;
@@ -316,10 +316,14 @@ impl RacketSpec {
                 )
             }
             (false, true) => {
-                let (Some(a), Some(r)) = (self.head_size_sq_in, self.head_aspect) else {
-                    let missing = if self.head_size_sq_in.is_none() { "head_size_sq_in" } else { "head_aspect" };
-                    return Err(Error::invalid(missing, "(missing)", "head_size_sq_in and head_aspect go together"));
+                let Some(a) = self.head_size_sq_in else {
+                    return Err(Error::invalid(
+                        "head_size_sq_in",
+                        "(missing)",
+                        "head_aspect needs head_size_sq_in (the aspect alone gives no size)",
+                    ));
                 };
+                let r = self.head_aspect.unwrap_or(DEFAULT_HEAD_ASPECT);
                 let area = check("head_size_sq_in", a, "head size", "sq in", HEAD_SQ_IN)? * SQ_IN_CM2;
                 let aspect = check("head_aspect", r, "head length / width", "", HEAD_ASPECT)?;
                 let w = (4.0 * area / (std::f64::consts::PI * aspect)).sqrt();

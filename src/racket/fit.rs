@@ -1,15 +1,16 @@
 //! The fit: the model's [`Racket`] whose discrete beam reproduces a spec's mass, balance,
-//! swingweight and free-free frequency (density profile by a 3x3 linear solve, EI by rescaling),
+//! swingweight and free-free frequency (density by the maximum-entropy tilt of the uniform
+//! beam, EI by rescaling),
 //! and the impact parameters of a command from a spec and overrides.
 
-use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
+use nalgebra::{Matrix2, Vector2};
 
 use super::convert::{Resolved, Shape, Stiffness};
 use super::report::FitReport;
 use super::spec::{RacketSpec, SWING_AXIS_FROM_BUTT_M};
 use crate::error::{Error, Result};
 use crate::model::beam::Beam;
-use crate::params::{self, Ball, Profile, Racket, Strings};
+use crate::params::{self, Ball, Profile, Racket, Strings, TILT_MAX};
 use crate::render::table::fmt_sig;
 
 /// The model's parameters fitted to a [`RacketSpec`], with the report of the fit.
@@ -58,14 +59,16 @@ impl RacketSpec {
             Some((l, hw)) => (hw, Some(l)),
             None => (Racket::default().half_width, None),
         };
-        let mut density = [1.0; 4];
-        if let Some(shape) = &r.shape {
-            let d = fit_density(&r, shape, segments)?;
-            density = [d[0], d[1], d[2], d[2]];
-        }
         let uniform = r.shape.is_none() && r.ratio == [1.0; 4];
-        let profile = (!uniform).then_some(Profile { knots: r.knots, density, stiffness: r.ratio });
+        let profile =
+            (!uniform).then_some(Profile { knots: r.knots, density: [1.0; 4], stiffness: r.ratio, tilt: [0.0; 2] });
         let mut racket = Racket { length: r.length, mass: r.mass, ei: 1.0, ix: r.ix, half_width, head_length, profile };
+        if let Some(shape) = &r.shape {
+            let tilt = fit_tilt(&r, shape, &racket, segments)?;
+            if let Some(p) = racket.profile.as_mut() {
+                p.tilt = tilt;
+            }
+        }
         racket.ei = match r.stiffness {
             Stiffness::Ei(ei) => ei,
             Stiffness::Frequency(f) => fit_ei(&racket, f, segments)?,
@@ -82,104 +85,108 @@ impl RacketSpec {
     }
 }
 
-/// Node masses of the three basis densities (tip, head end, handle) on the discrete beam, in
-/// the units of a density of 1 kg per unit of relative length: `m = L * sum_k d_k B_k` for a
-/// density `d_k` (kg/m) at the knots. `Beam::new` scales its lumped masses to the racket's mass;
-/// the hat functions sum to one, so the unscaled masses sum to the basis function's integral,
-/// which is known exactly and undoes the scaling.
-fn basis_masses(knots: [f64; 4], length: f64, segments: usize) -> ([Vec<f64>; 3], Vec<f64>) {
-    let [_, k1, k2, _] = knots;
-    let bases = [
-        ([1.0, 0.0, 0.0, 0.0], 0.5 * k1),
-        ([0.0, 1.0, 0.0, 0.0], 0.5 * k2),
-        ([0.0, 0.0, 1.0, 1.0], 0.5 * (k2 - k1) + (1.0 - k2)),
-    ];
-    let mut x = Vec::new();
-    let masses = bases.map(|(density, integral)| {
-        let profile = Profile { knots, density, stiffness: [1.0; 4] };
-        let racket = Racket { length, mass: 1.0, profile: Some(profile), ..Racket::default() };
-        let beam = Beam::new(&racket, segments);
-        x = beam.x;
-        beam.mass.iter().map(|m| m * integral).collect()
-    });
-    (masses, x)
+/// The mass distribution of the discrete beam of `racket` (with `profile`) on `segments`
+/// segments: node positions (m from the tip) and masses normalised to sum to one.
+fn node_weights(racket: &Racket, segments: usize) -> (Vec<f64>, Vec<f64>) {
+    let beam = Beam::new(racket, segments);
+    let total = beam.total_mass;
+    (beam.x, beam.mass.iter().map(|m| m / total).collect())
 }
 
-/// Knot densities (tip, head end, handle; arbitrary common scale) whose discrete beam has the
-/// spec's mass, balance and swingweight; an error names balance or swingweight when no
-/// positive density does.
-fn fit_density(r: &Resolved, shape: &Shape, segments: usize) -> Result<[f64; 3]> {
-    let (basis, x) = basis_masses(r.knots, r.length, segments);
-    let x_axis = r.length - SWING_AXIS_FROM_BUTT_M;
-    // moments of each basis: mass, first moment about the tip, second moment about the axis
-    let moments = basis.clone().map(|m| {
-        let m0: f64 = m.iter().sum();
-        let m1: f64 = m.iter().zip(&x).map(|(m, x)| m * x).sum();
-        let m2: f64 = m.iter().zip(&x).map(|(m, x)| m * (x_axis - x).powi(2)).sum();
-        [m0, m1, m2]
-    });
-    let a = Matrix3::from_fn(|i, k| moments[k][i]);
-    let b = Vector3::new(r.mass, r.mass * shape.x_cm, shape.swingweight);
-    let d = a.lu().solve(&b);
-    if let Some(d) = d.filter(|d| d.iter().all(|v| v.is_finite() && *v > 0.0)) {
-        return Ok([d[0], d[1], d[2]]);
-    }
-    // Diagnose. With positive densities the centre of mass is a weighted mean of the bases'
-    // centroids, so it must lie between them.
-    let centroids = moments.map(|m| m[1] / m[0]);
-    let (lo, hi) = centroids.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &c| (l.min(c), h.max(c)));
-    // the stated ranges are rounded inwards, so every value they admit is accepted
-    let to_butt = |x: f64, up: bool| fmt_sig(round_sig(up, (r.length - x) * 100.0, 4), 4);
-    if !(shape.x_cm > lo && shape.x_cm < hi) {
-        return Err(Error::invalid(
-            shape.balance_key,
-            shape.balance_given,
-            format!(
-                "no positive density (linear over head and throat, constant handle) balances there; \
-                 this racket's profile reaches {} < balance < {} cm from the butt",
-                to_butt(hi, true),
-                to_butt(lo, false)
-            ),
-        ));
-    }
-    // At this balance the positive densities form a segment whose ends have one density 0;
-    // the swingweight is linear along it, so its range is spanned by the ends.
-    let mut sw_ends = Vec::new();
-    for zero in 0..3 {
-        let [i, j] = match zero {
-            0 => [1, 2],
-            1 => [0, 2],
-            _ => [0, 1],
-        };
-        let m = Matrix2::new(moments[i][0], moments[j][0], moments[i][1], moments[j][1]);
-        if let Some(c) = m.lu().solve(&Vector2::new(r.mass, r.mass * shape.x_cm)) {
-            if c.iter().all(|v| v.is_finite() && *v >= 0.0) {
-                sw_ends.push(c[0] * moments[i][2] + c[1] * moments[j][2]);
-            }
-        }
-    }
-    let (sw_lo, sw_hi) = sw_ends.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &s| (l.min(s), h.max(s)));
-    let range = if sw_lo.is_finite() && sw_hi.is_finite() {
+/// The tilt `[t1, t2]` of the uniform density (`lambda(f) ~ exp(t1 f + t2 f^2)`, `f` the
+/// fraction of the length from the tip) whose discrete beam has the spec's balance and
+/// swingweight (its mass is the racket's by construction). Of all densities with that mass,
+/// balance and swingweight it is the one closest to the paper's uniform beam in relative
+/// entropy, and it exists for every balance and swingweight a mass on the racket can have:
+/// `M d^2 < SW < M (d^2 + b (L - b))` with `d` the balance's distance from the swingweight axis
+/// and `b` its distance from the butt (all the mass at the two ends is the upper limit). Newton's
+/// method on the two moments, whose Jacobian is the covariance of the moments with `(f, f^2)`
+/// under the node masses (exact for masses `~ exp(t1 f_i + t2 f_i^2)`, close for the lumped
+/// ones), with the step halved until the residual falls.
+fn fit_tilt(r: &Resolved, shape: &Shape, racket: &Racket, segments: usize) -> Result<[f64; 2]> {
+    let (length, mass) = (r.length, r.mass);
+    let x_axis = length - SWING_AXIS_FROM_BUTT_M;
+    let d = x_axis - shape.x_cm;
+    let (sw_lo, sw_hi) = (mass * d * d, mass * (d * d + shape.x_cm * (length - shape.x_cm)));
+    let unreachable = |physical: bool| {
         let at = match shape.balance_key {
             "balance_cm" => format!("balance_cm = {}", shape.balance_given),
             key => format!("{key} = {} ({} cm from the butt)", shape.balance_given, fmt_sig(shape.balance_cm, 6)),
         };
-        format!(
-            "; at {at} this profile realises {} < swingweight_kg_cm2 < {} kg cm^2",
-            fmt_sig(round_sig(true, sw_lo * 1.0e4, 4), 4),
-            fmt_sig(round_sig(false, sw_hi * 1.0e4, 4), 4)
+        Error::invalid(
+            "swingweight_kg_cm2",
+            shape.sw_given,
+            format!(
+                "{}; at {at} and mass_g = {} a swingweight must satisfy {} < swingweight_kg_cm2 < {} kg cm^2 \
+                 (all the mass at the balance point, and all of it at the two ends)",
+                if physical {
+                    "no mass distribution on the racket has this balance and swingweight"
+                } else {
+                    "the fitted density (the uniform beam tilted by exp(t1 f + t2 f^2), |t| <= 100) cannot reach \
+                     this swingweight so close to the limit of what any mass distribution can have"
+                },
+                fmt_sig(mass * 1000.0, 6),
+                fmt_sig(round_sig(true, sw_lo * 1.0e4, 4), 4),
+                fmt_sig(round_sig(false, sw_hi * 1.0e4, 4), 4)
+            ),
         )
-    } else {
-        String::new()
     };
-    Err(Error::invalid(
-        "swingweight_kg_cm2",
-        shape.sw_given,
-        format!(
-            "this balance and swingweight cannot be realised by a positive density (linear over head and \
-             throat, constant handle){range}"
-        ),
-    ))
+    if !(shape.swingweight > sw_lo && shape.swingweight < sw_hi) {
+        return Err(unreachable(true));
+    }
+    let moments = |tilt: [f64; 2]| {
+        let mut trial = *racket;
+        if let Some(p) = trial.profile.as_mut() {
+            p.tilt = tilt;
+        }
+        let (x, w) = node_weights(&trial, segments);
+        let u: Vec<f64> = x.iter().map(|x| x / length).collect();
+        let mean = |g: &dyn Fn(usize) -> f64| w.iter().enumerate().map(|(i, w)| w * g(i)).sum::<f64>();
+        let m1 = mean(&|i| x[i]);
+        let m2 = mean(&|i| (x_axis - x[i]).powi(2));
+        let residual = [(m1 - shape.x_cm) / length, (mass * m2 - shape.swingweight) / shape.swingweight];
+        let cov = |f: &dyn Fn(usize) -> f64, g: &dyn Fn(usize) -> f64| mean(&|i| f(i) * g(i)) - mean(f) * mean(g);
+        let first = |i: usize| x[i] / length;
+        let second = |i: usize| mass * (x_axis - x[i]).powi(2) / shape.swingweight;
+        let jacobian = Matrix2::new(
+            cov(&first, &|i| u[i]),
+            cov(&first, &|i| u[i] * u[i]),
+            cov(&second, &|i| u[i]),
+            cov(&second, &|i| u[i] * u[i]),
+        );
+        (Vector2::new(residual[0], residual[1]), jacobian)
+    };
+    let mut tilt = [0.0, 0.0];
+    let (mut res, mut jac) = moments(tilt);
+    for _ in 0..100 {
+        if res.amax() < 1.0e-14 {
+            return Ok(tilt);
+        }
+        let Some(step) = jac.lu().solve(&res) else { break };
+        let mut scale = 1.0;
+        let mut improved = false;
+        for _ in 0..40 {
+            let trial = [tilt[0] - scale * step[0], tilt[1] - scale * step[1]];
+            if trial.iter().all(|t| t.is_finite() && t.abs() <= TILT_MAX) {
+                let (r2, j2) = moments(trial);
+                if r2.norm() < res.norm() {
+                    (tilt, res, jac, improved) = (trial, r2, j2, true);
+                    break;
+                }
+            }
+            scale *= 0.5;
+        }
+        if !improved {
+            break;
+        }
+    }
+    // the residual cannot fall further: the rounding floor, or a combination so near the
+    // limits that the tilt runs out of range
+    if res.amax() < 1.0e-11 {
+        Ok(tilt)
+    } else {
+        Err(unreachable(false))
+    }
 }
 
 /// The `ei` whose discrete beam has the first free-free frequency `f_hz`: `omega^2` is

@@ -14,8 +14,8 @@
 //! twistweight_kg_cm2 = 14.5      # about the long axis
 //! frequency_hz = 150             # free-free first bending; or ei_n_m2 = 150
 //! stiffness_ratio = [1.0, 1.4, 1.4, 1.2]    # optional EI shape at tip, head end, handle start, butt
-//! head_size_sq_in = 100          # with head_aspect; or head_length_cm + head_width_cm
-//! head_aspect = 1.30
+//! head_size_sq_in = 100          # or head_length_cm + head_width_cm
+//! head_aspect = 1.30             # optional; default DEFAULT_HEAD_ASPECT = 1.35
 //! handle_length_cm = 19          # optional
 //! tension_lb = 55                # or tension_kg, string_bed_n_per_m, dt_kp_cm; default 4e4 N/m
 //! [ball]                         # optional; defaults are the paper's ball
@@ -39,7 +39,8 @@
 //!             proportional to ei at fixed masses; exact to the eigen solver's rounding, about
 //!             1e-9 relative at N = 160); with ei_n_m2, ei is taken as is
 //! head        string face = ellipse from the tip, length l along and width w across the
-//!             racket; from head_size_sq_in = A and head_aspect = a = l/w:
+//!             racket; from head_size_sq_in = A and head_aspect = a = l/w (absent: 1.35, the
+//!             proportion of the largest legal string face, ITF Rules of Tennis App. I):
 //!             A = pi/4 l w  =>  w = sqrt(4 A / (pi a)), l = a w   (1 sq in = 6.4516 cm^2).
 //!             The quoted head size is the strung area; its ellipse is placed at the tip,
 //!             ignoring the frame's thickness there. No head keys: the paper's strip over the
@@ -59,14 +60,27 @@
 //!
 //! ## Mass distribution
 //! Without balance and swingweight the racket is the paper's uniform beam (no profile). With
-//! them the linear density is piecewise linear over the knots `[0, head end, handle start, L]`
-//! (head end = the head length, or 48 % of L without head keys, as a 100 sq in head is 33 cm of
-//! a 68.6 cm frame; handle start = L - handle_length_cm, default [`DEFAULT_HANDLE_LENGTH_CM`])
-//! and constant along the handle. Its three knot values are the unique solution of the 3x3
-//! linear system that makes the DISCRETE beam's mass, first moment (balance) and swingweight
-//! equal the targets; the node masses are linear in the knot values, so this is exact. A
-//! solution with a density <= 0 means the combination cannot be realised by such a profile,
-//! and is an error that gives the realisable range.
+//! them the linear density is the uniform beam's tilted by an exponential of a quadratic,
+//! `lambda(f) ~ exp(t1 f + t2 f^2)` at the fraction `f` of the length from the tip, with `t1` and
+//! `t2` solved (Newton's method) so that the DISCRETE beam's balance and swingweight equal the
+//! targets; its mass is the target by construction. Of all densities with that mass, balance and
+//! swingweight it is the one of least relative entropy to the uniform beam (the maximum-entropy
+//! distribution with given first and second moments), so it adds no structure the three numbers
+//! do not ask for: mass pulled towards both ends (a heavy head loop and handle, a light throat)
+//! when the swingweight is above the uniform beam's, towards the middle when below. It exists for
+//! every combination a mass on the racket can have, `M d^2 < SW < M (d^2 + b (L - b))` with `d`
+//! the balance's distance from the swingweight axis and `b` from the butt; outside that the
+//! error gives the range. (Before this family the density was piecewise linear over the knots
+//! with a constant handle, which could not hold the head-loop mass of real frames: a 300 g,
+//! 32.5 cm, 315 kg cm^2 frame was refused.)
+//!
+//! Physically sensible: the fit reports the density at the knots and its extremes; where the
+//! density leaves [`PLAUSIBLE_DENSITY`] = 0.25..4 times the mean `M / L`, every command warns
+//! (the fit still runs). Real spec sheets fit well inside it: see the fixture
+//! `tests/data/spec_sheets.toml` and the test `published_spec_sheets_fit` (its densities run
+//! from about 0.6 to 2.5 times the mean). The knots `[0, head end, handle start, L]` (head end =
+//! the head length, or 48 % of L without head keys; handle start = L - handle_length_cm, default
+//! [`DEFAULT_HANDLE_LENGTH_CM`]) still carry the stiffness profile.
 //!
 //! The fit is for the `N` it is given: the same racket on another `N` reproduces the targets
 //! only to the discretisation error (O(N^-2)).
@@ -81,10 +95,7 @@
 //! twistweight", Tennis Industry, 2005, explains the quantity); head sizes of 95-110 sq in on
 //! 27 in frames; free-free frequencies of composite frames above the < 120 Hz of wooden ones
 //! (L. Taraborrelli et al., "Materials have driven the historical development of the tennis
-//! racket", Appl. Sci. 9 (2019) 4352), taken here as 135-160 Hz. The three-knot density cannot
-//! realise every measured frame: at a given balance it reaches a limited swingweight range
-//! (the error says which), and the presets' swingweights sit inside it. Each preset file
-//! states its values.
+//! racket", Appl. Sci. 9 (2019) 4352), taken here as 135-160 Hz. Each preset file states its values.
 //!
 //! ## Files
 //! | file | job |
@@ -106,8 +117,8 @@ mod tests;
 
 pub use fit::{resolve, Fitted};
 pub use presets::{load, preset, preset_names};
-pub use report::{Check, FitReport};
+pub use report::{density_extremes, density_warning, Check, FitReport};
 pub use spec::{
-    ranges, BallSpec, RacketSpec, BALANCE_POINT_CM, DEFAULT_HANDLE_LENGTH_CM, DEFAULT_HEAD_END_FRACTION, KP_PER_CM,
-    LB_KG, SQ_IN_CM2, SWING_AXIS_FROM_BUTT_M,
+    ranges, BallSpec, RacketSpec, BALANCE_POINT_CM, DEFAULT_HANDLE_LENGTH_CM, DEFAULT_HEAD_ASPECT,
+    DEFAULT_HEAD_END_FRACTION, KP_PER_CM, LB_KG, PLAUSIBLE_DENSITY, SQ_IN_CM2, SWING_AXIS_FROM_BUTT_M,
 };

@@ -49,6 +49,12 @@ pub struct FitReport {
     pub knots_cm: [f64; 4],
     /// Linear density at the knots, g/cm.
     pub density_g_per_cm: [f64; 4],
+    /// Lowest linear density: (cm from the tip, g/cm).
+    pub density_min_g_per_cm: (f64, f64),
+    /// Highest linear density: (cm from the tip, g/cm).
+    pub density_max_g_per_cm: (f64, f64),
+    /// Mean linear density M / L, g/cm.
+    pub mean_density_g_per_cm: f64,
 }
 
 impl FitReport {
@@ -68,6 +74,16 @@ impl FitReport {
                 "g/cm".into(),
                 opt(None),
                 self.density_g_per_cm[i].into(),
+                opt(None),
+            ];
+            let _ = t.push(row);
+        }
+        for (n, (x, d)) in [("min", self.density_min_g_per_cm), ("max", self.density_max_g_per_cm)] {
+            let row = vec![
+                format!("density_{n} (x = {} cm)", fmt_sig(x, 4)).into(),
+                "g/cm".into(),
+                opt(None),
+                d.into(),
                 opt(None),
             ];
             let _ = t.push(row);
@@ -125,15 +141,8 @@ impl RacketSpec {
         let x_axis = racket.length - SWING_AXIS_FROM_BUTT_M;
         let sw: f64 = beam.mass.iter().zip(&beam.x).map(|(m, x)| m * (x_axis - x).powi(2)).sum();
         let knots = r.knots;
-        // physical density: the relative profile scaled to the mass (its integral is exact)
-        let density_g_per_cm = match &racket.profile {
-            None => [racket.mass / racket.length * 10.0; 4],
-            Some(p) => {
-                let integral: f64 =
-                    (0..3).map(|j| 0.5 * (knots[j + 1] - knots[j]) * (p.density[j] + p.density[j + 1])).sum();
-                p.density.map(|d| d * racket.mass / (racket.length * integral) * 10.0)
-            }
-        };
+        let ((min_at, min), (max_at, max), scale) = density_extremes(racket);
+        let density_g_per_cm = |f: f64| racket.profile.as_ref().map_or(1.0, |p| p.density_at(f)) * scale;
         FitReport {
             name: self.name.clone(),
             segments,
@@ -156,7 +165,62 @@ impl RacketSpec {
                 model: racket.ei,
             },
             knots_cm: knots.map(|k| k * racket.length * 100.0),
-            density_g_per_cm,
+            density_g_per_cm: knots.map(density_g_per_cm),
+            density_min_g_per_cm: (min_at, min),
+            density_max_g_per_cm: (max_at, max),
+            mean_density_g_per_cm: racket.mass / racket.length * 10.0,
         }
+    }
+}
+
+/// The lowest and highest linear density of a racket, each as (cm from the tip, g/cm), sampled
+/// on 2001 points, and the factor that turns its profile's relative density into g/cm (its
+/// integral by Simpson's rule on the same points). A uniform racket has both at its tip.
+pub fn density_extremes(racket: &Racket) -> ((f64, f64), (f64, f64), f64) {
+    const SAMPLES: usize = 2000;
+    let mean = racket.mass / racket.length * 10.0;
+    let Some(p) = &racket.profile else {
+        return ((0.0, mean), (0.0, mean), mean);
+    };
+    let values: Vec<f64> = (0..=SAMPLES).map(|i| p.density_at(i as f64 / SAMPLES as f64)).collect();
+    let simpson = |i: usize| {
+        if i == 0 || i == SAMPLES {
+            1.0
+        } else if i % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        }
+    };
+    let integral: f64 = values.iter().enumerate().map(|(i, v)| v * simpson(i)).sum::<f64>() / (3.0 * SAMPLES as f64);
+    let scale = mean / integral;
+    let (lo, hi) = (0..=SAMPLES).fold((0, 0), |(lo, hi), i| {
+        (if values[i] < values[lo] { i } else { lo }, if values[i] > values[hi] { i } else { hi })
+    });
+    let at_cm = |i: usize| i as f64 / SAMPLES as f64 * racket.length * 100.0;
+    ((at_cm(lo), values[lo] * scale), (at_cm(hi), values[hi] * scale), scale)
+}
+
+/// A one-line warning when a racket's linear density leaves
+/// [`PLAUSIBLE_DENSITY`](super::spec::PLAUSIBLE_DENSITY) times its mean somewhere (the fit
+/// still runs).
+pub fn density_warning(racket: &Racket) -> Option<String> {
+    let ((min_at, min), (max_at, max), _) = density_extremes(racket);
+    let mean = racket.mass / racket.length * 10.0;
+    let (lo, hi) = super::spec::PLAUSIBLE_DENSITY;
+    let say = |what: &str, at: f64, d: f64, bound: &str| {
+        format!(
+            "racket density {what} {} g/cm at {} cm from the tip, {bound} the usual {lo}..{hi} times the mean {} g/cm of a frame (fitted anyway; check balance and swingweight)",
+            fmt_sig(d, 3),
+            fmt_sig(at, 3),
+            fmt_sig(mean, 3)
+        )
+    };
+    if min < lo * mean {
+        Some(say("falls to", min_at, min, "below"))
+    } else if max > hi * mean {
+        Some(say("reaches", max_at, max, "above"))
+    } else {
+        None
     }
 }

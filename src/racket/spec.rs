@@ -16,6 +16,20 @@ pub const DEFAULT_HANDLE_LENGTH_CM: f64 = 19.0;
 /// Head-end knot as a fraction of the length when no head outline is given (a 100 sq in head,
 /// 33 cm long, on a 68.6 cm frame).
 pub const DEFAULT_HEAD_END_FRACTION: f64 = 0.48;
+/// Usual range of a frame's linear density as a multiple of its mean `M / L` (min, max); a
+/// fitted density outside it gets a warning. A judgement, stated as such: a real frame's
+/// lightest section, the throat's open arms, carries roughly half the mean (a 300 g, 68.6 cm
+/// frame: about 2-3 g/cm of a 4.4 g/cm mean), its heaviest, the butt with the grip and butt cap
+/// or the hoop's tip with the bumper guard, about twice; a quarter and four times the mean are
+/// well beyond that, where the fit has had to squeeze the mass into an end (or the sheet's
+/// numbers do not belong together).
+pub const PLAUSIBLE_DENSITY: (f64, f64) = (0.25, 4.0);
+/// Head aspect (string-face length / width) taken when a file gives `head_size_sq_in` without
+/// `head_aspect`: 1.35, the proportion of the largest string face the rules allow, 15.5 in long
+/// by 11.5 in wide (ITF Rules of Tennis, Appendix I; quoted e.g. by BBC Sport, "Rules and
+/// equipment: racquets"). An assumption about the shape, not a measurement: a 100 sq in head
+/// becomes 33.3 cm by 24.7 cm, close to the 33 cm by 25 cm of common mid-plus string beds.
+pub const DEFAULT_HEAD_ASPECT: f64 = 1.35;
 /// One kilopond per centimetre, N/m.
 pub const KP_PER_CM: f64 = 980.665;
 /// One balance point (1/8 inch), cm.
@@ -61,9 +75,10 @@ pub struct RacketSpec {
     pub head_width_cm: Option<f64>,
     /// Strung area, sq in (with [`Self::head_aspect`]).
     pub head_size_sq_in: Option<f64>,
-    /// Head length / head width (with [`Self::head_size_sq_in`]).
+    /// Head length / head width (with [`Self::head_size_sq_in`]); absent = [`DEFAULT_HEAD_ASPECT`].
     pub head_aspect: Option<f64>,
-    /// Length of the constant-density handle, cm; default [`DEFAULT_HANDLE_LENGTH_CM`].
+    /// Length of the handle, cm (where the stiffness profile's handle knot sits); default
+    /// [`DEFAULT_HANDLE_LENGTH_CM`].
     pub handle_length_cm: Option<f64>,
     /// Reference (stringing-machine) tension, lb.
     pub tension_lb: Option<f64>,

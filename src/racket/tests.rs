@@ -67,12 +67,78 @@ fn the_density_fit_is_exact_on_the_discrete_beam() {
 
 #[test]
 fn an_unreachable_swingweight_reports_the_reachable_range() {
+    // 340 g balanced 33 cm from the butt: every distribution has SW > M d^2 = 179.9 kg cm^2
     let s = spec(&format!("{BASE}balance_cm = 33\nswingweight_kg_cm2 = 150")).unwrap();
     let msg = s.to_racket(39).unwrap_err().to_string();
-    assert!(msg.starts_with("invalid swingweight_kg_cm2 = 150:") && msg.contains("< swingweight_kg_cm2 <"), "{msg}");
+    assert!(
+        msg.starts_with("invalid swingweight_kg_cm2 = 150:") && msg.contains("179.9 < swingweight_kg_cm2 <"),
+        "{msg}"
+    );
+    // balanced 3 cm from the butt: at most M (d^2 + b (L - b)) = 86.0 kg cm^2
     let s = spec(&format!("{BASE}balance_cm = 3\nswingweight_kg_cm2 = 300")).unwrap();
     let msg = s.to_racket(39).unwrap_err().to_string();
-    assert!(msg.starts_with("invalid balance_cm = 3:") && msg.contains("< balance <"), "{msg}");
+    assert!(msg.contains("at balance_cm = 3 and mass_g = 340") && msg.contains("< 86.02 kg cm^2"), "{msg}");
+}
+
+/// The issue's example: a strung 300 g frame balanced 32.5 cm from the butt with a swingweight
+/// of 315 kg cm^2, refused by the earlier piecewise-linear density, fits exactly with a
+/// plausible density (no warning) whose throat is its lightest part.
+#[test]
+fn a_real_frame_with_its_mass_in_the_head_loop_fits() {
+    let s = spec(
+        "length_in = 27\nmass_g = 300\nbalance_cm = 32.5\nswingweight_kg_cm2 = 315\ntwistweight_kg_cm2 = 14\n\
+         frequency_hz = 150\nhead_size_sq_in = 100",
+    )
+    .unwrap();
+    let fit = s.to_racket(39).unwrap();
+    let rep = &fit.report;
+    for c in [rep.mass_g, rep.balance_cm, rep.swingweight_kg_cm2, rep.twistweight_kg_cm2] {
+        assert!(c.rel_error().unwrap().abs() < 1e-12, "{c:?}");
+    }
+    assert!(rep.frequency_hz.rel_error().unwrap().abs() < 1e-9, "{:?}", rep.frequency_hz);
+    assert!(density_warning(&fit.racket).is_none(), "{:?}", density_warning(&fit.racket));
+    let (throat_at, throat) = rep.density_min_g_per_cm;
+    // lightest in the throat, between the head (33.3 cm long) and the handle, at 2-3 g/cm
+    assert!((30.0..50.0).contains(&throat_at) && (2.0..3.0).contains(&throat), "{rep:?}");
+    assert!(rep.density_g_per_cm[0] > 2.0 * throat && rep.density_g_per_cm[3] > 2.0 * throat, "{rep:?}");
+}
+
+/// Every balance and swingweight inside the physical limits (here the middle 80 % of the
+/// range, on a grid of masses and balances) fits, exactly on the discrete beam, at two N.
+#[test]
+fn every_realisable_balance_and_swingweight_fits() {
+    for mass_g in [100.0, 300.0, 400.0] {
+        for balance_cm in [20.0, 30.0, 34.0, 38.0, 45.0] {
+            let (l, b, m) = (68.58, balance_cm, mass_g / 1000.0);
+            let d = b - 10.0;
+            let (lo, hi) = (m * d * d, m * (d * d + b * (l - b)));
+            for t in [0.1, 0.3, 0.5, 0.7, 0.9] {
+                let sw = lo + t * (hi - lo);
+                let text = format!(
+                    "length_cm = {l}\nmass_g = {mass_g}\nbalance_cm = {b}\nswingweight_kg_cm2 = {sw}\n\
+                     twistweight_kg_cm2 = 14\nei_n_m2 = 150"
+                );
+                for n in [39, 120] {
+                    let fit = spec(&text).unwrap().to_racket(n).unwrap_or_else(|e| panic!("{text}\nN={n}: {e}"));
+                    let rep = fit.report;
+                    for c in [rep.mass_g, rep.balance_cm, rep.swingweight_kg_cm2] {
+                        assert!(c.rel_error().unwrap().abs() < 1e-11, "{text}\nN={n}: {c:?}");
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn a_head_size_without_an_aspect_takes_the_stated_typical_aspect() {
+    let s = spec(&format!("{BASE}head_size_sq_in = 100")).unwrap();
+    let (l, hw) = s.resolve().unwrap().head.unwrap();
+    assert!((l / (2.0 * hw) - DEFAULT_HEAD_ASPECT).abs() < 1e-12);
+    let area_cm2 = std::f64::consts::PI / 4.0 * (l * 100.0) * (2.0 * hw * 100.0);
+    assert!((area_cm2 - 645.16).abs() < 1e-9);
+    let alone = spec(&format!("{BASE}head_aspect = 1.3")).unwrap_err().to_string();
+    assert!(alone.contains("head_size_sq_in = (missing)"), "{alone}");
 }
 
 #[test]
