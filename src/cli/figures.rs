@@ -44,8 +44,9 @@ pub fn run(a: FiguresArgs) -> Result<()> {
         Some(arg) => {
             let spec = racket_impact::racket::load(arg)?;
             let fitted = spec.to_racket(Params::paper().numerics.segments)?;
-            ctx = experiments::Context::with_racket(fitted.racket, fitted.ball);
             let stem = std::path::Path::new(arg).file_stem().and_then(|s| s.to_str()).unwrap_or("custom");
+            ctx = experiments::Context::with_racket(fitted.racket, fitted.ball)
+                .named(spec.name.clone().unwrap_or_else(|| stem.to_string()));
             let name: String =
                 stem.chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' { c } else { '_' }).collect();
             a.out.clone().unwrap_or_else(|| PathBuf::from("figures").join(format!("racket-{name}")))

@@ -67,6 +67,9 @@ pub fn run(a: SimulateArgs) -> Result<()> {
         Format::Json => {
             let mut v = serde_json::to_value(result).map_err(|e| Error::io("<json>", e))?;
             v["params"] = serde_json::to_value(params).map_err(|e| Error::io("<json>", e))?;
+            if !params.oblique.is_normal() {
+                v["spin_convention"] = racket_impact::render::impact::SIMULATE_SPIN_CONVENTION.into();
+            }
             v["f1_hz"] = f1_hz.into();
             format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?)
         }

@@ -64,7 +64,9 @@ pub mod variant_strings;
 pub mod variants;
 
 pub use claims::{Ours, PaperClaim};
-pub use curves::{col, line, on_right, paper_label, paper_list, paper_points, paper_text, paper_value, scaled, styled};
+pub use curves::{
+    col, fit_range, line, on_right, paper_label, paper_list, paper_points, paper_text, paper_value, scaled, styled,
+};
 pub use setup::{
     checked, converged, impact, log_space, node_positions, read_off_curve, sweep, Context, CENTRE_X, V1_OFF_AXIS,
 };
@@ -133,7 +135,11 @@ pub fn run_and_write(exp: &Experiment, ctx: &Context, out: &Path) -> Result<Tabl
         ));
     }
     crate::render::io::write_atomic(&out.join(format!("{}.csv", exp.id)), table.to_csv().as_bytes())?;
-    crate::render::plot::render_png(exp.id, &(exp.chart)(ctx, &table), &out.join(format!("{}.png", exp.id)))?;
+    crate::render::plot::render_png(
+        exp.id,
+        &ctx.adapt((exp.chart)(ctx, &table)),
+        &out.join(format!("{}.png", exp.id)),
+    )?;
     Ok(table)
 }
 

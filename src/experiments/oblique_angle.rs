@@ -11,7 +11,7 @@
 //! nearly rolling, with spin rising in proportion to the tangential speed; at large angles it
 //! slides throughout and the spin levels off at `mu J_n R / I` while the normal impulse falls.
 
-use super::{col, line, on_right, styled, sweep, Context, Experiment, CENTRE_X, V1_OFF_AXIS};
+use super::{col, fit_range, line, on_right, styled, sweep, Context, Experiment, CENTRE_X, V1_OFF_AXIS};
 use crate::error::Result;
 use crate::render::plot::{Chart, LineStyle};
 use crate::render::table::Table;
@@ -95,15 +95,22 @@ fn chart(_: &Context, t: &Table) -> Chart {
         line("angle of incidence (mirror rebound)", vec![0.0, 70.0], vec![0.0, 70.0], 0),
         LineStyle::Faint,
     ));
+    // both axes fit their curves (from 0)
+    let on = |right: bool| {
+        let cs = curves.iter().filter(move |c| (c.axis == crate::render::plot::Axis::Right) == right);
+        fit_range(cs.flat_map(|c| c.y.clone()), true)
+    };
     Chart {
-        title: "Oblique impact at the centre, 30 m/s, no incoming spin, mu 0.4".into(),
+        title: "Oblique impact at the centre (x 15.8 cm): 30 m/s across the face (azimuth 90 deg), \
+                no incoming spin, mu 0.4, kt 2e4 N/m"
+            .into(),
         x_label: "incidence angle from the normal (deg)".into(),
-        y_label: "rebound angle (deg),  100 e_A".into(),
-        y2_label: Some("outgoing spin (rpm)".into()),
+        y_label: "rebound angle from the normal (deg),  100 e_A".into(),
+        y2_label: Some("outgoing spin (rpm; > 0 topspin along the strings)".into()),
         x_log: false,
         x_range: Some((0.0, 70.0)),
-        y_range: Some((0.0, 150.0)),
-        y2_range: Some((0.0, 9000.0)),
+        y_range: on(false),
+        y2_range: on(true),
         curves,
         bands: vec![],
         vlines: vec![],

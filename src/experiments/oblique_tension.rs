@@ -12,7 +12,7 @@
 //! tension moves the spin only through the normal impulse and the contact time, a few per cent;
 //! with mu growing with tension the spin of a sliding ball grows with it.
 
-use super::{col, line, on_right, styled, sweep, Context, Experiment, CENTRE_X, V1_OFF_AXIS};
+use super::{col, fit_range, line, on_right, styled, sweep, Context, Experiment, CENTRE_X, V1_OFF_AXIS};
 use crate::error::Result;
 use crate::params::ks_from_tension_lb;
 use crate::render::plot::{Chart, LineStyle};
@@ -93,29 +93,36 @@ fn run(ctx: &Context) -> Result<Table> {
 }
 
 fn chart(_: &Context, t: &Table) -> Chart {
+    // One colour per incidence angle, one line style per friction law; the spin and the rebound
+    // angle of a case share both and are told apart by height: the spin axis (left) puts its
+    // curves in the upper half, the rebound-angle axis (right) in the lower half, so four legend
+    // entries name all eight curves and none covers another.
     let mut curves = Vec::new();
     for (i, (law, _)) in LAWS.into_iter().enumerate() {
         let style = if i == 0 { LineStyle::Solid } else { LineStyle::Dashed };
         for (j, angle) in ANGLES.into_iter().enumerate() {
             let s = t.filter("mu_law", law).filter_num("angle_deg", angle);
             let x = col(&s, "tension_lb");
-            let tag = format!("{angle} deg, mu {law}");
-            curves.push(styled(line(format!("spin, {tag}"), x.clone(), col(&s, "spin_out_rpm"), 1 + j), style));
-            curves.push(styled(
-                on_right(line(format!("rebound angle, {tag}"), x, col(&s, "rebound_angle_deg"), 3 + 3 * j)),
-                style,
-            ));
+            let mu = if law == "constant" { format!("mu {MU_60}") } else { format!("mu {MU_60} T / 60 lb") };
+            let color = [1, 5][j];
+            curves.push(styled(line(format!("{angle} deg, {mu}"), x.clone(), col(&s, "spin_out_rpm"), color), style));
+            curves.push(styled(on_right(line("", x, col(&s, "rebound_angle_deg"), color)), style));
         }
     }
+    let fit = |right: bool| {
+        let cs = curves.iter().filter(move |c| (c.axis == crate::render::plot::Axis::Right) == right);
+        fit_range(cs.flat_map(|c| c.y.clone()), false).unwrap_or((0.0, 1.0))
+    };
+    let ((s0, s1), (a0, a1)) = (fit(false), fit(true));
     Chart {
-        title: "Spin and rebound angle against tension, 30 m/s at the centre".into(),
-        x_label: "string tension (lb); ks = 4e4 N/m x T / 60 lb".into(),
-        y_label: "outgoing spin (rpm)".into(),
-        y2_label: Some("rebound angle from the normal (deg)".into()),
+        title: "Spin (upper) and rebound angle (lower) vs tension: 30 m/s, centre, azimuth 90 deg, no spin in".into(),
+        x_label: "string tension (lb); ks = 4e4 N/m x T / 60 lb; kt 2e4 N/m".into(),
+        y_label: "outgoing spin (rpm), upper curves".into(),
+        y2_label: Some("rebound angle from the normal (deg), lower curves".into()),
         x_log: false,
         x_range: Some((40.0, 70.0)),
-        y_range: Some((0.0, 12000.0)),
-        y2_range: Some((0.0, 100.0)),
+        y_range: Some((s0 - 1.2 * (s1 - s0), s1)),
+        y2_range: Some((a0, a1 + 1.2 * (a1 - a0))),
         curves,
         bands: vec![],
         vlines: vec![],

@@ -3,6 +3,7 @@
 
 use crate::error::{Error, Result};
 use crate::params::{Ball, LoadRule, Params, Racket};
+use crate::render::plot::{Chart, LineStyle};
 use crate::solve::{simulate, ImpactResult};
 
 /// "Centre of the strings": the node of mode 1 as the paper places it, m from the tip.
@@ -13,12 +14,15 @@ pub const V1_OFF_AXIS: f64 = 30.0;
 /// The racket and ball an experiment runs on: the paper's ([`Context::paper`]) unless
 /// `figures --racket` chose another ([`Context::with_racket`]). The paper-number report always
 /// uses the paper's.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Context {
     /// The racket.
     pub racket: Racket,
     /// The ball.
     pub ball: Ball,
+    /// The racket's name when it is not the paper's (`figures --racket`): the figures say it in
+    /// their titles and leave out the paper's markers, which belong to the paper's racket.
+    pub racket_name: Option<String>,
 }
 
 impl Default for Context {
@@ -31,7 +35,7 @@ impl Context {
     /// The paper's racket and ball.
     pub fn paper() -> Self {
         let p = Params::paper();
-        Context { racket: p.racket, ball: p.ball }
+        Context { racket: p.racket, ball: p.ball, racket_name: None }
     }
 
     /// Another racket and ball. The paper's figures place impacts along the whole length, as
@@ -40,7 +44,24 @@ impl Context {
     pub fn with_racket(mut racket: Racket, ball: Ball) -> Self {
         racket.head_length = None;
         racket.half_width = racket.half_width.max(Racket::default().half_width);
-        Context { racket, ball }
+        Context { racket, ball, racket_name: None }
+    }
+
+    /// The same context naming its racket (not the paper's).
+    pub fn named(mut self, name: impl Into<String>) -> Self {
+        self.racket_name = Some(name.into());
+        self
+    }
+
+    /// An experiment's chart as drawn for this context: on another racket than the paper's,
+    /// the paper's values (its [`LineStyle::Paper`] markers and any curve labelled "paper...")
+    /// are left out, since they describe the paper's racket, and the title names the racket.
+    pub fn adapt(&self, mut chart: Chart) -> Chart {
+        if let Some(name) = &self.racket_name {
+            chart.curves.retain(|c| c.style != LineStyle::Paper && !c.label.starts_with("paper"));
+            chart.title = format!("{} (racket: {name}; the paper's values left out)", chart.title);
+        }
+        chart
     }
 
     /// The paper's parameters (the Fig 4 impact, node load, N = 39) on this racket and ball.

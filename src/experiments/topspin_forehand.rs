@@ -11,7 +11,7 @@
 //! the normal closing speed falls, and a launch angle well below the path angle (the strings
 //! throw the ball out near their normal).
 
-use super::{col, line, on_right, styled, Context, Experiment, CENTRE_X};
+use super::{col, fit_range, line, on_right, scaled, styled, Context, Experiment, CENTRE_X};
 use crate::error::Result;
 use crate::render::plot::{Chart, LineStyle};
 use crate::render::table::Table;
@@ -59,23 +59,32 @@ fn run(ctx: &Context) -> Result<Table> {
     Ok(t)
 }
 
+/// km/h per m/s: the figure speaks in the `speed` command's default unit.
+const KMH: f64 = 3.6;
+
 fn chart(_: &Context, t: &Table) -> Chart {
     let x = col(t, "path_deg");
+    let curves = vec![
+        line("ball speed (km/h)", x.clone(), scaled(col(t, "ball_speed_m_per_s"), KMH), 1),
+        line("launch angle (deg)", x.clone(), col(t, "launch_deg"), 2),
+        styled(line("path angle (deg)", x.clone(), x.clone(), 0), LineStyle::Faint),
+        on_right(line("topspin (rpm), court frame", x, col(t, "spin_rpm"), 3)),
+    ];
+    let left = fit_range(curves[..3].iter().flat_map(|c| c.y.clone()), true);
     Chart {
-        title: "Topspin forehand: racket 30 m/s along the path, ball in at 20 m/s, centre, 60 lb".into(),
+        title: format!(
+            "Topspin forehand: racket {:.0} km/h along the path, ball in at {:.0} km/h, centre, 60 lb, mu 0.4",
+            RACKET_SPEED * KMH,
+            INCOMING * KMH
+        ),
         x_label: "swing path angle above the horizontal (deg)".into(),
-        y_label: "ball speed (m/s),  launch angle (deg)".into(),
-        y2_label: Some("topspin (rpm)".into()),
+        y_label: "ball speed (km/h),  launch angle (deg)".into(),
+        y2_label: Some("topspin in the court's frame (rpm)".into()),
         x_log: false,
         x_range: Some((0.0, 40.0)),
-        y_range: Some((0.0, 80.0)),
-        y2_range: Some((0.0, 8000.0)),
-        curves: vec![
-            line("ball speed (m/s)", x.clone(), col(t, "ball_speed_m_per_s"), 1),
-            line("launch angle (deg)", x.clone(), col(t, "launch_deg"), 2),
-            styled(line("path angle (deg)", x.clone(), x.clone(), 0), LineStyle::Faint),
-            on_right(line("topspin (rpm)", x, col(t, "spin_rpm"), 3)),
-        ],
+        y_range: left,
+        y2_range: fit_range(col(t, "spin_rpm"), true),
+        curves,
         bands: vec![],
         vlines: vec![],
     }

@@ -88,7 +88,7 @@ declare_params! {
     /// In-plane direction of the incoming ball, degrees from the long axis towards the handle; 90 = across the face to +r (-360 ..= 360; default 0)
     AZIMUTH_DEG azimuth_deg: f64 = "azimuth-deg" at oblique.azimuth_deg,
         what "azimuth", unit "deg", column "azimuth_deg", within(-360.0, 360.0);
-    /// Incoming spin, rpm; topspin > 0 (-2e4 ..= 2e4; default 0)
+    /// Incoming spin, rpm; > 0 topspin relative to the ball's motion along the strings (-2e4 ..= 2e4; default 0)
     SPIN_RPM spin_rpm: f64 = "spin-rpm" at oblique.spin_rpm,
         what "incoming spin", unit "rpm", column "spin_rpm", within(-2.0e4, 2.0e4), usual(-6.0e3, 6.0e3);
     /// Friction coefficient of ball on strings (0 ..= 2; default 0.4)

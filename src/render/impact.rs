@@ -52,7 +52,13 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
         if (text.hand_only && !held) || (text.oblique_only && p.oblique.is_normal()) {
             continue;
         }
-        let line = format!("{:<18} {:>12} {}", text.label, fmt_sig(field.number(r) * text.scale, 6), text.unit);
+        let line = format!(
+            "{:<18} {:>12} {}{}",
+            text.label,
+            fmt_sig(field.number(r) * text.scale, 6),
+            text.unit,
+            sign_remark(field.key, r)
+        );
         s.push_str(line.trim_end());
         s.push('\n');
     }
@@ -62,8 +68,28 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
     s
 }
 
+/// The sign convention of `--spin-rpm` and `spin_out_rpm`, as the JSON and CSV of an oblique
+/// impact print it.
+pub const SIMULATE_SPIN_CONVENTION: &str =
+    "spin_rpm and spin_out_rpm: > 0 topspin relative to the ball's incoming motion along the strings (not the court's frame)";
+
+/// What the sign of an oblique field means for this result, appended to its text line: the
+/// normal rebound velocity says whether the ball rebounds or moves on, and the rebound angle
+/// why it is over 90 degrees when it does (the labels themselves are fixed).
+pub fn sign_remark(key: &str, r: &ImpactResult) -> &'static str {
+    let on = r.v2_n < 0.0;
+    match key {
+        "v2_n" if r.v2_n > 0.0 => ": > 0, rebounds away from the strings",
+        "v2_n" if on => ": < 0, moves on in its incoming direction (the frame recoils faster)",
+        "v2_n" if r.v2_n == 0.0 => ": 0, no normal motion after impact",
+        "rebound_angle_deg" if on => ": over 90 since v2_n < 0 (the ball moves on, no rebound)",
+        _ => "",
+    }
+}
+
 /// The result as a one-row CSV with the field names of SPEC.md section 2 as the header
-/// (full precision), then the impact it describes ([`recorded`]).
+/// (full precision), then the impact it describes ([`recorded`], and [`recorded_oblique`] for
+/// an oblique or spinning ball).
 pub fn result_csv(params: &Params, r: &ImpactResult) -> String {
     let v = serde_json::to_value(r).unwrap_or_default();
     let mut head = Vec::new();
@@ -74,7 +100,7 @@ pub fn result_csv(params: &Params, r: &ImpactResult) -> String {
             row.push(v.to_string());
         }
     }
-    for (column, value) in recorded(params) {
+    for (column, value) in recorded(params).into_iter().chain(recorded_oblique(params)) {
         head.push(column.to_string());
         row.push(value.to_string());
     }
@@ -86,6 +112,23 @@ pub fn result_csv(params: &Params, r: &ImpactResult) -> String {
 pub fn recorded(p: &Params) -> [(&'static str, f64); 4] {
     use crate::params::keys::{KS, R, V1, X};
     [(X.column, p.impact.x), (R.column, p.impact.r), (KS.column, p.strings.ks), (V1.column, p.impact.v1)]
+}
+
+/// The incidence, azimuth, incoming spin and friction of an oblique or spinning impact (none
+/// at normal incidence without spin), column and value: the CSV of such an impact records
+/// what it was run at (spin with [`SIMULATE_SPIN_CONVENTION`]).
+pub fn recorded_oblique(p: &Params) -> Vec<(&'static str, f64)> {
+    use crate::params::keys::{ANGLE_DEG, AZIMUTH_DEG, MU, SPIN_RPM};
+    if p.oblique.is_normal() {
+        return Vec::new();
+    }
+    let o = &p.oblique;
+    vec![
+        (ANGLE_DEG.column, o.angle_deg),
+        (AZIMUTH_DEG.column, o.azimuth_deg),
+        (SPIN_RPM.column, o.spin_rpm),
+        (MU.column, o.mu),
+    ]
 }
 
 /// The time series as a table; every row ends with the impact it belongs to ([`recorded`]).

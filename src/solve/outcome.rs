@@ -216,17 +216,26 @@ impact_result! {
     recontact: bool [""] checked: false, sweep: true, text: None;
     /// Time step used, s.
     dt_s: f64 ["s"] checked: false, sweep: false, text: text("dt", "s");
-    /// Rebound velocity normal to the string plane, away from it, m/s (racket initially at
-    /// rest; `e_a` times the incoming normal speed). This and the fields below are those of an
+    /// Rebound velocity along the outward normal of the string plane, m/s (racket initially at
+    /// rest; `e_a` times the incoming normal speed): > 0 the ball rebounds away from the strings,
+    /// < 0 (where `e_a` < 0, near the tip) it moves on in its incoming direction, slower than
+    /// the recoiling frame it leaves. This and the fields below are those of an
     /// oblique or spinning ball: NaN, and left out of the JSON, at normal incidence without spin.
-    v2_n: f64 ["m/s"] checked: false, sweep: true, text: text_oblique("v2_n", "m/s normal, away from the strings");
+    v2_n: f64 ["m/s"] checked: false, sweep: true, text: text_oblique("v2_n", "m/s along the strings' outward normal (racket at rest before)");
     /// Rebound velocity in the string plane along `t`, the in-plane direction the ball came
     /// in along, m/s (negative: back the way it came).
-    v2_t: f64 ["m/s"] checked: false, sweep: true, text: text_oblique("v2_t", "m/s tangential, along the incoming direction");
-    /// Outgoing spin, rpm, with the sign convention of `--spin-rpm` (topspin positive).
-    spin_out_rpm: f64 ["rpm"] checked: false, sweep: true, text: text_oblique("spin_out", "rpm (topspin > 0)");
-    /// Rebound angle from the string-plane normal, degrees (positive: on along `t`).
-    rebound_angle_deg: f64 ["deg"] checked: false, sweep: true, text: text_oblique("rebound_angle", "deg from the normal");
+    v2_t: f64 ["m/s"] checked: false, sweep: true, text: text_oblique("v2_t", "m/s in the string plane (> 0: on along the incoming in-plane direction)");
+    /// Outgoing spin, rpm, with the sign convention of `--spin-rpm`: positive is topspin
+    /// relative to the ball's incoming motion along the strings (the spin of a ball rolling
+    /// along the strings in the in-plane direction it came in along), not the court's topspin
+    /// (`speed` converts to the court's frame).
+    spin_out_rpm: f64 ["rpm"] checked: false, sweep: true, text: text_oblique("spin_out", "rpm (> 0: topspin relative to the ball's incoming motion along the strings)");
+    /// Direction of the outgoing velocity from the outward normal of the string plane, degrees,
+    /// `atan2(v2_t, v2_n)` (positive: on along `t`). Over 90 degrees exactly when `v2_n` < 0:
+    /// the ball does not rebound but moves on in its incoming direction, leaving the strings
+    /// only because the frame recoils faster; the angle is then still the direction it moves
+    /// in, and the text output says so.
+    rebound_angle_deg: f64 ["deg"] checked: false, sweep: true, text: text_oblique("rebound_angle", "deg, outgoing velocity from the outward normal");
     /// Tangential coefficient of restitution of the contact point, `-(w_out - u_out) / w_in`
     /// (`w` the slip velocity of the ball's contact point, `u_out` the frame's there); NaN
     /// (left out of the JSON) when the contact point arrives without slip.

@@ -13,6 +13,10 @@ use crate::solve::swing::Swing;
 use crate::solve::ImpactResult;
 use crate::study::{check_comparison, Sources};
 
+/// The sign conventions of the spins a stroke's JSON prints.
+pub const SPEED_SPIN_CONVENTION: &str = "spin_rpm: > 0 topspin in the court's frame (the ball's top moving forward in its \
+     flight); result.spin_out_rpm: > 0 topspin relative to the ball's incoming motion along the strings (the racket's frame)";
+
 /// A unit of speed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SpeedUnit {
@@ -230,6 +234,7 @@ impl SpeedComparison {
                 if let (Some((launch_deg, spin_rpm)), Some(o)) = (launch, v.as_object_mut()) {
                     o.insert("launch_deg".into(), (*launch_deg).into());
                     o.insert("spin_rpm".into(), (*spin_rpm).into());
+                    o.insert("spin_convention".into(), SPEED_SPIN_CONVENTION.into());
                 }
                 v
             })
@@ -283,6 +288,10 @@ impl SpeedComparison {
             req.incoming,
             req.incoming_spin_rpm,
             u = unit.label
+        );
+        s.push_str(
+            "spin: > 0 is topspin in the court's frame (the ball's top moving forward in its flight), \
+             for the incoming ball and the spin column alike\n",
         );
         s.push_str(&format!(
             "{:<22} {:>7} {:>9} {:>8} {:>10} {:>12} {:>9} {:>10} {:>9}\n",

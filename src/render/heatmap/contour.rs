@@ -159,3 +159,33 @@ impl<'a> Row<'a> {
         nearest.is_finite().then_some(nearest)
     }
 }
+
+/// `z` (on an `nx` x `ny` grid, row-major, x slowest) with `rings` rings of missing points next
+/// to the data filled in: each pass gives every missing point with a neighbour (of the four
+/// along the axes) that has data the mean of those neighbours. Points with data are unchanged.
+pub fn fill_rim(nx: usize, ny: usize, z: &[f64], rings: usize) -> Vec<f64> {
+    let mut out = z.to_vec();
+    if z.len() != nx * ny {
+        return out;
+    }
+    for _ in 0..rings {
+        let prev = out.clone();
+        for i in 0..nx {
+            for j in 0..ny {
+                if prev[i * ny + j].is_finite() {
+                    continue;
+                }
+                let mut near = [(i.wrapping_sub(1), j), (i + 1, j), (i, j.wrapping_sub(1)), (i, j + 1)]
+                    .into_iter()
+                    .filter(|&(a, b)| a < nx && b < ny)
+                    .map(|(a, b)| prev[a * ny + b])
+                    .filter(|v| v.is_finite());
+                if let Some(first) = near.next() {
+                    let (sum, n) = near.fold((first, 1.0), |(s, n), v| (s + v, n + 1.0));
+                    out[i * ny + j] = sum / n;
+                }
+            }
+        }
+    }
+    out
+}

@@ -8,7 +8,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::FontStyle;
 
-use super::{color_range, contour_levels, contour_segments, diverging, viridis, Row};
+use super::{color_range, contour_levels, contour_segments, diverging, fill_rim, viridis, Row, BELOW_FLOOR};
 use super::{ColorScale, HeatMap, CONTOUR_TARGET};
 use crate::render::plot::{self, AXIS_DESC_SIZE, HEIGHT, TICK_SIZE, WIDTH};
 use crate::render::table::fmt_sig;
@@ -140,8 +140,20 @@ pub(super) fn draw(root: &DrawingArea<BitMapBackend<'_>, Shift>, map: &HeatMap) 
         .draw()
         .map_err(plot::msg)?;
 
-    let ((lo, hi), data) = color_range(&map.z, map.scale);
+    let ((mut lo, mut hi), mut data) = color_range(&map.z, map.scale);
+    if let Some(floor) = map.floor {
+        // the scale starts at the floor (values below are grey), the contours too
+        lo = lo.max(floor);
+        if hi <= lo {
+            hi = lo + 1.0;
+        }
+        data = data.map(|(dlo, dhi)| (dlo.max(floor), dhi.max(floor)));
+    }
+    let below = RGBColor(BELOW_FLOOR.0, BELOW_FLOOR.1, BELOW_FLOOR.2);
     let color = |v: f64| {
+        if map.floor.is_some_and(|f| v < f) {
+            return below;
+        }
         let t = (v - lo) / (hi - lo);
         match map.scale {
             ColorScale::Sequential => viridis(t),
@@ -209,6 +221,8 @@ fn draw_shading(
     let (px_range, py_range) = cc.plotting_area().get_pixel_range();
     let (pw, ph) = (f64::from(px_range.end - px_range.start), f64::from(py_range.end - py_range.start));
     let plot_rect: Rect = (px_range.start, py_range.start, px_range.end, py_range.end);
+    // a clipped map's grid extended past its data so the shading reaches the outline
+    let shaded = if map.clip.is_empty() { map.z.clone() } else { fill_rim(map.xs.len(), map.ys.len(), &map.z, 2) };
     // each pixel row's colours in parallel (a row depends on nothing but the map), then drawn
     // in order
     use rayon::prelude::*;
@@ -218,7 +232,7 @@ fn draw_shading(
         .map(|py| {
             let y = y1 - (f64::from(py - py_range.start) + 0.5) / ph * (y1 - y0);
             let mut out = Vec::new();
-            let Some(row) = Row::at(&map.xs, &map.ys, &map.z, y) else { return out };
+            let Some(row) = Row::at(&map.xs, &map.ys, &shaded, y) else { return out };
             let mut cursor = 0;
             for px in px_range.clone() {
                 let x = x0 + (f64::from(px - px_range.start) + 0.5) / pw * (x1 - x0);

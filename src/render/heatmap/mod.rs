@@ -11,9 +11,12 @@
 //! Shading: a pixel inside a grid cell whose four corners all have data is coloured by the
 //! bilinear interpolation of the corners (the contour lines are the level sets of the same
 //! interpolant along the cell edges); a pixel in a cell with only some corners takes the value
-//! of its nearest corner if that corner has data and stays white otherwise, so only the
-//! neighbourhood of computed points (half a grid step around each) is coloured; the shading is
-//! clipped to every ellipse in [`HeatMap::clip`]. Each contour line carries its value in a
+//! of its nearest corner if that corner has data and stays white otherwise. A map clipped to
+//! ellipses ([`HeatMap::clip`], a string face sampled inside its outline) first extends its
+//! grid by two rings of points outside the data, each the mean of its neighbours with data
+//! ([`fill_rim`]), so the shading reaches the outline smoothly instead of stopping in a
+//! staircase of cells; every pixel so coloured is within about a grid step of a computed
+//! point, and the contour lines use the data alone. Each contour line carries its value in a
 //! small label. [`ColorScale::for_values`] picks the diverging scale only for data of both
 //! signs.
 //!
@@ -38,7 +41,7 @@ use plotters::prelude::*;
 use crate::error::{Error, Result};
 use crate::render::plot::{self, HEIGHT, WIDTH};
 pub use colour::{color_range, diverging, viridis, ColorScale};
-pub use contour::{contour_levels, contour_segments, sample, Row, Seg, CONTOUR_TARGET};
+pub use contour::{contour_levels, contour_segments, fill_rim, sample, Row, Seg, CONTOUR_TARGET};
 
 /// An ellipse with its axes along x and y, centred on y = 0, spanning `x0..x1`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -132,7 +135,15 @@ pub struct HeatMap {
     pub segments: Vec<Segment>,
     /// Labelled markers.
     pub markers: Vec<Marker>,
+    /// The smallest value the quantity can meaningfully take (e.g. 0 for a power): the colour
+    /// scale starts there, values below it are shaded [`BELOW_FLOOR`] grey, and no contour
+    /// line is drawn below it (say what grey means in [`HeatMap::bar_label`]). `None`: the
+    /// scale spans the data.
+    pub floor: Option<f64>,
 }
+
+/// The grey of values below a map's [`HeatMap::floor`].
+pub const BELOW_FLOOR: (u8, u8, u8) = (190, 190, 190);
 
 /// Render `map` as a [`WIDTH`] x [`HEIGHT`] PNG at `path`, atomically (see
 /// [`crate::render::plot::render_png`]); errors are [`Error::Plot`] with `id`.

@@ -231,3 +231,70 @@ fn map_pixels_away_from_computed_points_stay_background() {
     // and the computed strip is coloured
     assert_ne!(rgb(px(0.7), py(5.0)), white);
 }
+
+#[test]
+fn the_rim_is_filled_from_the_data_and_the_data_kept() {
+    // 5 x 5 with only the centre computed: one ring gets it, the corners need a second ring
+    let mut z = vec![f64::NAN; 25];
+    z[2 * 5 + 2] = 3.0;
+    let one = fill_rim(5, 5, &z, 1);
+    assert_eq!(one[2 * 5 + 2], 3.0);
+    for k in [5 + 2, 3 * 5 + 2, 2 * 5 + 1, 2 * 5 + 3] {
+        assert_eq!(one[k], 3.0, "{k}");
+    }
+    assert!(one[5 + 1].is_nan() && one[0].is_nan());
+    let two = fill_rim(5, 5, &z, 2);
+    assert_eq!(two[5 + 1], 3.0);
+    assert!(two[0].is_nan(), "three steps away");
+    // a missing point between two values takes their mean; computed points never change
+    let (_, _, mut lin) = grid(3, 1, |x, _| x);
+    lin[1] = f64::NAN;
+    let filled = fill_rim(3, 1, &lin, 1);
+    assert_eq!(filled, vec![0.0, 1.0, 2.0]);
+}
+
+/// Pixel colour of a drawn map at (x, y) in data units.
+fn pixel(map: &HeatMap, buf: &[u8], (x, y): (f64, f64)) -> (u8, u8, u8) {
+    let ((l, t, r, b), ((x0, x1), (y0, y1))) = plot_geometry(map);
+    let px = l + ((x - x0) / (x1 - x0) * f64::from(r - l)).round() as i32;
+    let py = b - ((y - y0) / (y1 - y0) * f64::from(b - t)).round() as i32;
+    let k = ((py as u32 * WIDTH + px as u32) * 3) as usize;
+    (buf[k], buf[k + 1], buf[k + 2])
+}
+
+#[test]
+fn clipped_maps_are_shaded_up_to_their_outline() {
+    // the face sampled inside its outline only, as the string-face maps are
+    let map = face_map(41, 21, |x, y| x + 0.3 * y);
+    let buf = draw_to_buffer(&map);
+    let e = map.clip[0];
+    let (c, a) = (0.5 * (e.x0 + e.x1), 0.5 * (e.x1 - e.x0));
+    let mut white = Vec::new();
+    for k in 0..360 {
+        let t = f64::from(k).to_radians();
+        // 96 % of the way out: inside the outline, beyond the last computed points of many cells
+        let p = (c + 0.96 * a * t.cos(), 0.96 * e.half_height * t.sin());
+        if pixel(&map, &buf, p) == (255, 255, 255) {
+            white.push(k);
+        }
+    }
+    assert!(white.is_empty(), "unshaded just inside the outline at angles {white:?}");
+}
+
+#[test]
+fn values_below_the_floor_are_grey_and_the_colour_scale_starts_at_it() {
+    let mut map = face_map(41, 21, |x, _| x - 8.0);
+    map.floor = Some(0.0);
+    let buf = draw_to_buffer(&map);
+    let grey = BELOW_FLOOR;
+    assert_eq!(pixel(&map, &buf, (4.0, 0.0)), grey, "below the floor");
+    assert_ne!(pixel(&map, &buf, (20.0, 0.0)), grey);
+    // just above the floor the colour is the bottom of the colour map
+    let v = viridis(0.0);
+    let (r, g, b) = pixel(&map, &buf, (8.3, 0.0));
+    assert!((i32::from(r) - i32::from(v.0)).abs() < 30 && (i32::from(b) - i32::from(v.2)).abs() < 30, "{r} {g} {b}");
+    // without a floor the same map has no grey
+    map.floor = None;
+    let buf = draw_to_buffer(&map);
+    assert_ne!(pixel(&map, &buf, (4.0, 0.0)), grey);
+}

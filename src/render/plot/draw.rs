@@ -19,6 +19,10 @@ use super::{font, msg, palette, tick_label, tint, title_font, Axis, Chart, LineS
 use super::{AXIS_DESC_SIZE, BAND_ALPHA, BAND_COLOR, CLIPPED_NOTE, LEGEND_GLYPH, TICK_SIZE, VLINE_COLOR, VLINE_DASHES};
 use crate::render::table::fmt_sig;
 
+/// How much white a [`LineStyle::Faint`] curve's colour is mixed with: light enough to sit
+/// behind the main curves, dark enough (with 2 px) to read.
+pub(super) const FAINT_TINT: f64 = 0.3;
+
 /// Draw a series on the primary or the secondary coordinates.
 macro_rules! draw_on {
     ($cc:expr, $right:expr, $elems:expr) => {{
@@ -245,7 +249,7 @@ fn draw_curves<XC: Ranged<ValueType = f64>>(
                 let style: ShapeStyle = if curve.style == LineStyle::Solid {
                     color.stroke_width(2)
                 } else {
-                    tint(color, 0.6).stroke_width(1)
+                    tint(color, FAINT_TINT).stroke_width(2)
                 };
                 let lines = bounds.polylines(&curve.x, &curve.y);
                 for p in &lines {

@@ -94,7 +94,8 @@ pub enum LineStyle {
     Solid,
     /// Dashed line, 2 px.
     Dashed,
-    /// Thin (1 px) solid line in a light tint of the curve colour, for background curves.
+    /// Solid line in a lighter tint of the curve colour (30 % white, 2 px), for background
+    /// curves: behind the main curves, still readable.
     Faint,
     /// Markers only (filled circles), no connecting line.
     Points,

@@ -338,3 +338,31 @@ fn legend_fits_between_curves_when_no_corner_is_free() {
     assert!(!pts.iter().any(|&(px, py)| px >= x - 4 && px <= x + 304 && py >= y - 4 && py <= y + 154));
     assert_eq!(x, 1000 - 12 - 300, "the right side first");
 }
+
+/// WCAG contrast ratio of a colour against white.
+fn contrast_on_white(c: RGBColor) -> f64 {
+    let lin = |v: u8| {
+        let s = f64::from(v) / 255.0;
+        if s <= 0.04045 {
+            s / 12.92
+        } else {
+            ((s + 0.055) / 1.055).powf(2.4)
+        }
+    };
+    let l = 0.2126 * lin(c.0) + 0.7152 * lin(c.1) + 0.0722 * lin(c.2);
+    1.05 / (l + 0.05)
+}
+
+#[test]
+fn faint_curves_stay_readable_on_white() {
+    // every palette colour that reads on white as a solid line (contrast >= 2) still does as a
+    // faint one (>= 1.5; the old 60 % tint gave sky blue 1.37, the figures' near-invisible curves)
+    for (i, _) in PALETTE.iter().enumerate() {
+        let solid = palette(i);
+        if contrast_on_white(solid) < 2.0 {
+            continue;
+        }
+        let faint = tint(solid, super::draw::FAINT_TINT);
+        assert!(contrast_on_white(faint) >= 1.5, "palette {i}: {}", contrast_on_white(faint));
+    }
+}

@@ -14,7 +14,8 @@ impl Face {
 }
 
 impl FaceMap {
-    /// The table: x_m, r_m, the fixed ks and v1 (and an oblique ball's angle and spin), every
+    /// The table: x_m, r_m, the fixed ks and v1 (and an oblique ball's angle, azimuth, spin and
+    /// friction), every
     /// quantity's column, recontact (0/1); one row per evaluated
     /// point, row-major (x slowest).
     pub fn table(&self) -> Table {
@@ -22,17 +23,14 @@ impl FaceMap {
         let oblique = !p.oblique.is_normal();
         // every row names its whole impact: the point, and what the map holds fixed
         let mut cols = vec!["x_m", "r_m", "ks_n_per_m", "v1_m_per_s"];
-        if oblique {
-            cols.extend(["angle_deg", "spin_rpm"]);
-        }
+        let fixed = crate::render::impact::recorded_oblique(p);
+        cols.extend(fixed.iter().map(|(c, _)| *c));
         cols.extend(Quantity::in_table(oblique).map(|q| q.column()));
         cols.push("recontact");
         let mut t = Table::new("map", &cols);
         for (x, r, res) in self.points() {
             let mut row: Vec<Value> = vec![x.into(), r.into(), p.strings.ks.into(), p.impact.v1.into()];
-            if oblique {
-                row.extend([Value::from(p.oblique.angle_deg), Value::from(p.oblique.spin_rpm)]);
-            }
+            row.extend(fixed.iter().map(|(_, v)| Value::from(*v)));
             row.extend(Quantity::in_table(oblique).map(|q| Value::Num(q.of(res))));
             row.push(Value::Int(i64::from(res.recontact)));
             // the row has one value per column, so push cannot fail
@@ -63,7 +61,10 @@ impl FaceMap {
             subtitle: subtitle(&self.params, &[self.face], &self.grid, self.len()),
             x_label: "x: distance from the tip (cm)".into(),
             y_label: "r: distance from the long axis (cm)".into(),
-            bar_label: bar_label(q, false),
+            bar_label: match q.floor() {
+                Some((_, note)) => format!("{}; {note}", bar_label(q, false)),
+                None => bar_label(q, false),
+            },
             xs: self.grid.xs.iter().map(|x| 100.0 * x).collect(),
             ys: self.grid.rs.iter().map(|r| 100.0 * r).collect(),
             z: self.values(q),
@@ -72,6 +73,7 @@ impl FaceMap {
             outlines: vec![face],
             segments,
             markers,
+            floor: q.floor().map(|(f, _)| f),
         }
     }
 }
@@ -81,9 +83,19 @@ fn max_label(m: &MapPoint) -> String {
     format!("max e_A {:.4} at ({:.1}, {:.1}) cm", m.value, 100.0 * m.x_m, 100.0 * m.r_m + 0.0)
 }
 
-/// "tweener, ks 36667 N/m".
+/// "tweener, ks 36667 N/m", and for an oblique or spinning ball what it was run at.
 fn config_title(label: &str, p: &Params) -> String {
-    format!("{label}, ks {:.0} N/m", p.strings.ks)
+    format!("{label}, ks {:.0} N/m{}", p.strings.ks, oblique_text(p))
+}
+
+/// ", angle 30 deg, azimuth 0 deg, spin 1000 rpm, mu 0.4" for an oblique or spinning ball
+/// (spin > 0: topspin relative to the ball's incoming motion along the strings), else "".
+fn oblique_text(p: &Params) -> String {
+    if p.oblique.is_normal() {
+        return String::new();
+    }
+    let o = &p.oblique;
+    format!(", angle {} deg, azimuth {} deg, spin {} rpm, mu {}", o.angle_deg, o.azimuth_deg, o.spin_rpm, o.mu)
 }
 
 /// "power potential 100 e_A (%)".
@@ -137,26 +149,28 @@ impl DiffMap {
     pub fn table(&self, q: Quantity) -> Table {
         let c = q.column();
         let (ca, cb, cd) = (format!("{c}_a"), format!("{c}_b"), format!("{c}_b_minus_a"));
-        let cols =
-            ["x_m", "r_m", "ks_a_n_per_m", "ks_b_n_per_m", "v1_m_per_s", &ca, &cb, &cd, "recontact_a", "recontact_b"];
-        let mut t = Table::new("map_diff", &cols);
         let (pa, pb) = (&self.a.params, &self.b.params);
+        // an oblique comparison records its incidence (the same for A and B)
+        let fixed = crate::render::impact::recorded_oblique(pa);
+        let mut cols = vec!["x_m", "r_m", "ks_a_n_per_m", "ks_b_n_per_m", "v1_m_per_s"];
+        cols.extend(fixed.iter().map(|(c, _)| *c));
+        cols.extend([ca.as_str(), cb.as_str(), cd.as_str(), "recontact_a", "recontact_b"]);
+        let mut t = Table::new("map_diff", &cols);
         for (k, (ra, rb)) in self.a.results.iter().zip(&self.b.results).enumerate() {
             if let (Some(ra), Some(rb)) = (ra, rb) {
                 let (x, r) = self.a.grid.point(k);
                 let (va, vb) = (q.of(ra), q.of(rb));
-                let _ = t.push(vec![
-                    x.into(),
-                    r.into(),
-                    pa.strings.ks.into(),
-                    pb.strings.ks.into(),
-                    pa.impact.v1.into(),
+                let mut row: Vec<Value> =
+                    vec![x.into(), r.into(), pa.strings.ks.into(), pb.strings.ks.into(), pa.impact.v1.into()];
+                row.extend(fixed.iter().map(|(_, v)| Value::from(*v)));
+                row.extend([
                     va.into(),
                     vb.into(),
                     (vb - va).into(),
                     Value::Int(i64::from(ra.recontact)),
                     Value::Int(i64::from(rb.recontact)),
                 ]);
+                let _ = t.push(row);
             }
         }
         t
@@ -202,7 +216,13 @@ impl DiffMap {
         }
         let z = self.values(q);
         HeatMap {
-            title: format!("B - A: {} (A: {}; B: {})", q.description(), label_a, label_b),
+            title: format!(
+                "B - A: {} (A: {}; B: {}){}",
+                q.description(),
+                label_a,
+                label_b,
+                oblique_text(&self.a.params)
+            ),
             subtitle: format!(
                 "ks A {:.0}, B {:.0} N/m; {}",
                 self.a.params.strings.ks,
@@ -220,6 +240,7 @@ impl DiffMap {
             outlines,
             segments,
             markers,
+            floor: None,
         }
     }
 }

@@ -128,6 +128,17 @@ impl Quantity {
         }
     }
 
+    /// The smallest value that means what the name says, and what a value below it means: a
+    /// power potential (or e_A) below 0 is a ball that does not come back off a racket at rest
+    /// (it moves on behind the recoiling frame), not a negative power. A map shades such
+    /// points grey and starts its colour scale at the floor.
+    pub fn floor(self) -> Option<(f64, &'static str)> {
+        match self {
+            Quantity::EA | Quantity::Power => Some((0.0, "grey: below 0, no rebound")),
+            _ => None,
+        }
+    }
+
     /// Its value for one impact.
     pub fn of(self, r: &ImpactResult) -> f64 {
         let (field, scale) = self.source();

@@ -1,0 +1,134 @@
+//! Results say what they describe and their labels agree with their signs (issue 24, class 5):
+//! across impact points, incidence angles, azimuths and spins, the text of `v2_n` says rebound
+//! or moving on exactly as its sign does, the rebound angle is the direction of (v2_n, v2_t)
+//! and is over 90 degrees exactly when the ball moves on, every oblique output (text, CSV,
+//! JSON, map table and title) names the angle, azimuth, spin and friction it was run at, and
+//! the spin convention is written next to every spin printed.
+
+use std::process::Command;
+
+use racket_impact::params::{Params, SolverKind};
+use racket_impact::render::impact::{recorded_oblique, result_csv, result_text, sign_remark};
+use racket_impact::simulate;
+use racket_impact::study::map::{FaceMap, Quantity};
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_racket-impact"))
+}
+
+/// The paper's racket hit at `x`, `r` (m), 10 m/s, at an angle, azimuth and spin, modal solver.
+fn oblique(x: f64, r: f64, angle_deg: f64, azimuth_deg: f64, spin_rpm: f64) -> Params {
+    let mut p = Params::paper();
+    (p.impact.x, p.impact.r, p.impact.v1) = (x, r, 10.0);
+    p.numerics.solver = SolverKind::Modal;
+    (p.oblique.angle_deg, p.oblique.azimuth_deg, p.oblique.spin_rpm) = (angle_deg, azimuth_deg, spin_rpm);
+    p
+}
+
+/// The text line of `label` in a result text.
+fn line<'a>(text: &'a str, label: &str) -> &'a str {
+    text.lines().find(|l| l.split_whitespace().next() == Some(label)).unwrap_or_else(|| panic!("no {label} in {text}"))
+}
+
+#[test]
+fn labels_agree_with_signs_across_points_angles_and_spins() {
+    let (mut rebounds, mut moves_on) = (0, 0);
+    for x in [0.0, 0.01, 0.03, 0.08, 0.158, 0.25, 0.4, 0.6] {
+        for r in [0.0, 0.06] {
+            for angle in [5.0, 30.0, 60.0, 80.0] {
+                for (azimuth, spin) in [(0.0, 0.0), (90.0, 2000.0), (180.0, -3000.0)] {
+                    let p = oblique(x, r, angle, azimuth, spin);
+                    let res = simulate(&p).unwrap();
+                    let text = result_text(&p, &res);
+                    let case = format!("x {x} r {r} angle {angle} azimuth {azimuth} spin {spin}");
+                    let v2n = line(&text, "v2_n");
+                    let angle_line = line(&text, "rebound_angle");
+                    assert!(res.v2_n != 0.0, "{case}");
+                    if res.v2_n > 0.0 {
+                        rebounds += 1;
+                        assert!(v2n.contains("> 0, rebounds away from the strings"), "{case}: {v2n}");
+                        assert!(res.rebound_angle_deg.abs() < 90.0, "{case}: {}", res.rebound_angle_deg);
+                        assert!(!angle_line.contains("over 90"), "{case}: {angle_line}");
+                    } else {
+                        moves_on += 1;
+                        assert!(v2n.contains("< 0, moves on in its incoming direction"), "{case}: {v2n}");
+                        assert!(!v2n.contains("rebounds"), "{case}: {v2n}");
+                        assert!(res.rebound_angle_deg.abs() > 90.0, "{case}: {}", res.rebound_angle_deg);
+                        assert!(angle_line.contains("over 90 since v2_n < 0"), "{case}: {angle_line}");
+                    }
+                    // the angle is the direction of the outgoing velocity
+                    let direction = res.v2_t.atan2(res.v2_n).to_degrees();
+                    assert!((direction - res.rebound_angle_deg).abs() < 1e-9, "{case}");
+                    assert_eq!(res.v2_n.signum(), res.e_a.signum(), "{case}: v2_n = e_A v_n");
+                    // the convention of the spin is written where it is printed
+                    assert!(line(&text, "spin_out").contains("topspin relative to the ball's incoming motion"));
+                    assert!(text.contains(&format!("azimuth {azimuth} deg")) && text.contains("mu 0.4"), "{text}");
+                    // the CSV names what the impact was run at, with these values
+                    let csv = result_csv(&p, &res);
+                    let mut rows = csv.lines();
+                    let (head, row): (Vec<&str>, Vec<&str>) =
+                        (rows.next().unwrap().split(',').collect(), rows.next().unwrap().split(',').collect());
+                    for (column, value) in recorded_oblique(&p) {
+                        let k = head.iter().position(|h| *h == column).unwrap_or_else(|| panic!("{column}: {head:?}"));
+                        assert_eq!(row[k].parse::<f64>().unwrap(), value, "{case}: {column}");
+                    }
+                }
+            }
+        }
+    }
+    // the grid covers both signs
+    assert!(rebounds > 50 && moves_on > 5, "{rebounds} rebounds, {moves_on} moving on");
+}
+
+#[test]
+fn sign_remarks_are_only_for_the_fields_they_describe() {
+    let p = oblique(0.158, 0.0, 30.0, 0.0, 0.0);
+    let res = simulate(&p).unwrap();
+    for key in ["e_a", "v2_t", "spin_out_rpm", "tau_s"] {
+        assert_eq!(sign_remark(key, &res), "", "{key}");
+    }
+    // at normal incidence the oblique lines are not printed at all
+    let normal = simulate(&Params::paper()).unwrap();
+    let text = result_text(&Params::paper(), &normal);
+    assert!(!text.contains("v2_n") && !text.contains("rebound_angle"), "{text}");
+    let csv = result_csv(&Params::paper(), &normal);
+    assert!(!csv.lines().next().unwrap().contains("angle_deg,"), "{csv}");
+}
+
+#[test]
+fn json_outputs_write_their_spin_convention() {
+    let out = bin().args(["simulate", "--angle-deg", "30", "--spin-rpm", "500", "--format", "json"]).output().unwrap();
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(v["spin_convention"].as_str().unwrap().contains("along the strings"), "{v}");
+    let out = bin()
+        .args(["speed", "--swing", "100", "--swing-path-deg", "20", "--incoming-spin-rpm", "1000", "--format", "json"])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(v[0]["spin_convention"].as_str().unwrap().contains("court's frame"), "{v}");
+    let out = bin().args(["speed", "--swing", "100", "--swing-path-deg", "20"]).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("> 0 is topspin in the court's frame"), "{text}");
+}
+
+#[test]
+fn oblique_maps_name_angle_azimuth_spin_and_mu_in_title_and_table() {
+    let mut p = oblique(0.158, 0.0, 30.0, 45.0, 1000.0);
+    p.oblique.mu = 0.3;
+    let map = FaceMap::compute(&p, 9, 5, &mut |_| {}).unwrap();
+    let title = map.heatmap(Quantity::Spin, "paper racket").title;
+    for needle in ["angle 30 deg", "azimuth 45 deg", "spin 1000 rpm", "mu 0.3"] {
+        assert!(title.contains(needle), "{title}");
+    }
+    let t = map.table();
+    for (column, value) in [("angle_deg", 30.0), ("azimuth_deg", 45.0), ("spin_rpm", 1000.0), ("mu", 0.3)] {
+        let col = t.column(column).unwrap_or_else(|| panic!("no {column}: {:?}", t.columns));
+        assert!(!col.is_empty() && col.iter().all(|v| *v == value), "{column}");
+    }
+    // a normal map has none of them
+    let normal = FaceMap::compute(&Params::paper(), 9, 5, &mut |_| {}).unwrap();
+    assert!(normal.table().column("angle_deg").is_none());
+    assert!(!normal.heatmap(Quantity::Power, "paper").title.contains("angle"));
+}
