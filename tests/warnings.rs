@@ -162,3 +162,25 @@ fn map_says_when_a_config_files_impact_point_is_not_used() {
     let args = ["map", "--config", cfg, "--nx", "3", "--nr", "3", "--format", "csv", "--out", out];
     warns_once(&args, &["x and r of the config file are not used by map"]);
 }
+
+/// `racket` warns as `simulate` does for the same racket file (issue 24, class 7): a mass
+/// outside the usual range, a frequency no racket has, a density squeezed into the ends; and a
+/// real spec sheet runs without a warning.
+#[test]
+fn the_racket_command_warns_as_simulate_does() {
+    let light = "length_cm = 68.58\nmass_g = 120\ntwistweight_kg_cm2 = 14\nfrequency_hz = 150\n";
+    let (_d1, path) = racket_file("light.toml", light);
+    let file = path.to_str().unwrap();
+    warns_once(&["racket", file], &["mass = 0.12 kg", "0.15..1 kg"]);
+    warns_once(&["simulate", "--racket", file], &["mass = 0.12 kg", "0.15..1 kg"]);
+    let squeezed = "length_cm = 68.58\nmass_g = 300\nbalance_cm = 32.5\nswingweight_kg_cm2 = 400\n\
+                    twistweight_kg_cm2 = 14\nfrequency_hz = 150\n";
+    let (_d2, path) = racket_file("squeezed.toml", squeezed);
+    let file = path.to_str().unwrap();
+    warns_once(&["racket", file], &["racket density falls to", "0.25..4 times the mean"]);
+    warns_once(&["simulate", "--racket", file], &["racket density falls to", "0.25..4 times the mean"]);
+    let sheet = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/spec_sheets/babolat_pure_drive_2025.toml");
+    let out = run(&["racket", sheet]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(stderr(&out).is_empty(), "{}", stderr(&out));
+}
