@@ -10,9 +10,11 @@
 //! energy is `sum_j kappa_j (y_{j-1} - 2 y_j + y_{j+1})^2 / 2`, and `K` has exactly two zero
 //! modes (translation and rotation), so the discrete beam conserves momentum and energy.
 //!
-//! A non-uniform racket ([`Profile`]) lumps its piecewise-linear density onto the nodes
-//! (`m_i = integral of lambda(x) h_i(x) dx` with the hat function `h_i` of node i, which for a
-//! uniform density gives the masses above), scaled so they sum to `M`, and evaluates
+//! A non-uniform racket ([`Profile`]) lumps its density (piecewise linear, optionally times
+//! the tilt `exp(t1 f + t2 f^2)`) onto the nodes (`m_i = integral of lambda(x) h_i(x) dx` with
+//! the hat function `h_i` of node i, which for a uniform density gives the masses above;
+//! exact by Simpson's rule without a tilt, by five-point Gauss-Legendre with one), scaled so
+//! they sum to `M`, and evaluates
 //! `EI(x_j) = EI * stiffness(x_j / L)` at the interior nodes.
 //! `K` is applied as a five-point stencil; the dense matrix exists only for the eigenproblem
 //! `K phi = omega^2 M phi`, solved as the symmetric problem `M^-1/2 K M^-1/2` with nalgebra.

@@ -83,7 +83,8 @@ impl Default for Racket {
 }
 
 /// A non-uniform racket: linear density and bending stiffness, each piecewise linear between
-/// four knots along the racket (tip, end of the head, start of the handle, butt). The paper
+/// four knots along the racket (tip, end of the head, start of the handle, butt), the density
+/// optionally tilted by `exp(t1 f + t2 f^2)` ([`Profile::tilt`]). The paper
 /// says its method extends to head-heavy and head-light rackets; this is that extension.
 ///
 /// The density only sets the shape of the mass distribution: node masses are the density
@@ -100,9 +101,9 @@ pub struct Profile {
     pub stiffness: [f64; 4],
     /// Exponential tilt `[t1, t2]` of the density: the piecewise-linear density above times
     /// `exp(t1 f + t2 f^2)` at the fraction `f` of the length from the tip; each |t| <= 100
-    /// ([`TILT_MAX`]). `[0, 0]` (the default) is no tilt. The racket fit's family
-    /// ([`crate::racket::fit`]): the least-informative (maximum-entropy) density with a given
-    /// mass, balance and swingweight.
+    /// ([`TILT_MAX`]). `[0, 0]` (the default) is no tilt. The family a racket file's balance
+    /// and swingweight are fitted with (the `racket` module): with a uniform base it is the
+    /// least-informative (maximum-entropy) density with a given mass, balance and swingweight.
     #[serde(default, skip_serializing_if = "no_tilt")]
     pub tilt: [f64; 2],
 }
