@@ -149,7 +149,7 @@ fn text_output_prints_meaningful_digits() {
 fn sweep_rows_record_the_impact() {
     let text = stdout(&run(&["sweep", "--ks", "2e4", "--angle-deg", "30"]));
     let head = text.lines().next().unwrap();
-    assert!(head.starts_with("ks_n_per_m,angle_deg,x_m,r_m,v1_m_per_s,spin_rpm,e_a"), "{head}");
+    assert!(head.starts_with("ks_n_per_m,angle_deg,x_m,r_m,v1_m_per_s,azimuth_deg,spin_rpm,mu,e_a"), "{head}");
 }
 
 #[test]

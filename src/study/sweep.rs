@@ -115,11 +115,12 @@ pub struct Sweep {
 pub const OPTIONS: [&str; 4] = ["out", "config", "racket", "quiet"];
 
 /// The parameters every sweep row records, swept or not (the impact point, the string bed and
-/// the ball speed), and for a sweep of oblique or spinning balls the incidence and spin too.
+/// the ball speed), and for a sweep of oblique or spinning balls the incidence, azimuth, spin
+/// and friction too (what an oblique impact is run at, as its single-impact CSV records it).
 pub fn recorded_keys(oblique: bool) -> Vec<&'static str> {
     let mut v = vec![keys::X.key, keys::R.key, keys::KS.key, keys::V1.key];
     if oblique {
-        v.extend([keys::ANGLE_DEG.key, keys::SPIN_RPM.key]);
+        v.extend([keys::ANGLE_DEG.key, keys::AZIMUTH_DEG.key, keys::SPIN_RPM.key, keys::MU.key]);
     }
     v
 }
