@@ -55,7 +55,7 @@ pub struct SpeedArgs {
     /// the ball for topspin; the face stands vertical and the ball comes in horizontally
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub swing_path_deg: f64,
-    /// Spin of the incoming ball in its own flight, rpm (topspin > 0)
+    /// Spin of the incoming ball in its own flight, rpm (court frame: > 0 topspin, its top moving forward)
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub incoming_spin_rpm: f64,
 }
