@@ -29,9 +29,23 @@ macro_rules! outln {
 
 pub(crate) use {out, outln};
 
-/// Write to standard output; a reader that has gone away (broken pipe) ends the program with
-/// success, all files having been written before anything is printed.
+/// Write to standard output. A reader that has gone away (broken pipe, `| head`) is not an
+/// error: the rest of the output is dropped quietly and the command goes on to publish its
+/// files. Any other write error (a full disk, `> /dev/full`) is an error, and the command's
+/// staged files are then not published.
 pub fn write_stdout(bytes: &[u8]) -> Result<()> {
+    use std::io::Write;
+    let mut lock = std::io::stdout().lock();
+    match lock.write_all(bytes).and_then(|()| lock.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        other => other.map_err(|e| Error::io("<stdout>", e)),
+    }
+}
+
+/// [`write_stdout`] for a stream that only goes to standard output (`sweep` without `--out`):
+/// a reader that has gone away ends the program with success, as a shell tool should, instead
+/// of computing what nobody reads.
+pub fn stream_stdout(bytes: &[u8]) -> Result<()> {
     use std::io::Write;
     let mut lock = std::io::stdout().lock();
     match lock.write_all(bytes).and_then(|()| lock.flush()) {

@@ -81,7 +81,8 @@ pub fn run(a: MapArgs) -> Result<()> {
     let map = computed?;
     let json = map.json()?;
     let csv = map.table.to_csv();
-    outputs.write(&csv, &map.heatmap, &json)?;
+    // the files are published only once the printing has succeeded (nothing left otherwise)
+    let staged = outputs.stage(&csv, &map.heatmap, &json)?;
     match a.common.format {
         Format::Text => {
             out!("{}", map.summary);
@@ -96,6 +97,7 @@ pub fn run(a: MapArgs) -> Result<()> {
         Format::Json => out!("{json}"),
         Format::Csv => out!("{csv}"),
     }
+    staged.commit()?;
     warn_params(configs.iter().map(|(_, p)| p));
     let theta = ["theta_deg", "theta_deg_a", "theta_deg_b"]
         .iter()

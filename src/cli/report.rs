@@ -24,9 +24,12 @@ pub fn run(a: ReportArgs) -> Result<()> {
     }
     let rows = racket_impact::report::evaluate()?;
     let md = racket_impact::report::document(&rows)?;
+    // REPORT.md is published only once the report has been printed
+    let mut staged = racket_impact::render::io::Staged::new();
     if !a.no_write {
-        racket_impact::render::io::write_atomic(&a.out, md.as_bytes())?;
+        staged.bytes(&a.out, md.as_bytes())?;
     }
     out!("{md}");
+    staged.commit()?;
     Ok(())
 }

@@ -9,7 +9,7 @@ use racket_impact::params::{keys, Overrides};
 use racket_impact::study::sweep::Sweep;
 use racket_impact::Result;
 
-use super::common::{warn_params, warn_twist, write_stdout, Progress};
+use super::common::{stream_stdout, warn_params, warn_twist, Progress};
 
 #[derive(Args, Debug)]
 pub struct SweepArgs {
@@ -79,7 +79,7 @@ pub fn run(a: SweepArgs) -> Result<()> {
     let mut emit = |bytes: &[u8]| -> Result<()> {
         match file.as_mut() {
             Some(f) => f.write(bytes),
-            None => write_stdout(bytes),
+            None => stream_stdout(bytes),
         }
     };
     let header = sweep.header();

@@ -134,7 +134,12 @@ pub fn series_table(params: &Params, rows: &[SeriesRow]) -> Table {
     t
 }
 
-/// Write the time series CSV atomically.
-pub fn write_series(path: &Path, params: &Params, rows: &[SeriesRow]) -> Result<()> {
-    crate::render::io::write_atomic(path, series_table(params, rows).to_csv().as_bytes())
+/// Stage the time series CSV in `staged` (published with the command's other outputs).
+pub fn stage_series(
+    staged: &mut crate::render::io::Staged,
+    path: &Path,
+    params: &Params,
+    rows: &[SeriesRow],
+) -> Result<()> {
+    staged.bytes(path, series_table(params, rows).to_csv().as_bytes())
 }
