@@ -10,7 +10,7 @@ use racket_impact::params::Params;
 use racket_impact::study::Sources;
 use racket_impact::{Error, Result};
 
-use super::overrides::OverrideArgs;
+use super::overrides::{KeySet, OverrideArgs};
 
 /// `print!` for the commands: a closed pipe (`racket-impact ... | head`) ends the program quietly,
 /// as a shell tool should, instead of panicking; other write errors are errors.
@@ -106,13 +106,6 @@ pub fn warn_twist(theta_end_deg: f64) {
     }
 }
 
-/// The parameter keys set in `overrides` (flags or a config file), as spelled on the command
-/// line.
-pub fn given_keys(overrides: &racket_impact::params::Overrides) -> Vec<&'static str> {
-    let value = serde_json::to_value(overrides).unwrap_or_default();
-    racket_impact::params::Overrides::KEYS.into_iter().filter(|k| value.get(k).is_some_and(|v| !v.is_null())).collect()
-}
-
 /// Output format.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Format {
@@ -121,26 +114,44 @@ pub enum Format {
     Csv,
 }
 
-/// The parameter arguments of the commands that run impacts.
+/// The parameter arguments of the commands that run impacts: the parameter flags the command
+/// takes ([`KeySet`]).
 #[derive(Args, Debug)]
-pub struct Common {
+pub struct Common<K: KeySet> {
     /// Racket description file (TOML, player units) or preset name; see `racket-impact racket --list`
     #[arg(long)]
     pub racket: Option<String>,
-    /// TOML file with any of the flags below as keys (flags win)
+    /// TOML file with any of the parameter flags below as keys (flags win; a key this command
+    /// does not use is named in one warning)
     #[arg(long)]
     pub config: Option<PathBuf>,
     #[command(flatten)]
-    pub overrides: OverrideArgs,
+    pub overrides: OverrideArgs<K>,
     /// Output format
     #[arg(long, value_enum, default_value_t = Format::Text)]
     pub format: Format,
 }
 
-impl Common {
+impl<K: KeySet> Common<K> {
     /// Where the parameters come from.
     pub fn sources(&self) -> Sources {
-        Sources { racket: self.racket.clone(), config: self.config.clone(), flags: self.overrides.0.clone() }
+        Sources {
+            racket: self.racket.clone(),
+            config: self.config.clone(),
+            flags: self.overrides.0.clone(),
+            command: K::COMMAND,
+            not_taken: K::not_taken(),
+        }
+    }
+
+    /// Refuse a parameter flag none of `params` uses; warn (one line) about config-file keys
+    /// the command does not use.
+    pub fn check_used<'a>(&self, params: impl IntoIterator<Item = &'a Params>) -> Result<()> {
+        let params: Vec<Params> = params.into_iter().copied().collect();
+        if let Some(note) = self.sources().check_used(&params)? {
+            warn(&note);
+        }
+        Ok(())
     }
 }
 

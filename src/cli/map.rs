@@ -10,6 +10,7 @@ use racket_impact::study::map::{MapRequest, Quantity};
 use racket_impact::Result;
 
 use super::common::{out, outln, warn, warn_params, warn_twist, Common, Format, Progress};
+use super::overrides::MapKeys;
 
 /// What each quantity is, in the help.
 fn quantity_help(q: Quantity) -> &'static str {
@@ -33,7 +34,7 @@ fn quantity_parser() -> impl TypedValueParser<Value = Quantity> {
 #[derive(Args, Debug)]
 pub struct MapArgs {
     #[command(flatten)]
-    pub common: Common,
+    pub common: Common<MapKeys>,
     /// The quantity shown in the heat map (the CSV has every one)
     #[arg(long, value_parser = quantity_parser(), default_value = "power")]
     pub quantity: Quantity,
@@ -66,13 +67,18 @@ pub fn run(a: MapArgs) -> Result<()> {
         compare_tension_lb: a.compare_tension_lb,
     };
     request.check()?;
-    // a config file may be shared with simulate: its impact point is not refused, but said to be unused
-    let config = racket_impact::study::config_file(a.common.config.as_deref())?;
-    if config.x.is_some() || config.r.is_some() {
-        warn("x and r of the config file are not used by map: the grid sets the impact point");
-    }
     let outputs = Outputs::for_csv(&a.out.unwrap_or_else(|| request.default_csv()))?;
     let (configs, total) = request.configurations()?;
+    // (as the grid's points are: off the long axis too)
+    let solved: Vec<_> = configs
+        .iter()
+        .map(|(_, p)| {
+            let mut p = racket_impact::study::map::with_map_solver(p);
+            p.impact.r = 0.5 * p.racket.half_width;
+            p
+        })
+        .collect();
+    a.common.check_used(&solved)?;
 
     let bar = Progress::new(total as u64);
     let started = bar.started;

@@ -7,6 +7,7 @@ use racket_impact::solve::{Model, SeriesOptions};
 use racket_impact::{Error, Result};
 
 use super::common::{out, warn, warn_params, warn_twist, Common, Format};
+use super::overrides::SimulateKeys;
 
 /// Sample spacing of the time series unless given, s.
 const DEFAULT_SERIES_DT: f64 = 2.0e-5;
@@ -16,7 +17,7 @@ const DEFAULT_SERIES_END: f64 = 0.0;
 #[derive(Args, Debug)]
 pub struct SimulateArgs {
     #[command(flatten)]
-    pub common: Common,
+    pub common: Common<SimulateKeys>,
     /// Also write the impact's time series (t, F, y_b, Y_T, theta, every energy term) as CSV
     #[arg(long)]
     pub series: Option<PathBuf>,
@@ -32,6 +33,7 @@ pub struct SimulateArgs {
 /// exist.
 pub fn run(a: SimulateArgs) -> Result<()> {
     let params = a.common.sources().params()?;
+    a.common.check_used([&params])?;
     if let Some(path) = &a.series {
         racket_impact::render::io::check_output_dir("series", path)?;
     }

@@ -6,6 +6,7 @@ use racket_impact::study::speed::{SpeedRequest, SpeedUnit};
 use racket_impact::Result;
 
 use super::common::{out, warn_params, warn_twist, Common, Format};
+use super::overrides::SpeedKeys;
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
 pub enum UnitArg {
@@ -33,7 +34,7 @@ impl UnitArg {
 #[derive(Args, Debug)]
 pub struct SpeedArgs {
     #[command(flatten)]
-    pub common: Common,
+    pub common: Common<SpeedKeys>,
     /// Racket speed at the impact point, towards the ball (in --unit)
     #[arg(long, allow_hyphen_values = true)]
     pub swing: f64,
@@ -73,6 +74,7 @@ pub fn run(a: SpeedArgs) -> Result<()> {
         incoming_spin_rpm: a.incoming_spin_rpm,
     };
     let comparison = request.run()?;
+    a.common.check_used(comparison.rows.iter().map(|r| &r.params))?;
     let text = match a.common.format {
         Format::Csv => comparison.table()?.to_csv(),
         Format::Json => comparison.json()?,

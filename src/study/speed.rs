@@ -31,6 +31,9 @@ impl SpeedUnit {
     pub const MS: SpeedUnit = SpeedUnit { si: 1.0, label: "m/s" };
 }
 
+/// The parameter keys `speed` sets itself (from the swing, the incoming ball and its spin).
+pub const SPEED_SETS: [&str; 4] = ["v1", "angle-deg", "azimuth-deg", "spin-rpm"];
+
 /// A swing, an incoming ball and the variants to compare.
 #[derive(Debug, Clone)]
 pub struct SpeedRequest {
@@ -91,6 +94,23 @@ impl SpeedRequest {
             }
         }
         let (v_racket, v_in) = (self.swing * self.unit.si, self.incoming * self.unit.si);
+        // the impact runs at the relative speed: its range, said in this command's unit
+        let (lo, hi) = crate::params::keys::V1.range();
+        if !(lo..=hi).contains(&(v_racket + v_in)) {
+            let u = self.unit;
+            let field = if self.swing >= self.incoming { "swing" } else { "incoming" };
+            let value = if field == "swing" { self.swing } else { self.incoming };
+            return Err(Error::invalid(
+                field,
+                value,
+                format!(
+                    "swing + incoming (the impact speed) must satisfy {} <= swing + incoming <= {} {}",
+                    crate::params::spec::sig(lo / u.si, 3),
+                    crate::params::spec::sig(hi / u.si, 3),
+                    u.label
+                ),
+            ));
+        }
         check_comparison(&self.compare_tension_lb, !self.compare_racket.is_empty())?;
         self.check_unused()?;
         let mut rows = Vec::new();
@@ -152,11 +172,12 @@ impl SpeedRequest {
         variants
     }
 
-    /// Refuse the parameters `speed` sets itself: the ball speed (from `--swing` and
-    /// `--incoming`) and the incidence and spin (from `--swing-path-deg` and
-    /// `--incoming-spin-rpm`), from the flags or the config file.
+    /// Refuse the parameters `speed` sets itself when given as flags: the ball speed (from
+    /// `--swing` and `--incoming`) and the incidence and spin (from `--swing-path-deg` and
+    /// `--incoming-spin-rpm`). (The command line has no such flags; a config file's values are
+    /// dropped with a note, [`SPEED_SETS`].)
     fn check_unused(&self) -> Result<()> {
-        let given = self.sources.flags.clone().or(crate::study::config_file(self.sources.config.as_deref())?);
+        let given = &self.sources.flags;
         let set: [(&'static str, Option<f64>, &str); 4] = [
             ("v1", given.v1, "the ball speed comes from --swing and --incoming"),
             ("angle-deg", given.angle_deg, "the incidence comes from --swing-path-deg"),
