@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use racket_impact::params::spec::sig;
 use racket_impact::solve::{Model, SeriesOptions};
 use racket_impact::{Error, Result};
 
@@ -57,6 +58,24 @@ pub fn run(a: SimulateArgs) -> Result<()> {
             return Err(Error::invalid("series", path.display(), "a time series needs --solver fd"));
         }
         let model = Model::new(&params)?;
+        // the rows, counted before any is made: the impact and the paper's two-period window
+        // (or --series-end), one row per sample or per step, whichever is longer
+        let f1_hz = racket_impact::model::basis::Basis::of(&params.racket, params.numerics.segments).omega[0]
+            / (2.0 * std::f64::consts::PI);
+        let rows = a.series_end.max(0.05 + 2.0 / f1_hz) / a.series_dt.max(model.dt);
+        let most = racket_impact::params::limits::MAX_SERIES_ROWS;
+        if rows.is_nan() || rows > most as f64 {
+            let (field, value) = if a.series_end > 0.05 + 2.0 / f1_hz {
+                ("series-end", a.series_end)
+            } else {
+                ("series-dt", a.series_dt)
+            };
+            return Err(Error::invalid(
+                field,
+                value,
+                format!("the time series would have about {} rows, at most {most}: a larger --series-dt or a shorter --series-end", sig(rows, 2)),
+            ));
+        }
         let (r, s) = model.run_with_series(SeriesOptions { sample_dt: a.series_dt, t_end: a.series_end })?;
         (r, Some(s))
     } else {

@@ -112,6 +112,12 @@ impl SpeedRequest {
             ));
         }
         check_comparison(&self.compare_tension_lb, !self.compare_racket.is_empty())?;
+        for (field, n) in
+            [("compare-tension-lb", self.compare_tension_lb.len()), ("compare-racket", self.compare_racket.len())]
+        {
+            let most = crate::params::limits::MAX_COMPARED;
+            crate::params::limits::check_count(field, n as f64, most as u64, "the number of compared variants")?;
+        }
         self.check_unused()?;
         let mut rows = Vec::new();
         for (label, racket, tension) in self.variants() {
