@@ -105,7 +105,7 @@ pub fn run(a: MapArgs) -> Result<()> {
     }
     staged.commit()?;
     warn_params(configs.iter().map(|(_, p)| p));
-    let theta = ["theta_deg", "theta_deg_a", "theta_deg_b"]
+    let theta = ["theta_end_deg", "theta_end_deg_a", "theta_end_deg_b"]
         .iter()
         .filter_map(|c| map.table.column(c))
         .flatten()

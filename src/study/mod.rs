@@ -14,6 +14,43 @@ use crate::error::{Error, Result};
 use crate::params::{Overrides, Params};
 use crate::racket::Fitted;
 
+/// The columns of the commands' tables that are neither a parameter's column
+/// ([`crate::params::keys`]) nor a result field ([`crate::solve::outcome::FIELDS`]): each with
+/// its unit in its name where it has one (or, for the speeds, the `unit` column beside it).
+/// Together they are the vocabulary every CSV a command writes draws from (tests/vocabulary.rs).
+pub const OTHER_COLUMNS: &[&str] = &[
+    // speed
+    "variant",
+    "ball_speed_out",
+    "change_pct",
+    "unit",
+    "launch_deg",
+    "launch_spin_rpm",
+    // map (a difference map's columns end in _a, _b and _b_minus_a)
+    "power_pct",
+    "ks_a_n_per_m",
+    "ks_b_n_per_m",
+    // modes
+    "mode",
+    "frequency_hz",
+    // the time series (energies are fractions of the ball's incident energy)
+    "t_s",
+    "force_n",
+    "y_ball_m",
+    "y_total_m",
+    "theta_rad",
+    "ke_ball",
+    "pe_ball",
+    "pe_string",
+    "ke_racket",
+    "pe_racket",
+    "ke_spin",
+    "hand",
+    "total",
+    // sweep: the solver that ran
+    "solver",
+];
+
 /// Where a command's parameters come from: the paper defaults (with the user default `hat`
 /// load) < a racket file or preset < a config file < the flags.
 #[derive(Debug, Clone, Default)]

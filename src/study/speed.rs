@@ -212,14 +212,14 @@ impl SpeedComparison {
             "r_m",
             "ks_n_per_m",
             "e_a",
-            "tau_ms",
-            "theta_deg",
+            "tau_s",
+            "theta_end_deg",
             "ball_speed_out",
             "change_pct",
             "unit",
         ];
         if self.request.is_stroke() {
-            cols.extend(["launch_deg", "spin_rpm"]);
+            cols.extend(["launch_deg", "launch_spin_rpm"]);
         }
         let mut t = Table::new("speed", &cols);
         for SpeedRow { label, params: p, result: r, v_out, launch } in &self.rows {
@@ -229,7 +229,7 @@ impl SpeedComparison {
                 p.impact.r.into(),
                 p.strings.ks.into(),
                 r.e_a.into(),
-                (1e3 * r.tau_s).into(),
+                r.tau_s.into(),
                 r.theta_end_deg.into(),
                 (v_out / unit.si).into(),
                 gain_pct(self.v_ref(), *v_out).into(),

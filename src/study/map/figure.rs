@@ -33,7 +33,7 @@ impl FaceMap {
             if oblique {
                 row.extend([Value::from(p.oblique.angle_deg), Value::from(p.oblique.spin_rpm)]);
             }
-            row.extend(Quantity::in_table(oblique).map(|q| Value::Num(q.of(res))));
+            row.extend(Quantity::in_table(oblique).map(|q| Value::Num(q.column_value(res))));
             row.push(Value::Int(i64::from(res.recontact)));
             // the row has one value per column, so push cannot fail
             let _ = t.push(row);
@@ -144,7 +144,7 @@ impl DiffMap {
         for (k, (ra, rb)) in self.a.results.iter().zip(&self.b.results).enumerate() {
             if let (Some(ra), Some(rb)) = (ra, rb) {
                 let (x, r) = self.a.grid.point(k);
-                let (va, vb) = (q.of(ra), q.of(rb));
+                let (va, vb) = (q.column_value(ra), q.column_value(rb));
                 let _ = t.push(vec![
                     x.into(),
                     r.into(),
