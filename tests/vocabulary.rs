@@ -99,6 +99,7 @@ fn every_csv_column_of_every_command_is_a_declared_name() {
     let mut vocabulary: BTreeSet<String> = keys::ALL.iter().map(|s| s.column.to_string()).collect();
     vocabulary.extend(FIELDS.iter().map(|f| f.key.to_string()));
     vocabulary.extend(OTHER_COLUMNS.iter().map(|c| c.to_string()));
+    vocabulary.extend(racket_impact::render::impact::SERIES_COLUMNS.iter().map(|c| c.to_string()));
     let oblique = ["--angle-deg", "30"];
     let headers = [
         csv_header(&[&["simulate", "--format", "csv"][..], &oblique].concat(), dir.path()),

@@ -153,22 +153,18 @@ fn text(fitted: &Fitted) -> String {
     s
 }
 
-/// The fit report's rows as objects, with the model's racket, strings and ball.
+/// The fit report's rows as objects (numbers as numbers), with the model's racket, strings and
+/// ball.
 fn json(fitted: &Fitted) -> Result<String> {
-    let t = fitted.report.table();
-    let rows: Vec<serde_json::Value> = t
-        .rows
-        .iter()
-        .map(|row| {
-            let obj: serde_json::Map<String, serde_json::Value> = t
-                .columns
-                .iter()
-                .zip(row)
-                .map(|(c, v)| (c.clone(), serde_json::Value::String(v.to_csv_field())))
-                .collect();
-            serde_json::Value::Object(obj)
-        })
-        .collect();
-    let v = serde_json::json!({ "fit": rows, "racket": fitted.racket, "strings": fitted.strings, "ball": fitted.ball });
-    Ok(format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?))
+    let mut t = fitted.report.table();
+    t.name = "fit".to_string();
+    let value = |v: serde_json::Result<serde_json::Value>| v.map_err(|e| Error::io("<json>", e));
+    table_json(
+        &t,
+        &[
+            ("racket", value(serde_json::to_value(fitted.racket))?),
+            ("strings", value(serde_json::to_value(fitted.strings))?),
+            ("ball", value(serde_json::to_value(fitted.ball))?),
+        ],
+    )
 }

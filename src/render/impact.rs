@@ -88,31 +88,29 @@ pub fn recorded(p: &Params) -> [(&'static str, f64); 4] {
     [(X.column, p.impact.x), (R.column, p.impact.r), (KS.column, p.strings.ks), (V1.column, p.impact.v1)]
 }
 
+/// The columns of the time series ([`SeriesRow`]'s fields: time s, force N, displacements m,
+/// twist rad, energies as fractions of the ball's incident energy), before [`recorded`].
+pub const SERIES_COLUMNS: [&str; 13] = [
+    "t_s",
+    "force_n",
+    "y_ball_m",
+    "y_total_m",
+    "theta_rad",
+    "ke_ball",
+    "pe_ball",
+    "pe_string",
+    "ke_racket",
+    "pe_racket",
+    "ke_spin",
+    "hand",
+    "total",
+];
+
 /// The time series as a table; every row ends with the impact it belongs to ([`recorded`]).
 pub fn series_table(params: &Params, rows: &[SeriesRow]) -> Table {
     let fixed = recorded(params);
-    let mut t = Table::new(
-        "series",
-        &[
-            "t_s",
-            "force_n",
-            "y_ball_m",
-            "y_total_m",
-            "theta_rad",
-            "ke_ball",
-            "pe_ball",
-            "pe_string",
-            "ke_racket",
-            "pe_racket",
-            "ke_spin",
-            "hand",
-            "total",
-            fixed[0].0,
-            fixed[1].0,
-            fixed[2].0,
-            fixed[3].0,
-        ],
-    );
+    let columns: Vec<&str> = SERIES_COLUMNS.into_iter().chain(fixed.iter().map(|(c, _)| *c)).collect();
+    let mut t = Table::new("series", &columns);
     for r in rows {
         let vals = [
             r.t_s,

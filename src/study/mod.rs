@@ -17,7 +17,8 @@ use crate::racket::Fitted;
 /// The columns of the commands' tables that are neither a parameter's column
 /// ([`crate::params::keys`]) nor a result field ([`crate::solve::outcome::FIELDS`]): each with
 /// its unit in its name where it has one (or, for the speeds, the `unit` column beside it).
-/// Together they are the vocabulary every CSV a command writes draws from (tests/vocabulary.rs).
+/// With the time series' [`crate::render::impact::SERIES_COLUMNS`] they are the vocabulary
+/// every CSV a command writes draws from (tests/vocabulary.rs).
 pub const OTHER_COLUMNS: &[&str] = &[
     // speed
     "variant",
@@ -33,20 +34,6 @@ pub const OTHER_COLUMNS: &[&str] = &[
     // modes
     "mode",
     "frequency_hz",
-    // the time series (energies are fractions of the ball's incident energy)
-    "t_s",
-    "force_n",
-    "y_ball_m",
-    "y_total_m",
-    "theta_rad",
-    "ke_ball",
-    "pe_ball",
-    "pe_string",
-    "ke_racket",
-    "pe_racket",
-    "ke_spin",
-    "hand",
-    "total",
     // sweep: the solver that ran
     "solver",
 ];
