@@ -131,3 +131,36 @@ fn every_csv_column_of_every_command_is_a_declared_name() {
         assert_eq!(unique.len(), header.len(), "a name twice in {header:?}");
     }
 }
+
+#[test]
+fn messages_speak_in_the_names_and_units_of_the_command_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let bad_racket = dir.path().join("r.toml");
+    std::fs::write(&bad_racket, "length_cm = \"long\"\n").unwrap();
+    let bad_racket = bad_racket.to_str().unwrap();
+    // (arguments, words the one stderr line must hold, words it must not)
+    let cases: [(&[&str], &[&str], &[&str]); 7] = [
+        (&["speed", "--swing", "5000"], &["invalid swing = 5000", "km/h"], &["v1", "m/s"]),
+        (&["speed", "--swing", "5000", "--unit", "mph"], &["invalid swing = 5000", "mph"], &["v1", "km/h"]),
+        (&["speed", "--swing", "300"], &["warning: swing + incoming = 300 km/h"], &["v1"]),
+        (
+            &["speed", "--swing", "100", "--incoming-spin-rpm", "7000"],
+            &["warning: incoming-spin-rpm = 7000"],
+            &["spin-rpm = -"],
+        ),
+        (&["simulate", "--racket", "nosuch"], &["invalid racket = nosuch", "preset"], &["config file"]),
+        (&["simulate", "--racket", bad_racket], &["racket file", "length_cm"], &["config file"]),
+        (&["sweep", "--x", "0.1:0.2:0"], &["invalid sweep = --x 0.1:0.2:0"], &["config file"]),
+    ];
+    for (args, want, not) in cases {
+        let o = Command::new(env!("CARGO_BIN_EXE_racket-impact")).args(args).output().unwrap();
+        let err = String::from_utf8_lossy(&o.stderr).into_owned();
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        for w in want {
+            assert!(err.contains(w), "{args:?}: '{w}' not in {err}");
+        }
+        for w in not {
+            assert!(!err.contains(w), "{args:?}: '{w}' in {err}");
+        }
+    }
+}

@@ -73,7 +73,13 @@ pub fn warn(message: &str) {
 /// Warn, once each, about every parameter of `params` outside its usual range (the ranges are
 /// declared with the parameters) and a first frame frequency no racket has.
 pub fn warn_params<'a>(params: impl IntoIterator<Item = &'a Params>) {
-    let mut said: Vec<String> = Vec::new();
+    warn_params_except(params, &[]);
+}
+
+/// [`warn_params`] but for the parameters `skip`, which the command sets itself from its own
+/// options and warns about in their terms.
+pub fn warn_params_except<'a>(params: impl IntoIterator<Item = &'a Params>, skip: &[&str]) {
+    let mut said: Vec<String> = skip.iter().map(|k| k.to_string()).collect();
     for p in params {
         let f1 = racket_impact::model::basis::Basis::of(&p.racket, p.numerics.segments).omega[0]
             / (2.0 * std::f64::consts::PI);
