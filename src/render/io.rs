@@ -374,6 +374,41 @@ mod tests {
         assert_eq!(entries(dir.path()), vec!["sub".to_string()]);
     }
 
+    #[cfg(unix)]
+    #[test]
+    fn links_are_followed_to_what_they_name_and_loops_and_directories_refused() {
+        let dir = scratch();
+        let (a, b, c) = (dir.path().join("a"), dir.path().join("b"), dir.path().join("c.csv"));
+        std::os::unix::fs::symlink("b", &a).unwrap();
+        std::os::unix::fs::symlink("c.csv", &b).unwrap();
+        assert_eq!(resolve(&a).unwrap(), Resolved::File(dir.path().join("c.csv")), "dangling at the end: created");
+        write_atomic(&a, b"x").unwrap();
+        assert_eq!(fs::read(&c).unwrap(), b"x");
+        assert!(fs::symlink_metadata(&a).unwrap().file_type().is_symlink());
+        let (l1, l2) = (dir.path().join("l1"), dir.path().join("l2"));
+        std::os::unix::fs::symlink("l2", &l1).unwrap();
+        std::os::unix::fs::symlink("l1", &l2).unwrap();
+        assert!(resolve(&l1).unwrap_err().to_string().contains("symbolic links"));
+        let d = dir.path().join("d");
+        fs::create_dir(&d).unwrap();
+        std::os::unix::fs::symlink("d", dir.path().join("ld")).unwrap();
+        assert!(resolve(&dir.path().join("ld")).unwrap_err().to_string().contains("is a directory"));
+        assert!(resolve(Path::new("/dev/null")).unwrap().is_through());
+    }
+
+    #[test]
+    fn a_staged_file_dropped_uncommitted_leaves_nothing() {
+        let dir = scratch();
+        let path = dir.path().join("out.csv");
+        fs::write(&path, b"old").unwrap();
+        let mut staged = Staged::new();
+        staged.bytes(&path, b"new").unwrap();
+        staged.bytes(&dir.path().join("other.json"), b"{}").unwrap();
+        drop(staged);
+        assert_eq!(fs::read(&path).unwrap(), b"old");
+        assert_eq!(entries(dir.path()), vec!["out.csv".to_string()]);
+    }
+
     #[test]
     fn ensure_dir_creates_nested_and_is_idempotent() {
         let dir = scratch();
