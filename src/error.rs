@@ -20,6 +20,14 @@ pub enum Error {
         /// The allowed range, in words with units.
         allowed: String,
     },
+    /// A racket file could not be read or parsed.
+    #[error("racket file {path}: {message}")]
+    RacketFile {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with it (one line).
+        message: String,
+    },
     /// A config file could not be read or parsed.
     #[error("config file {path}: {message}")]
     Config {

@@ -6,56 +6,11 @@
 
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand};
+use clap::Parser;
 
 mod cli;
 
-#[derive(Parser, Debug)]
-#[command(name = "racket-impact", version, about = "Ball on a flexible tennis racket: R. Cross (2000) replicated")]
-struct Cli {
-    /// No warnings on stderr (an implausible but valid value still runs, unremarked)
-    #[arg(long, global = true)]
-    quiet: bool,
-    #[command(subcommand)]
-    command: Command,
-}
-
-#[derive(Subcommand, Debug)]
-enum Command {
-    /// One impact: e_a, tau, theta, energy partition (defaults: the paper's racket, `--load hat`)
-    Simulate(cli::simulate::SimulateArgs),
-    /// Eigenfrequencies of the free racket and the nodes of its fundamental mode
-    Modes(cli::modes::ModesArgs),
-    /// Regenerate the paper's experiments: a CSV table and a PNG figure each
-    Figures(cli::figures::FiguresArgs),
-    /// The paper's numbers beside ours: writes REPORT.md and prints it
-    Report(cli::report::ReportArgs),
-    /// Fit a racket description (file or preset) to the model and show how well it matches
-    Racket(cli::racket::RacketArgs),
-    /// Outgoing ball speed for a swing and an incoming ball; compare tensions or rackets
-    ///
-    /// v_out = e_A v_in + (1 + e_A) v_racket (the paper's frame transformation), with e_A
-    /// computed at the relative speed v_in + v_racket and the racket's swing speed taken at the
-    /// impact point. Example: racket-impact speed --racket tweener --swing 100 --incoming 60
-    /// --compare-tension-lb 50,60
-    Speed(cli::speed::SpeedArgs),
-    /// Run the cartesian product of ranges or lists of any parameters, in parallel, as CSV
-    #[command(long_about = cli::sweep::long_about())]
-    Sweep(cli::sweep::SweepArgs),
-    /// Map a quantity over the string face: one impact per grid point, as CSV, PNG and JSON
-    ///
-    /// Runs an impact at every point of an nx x nr grid over the string face (the racket's head
-    /// ellipse; for a racket without one, such as the paper's, a 32 cm ellipse from the tip,
-    /// 2 half-width wide, centred 16 cm from the tip at the paper's mode-1 node) and writes the table (--out, default
-    /// map_<quantity>.csv, or map_<quantity>_diff.csv for a comparison), the heat map (same
-    /// stem, .png) and metadata (same stem, .json: the full parameters, the mode-1 node, the
-    /// point of maximum e_A). Every parameter flag and --config apply to every point, except the
-    /// impact position: --x and --r are rejected (the grid chooses the points), and x and r in
-    /// a --config file are ignored. --format selects what is printed: a text summary, the JSON
-    /// metadata or the CSV table. Example: racket-impact map --racket tweener --quantity power
-    /// --compare-tension-lb 50,60
-    Map(cli::map::MapArgs),
-}
+use cli::Cli;
 
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
@@ -80,16 +35,7 @@ fn main() -> ExitCode {
         }
     };
     cli::common::set_quiet(cli.quiet);
-    let outcome = match cli.command {
-        Command::Simulate(a) => cli::simulate::run(a),
-        Command::Modes(a) => cli::modes::run(a),
-        Command::Figures(a) => cli::figures::run(a),
-        Command::Report(a) => cli::report::run(a),
-        Command::Racket(a) => cli::racket::run(a),
-        Command::Speed(a) => cli::speed::run(a),
-        Command::Sweep(a) => cli::sweep::run(a),
-        Command::Map(a) => cli::map::run(a),
-    };
+    let outcome = cli::run(cli.command);
     match outcome {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

@@ -71,7 +71,7 @@ fn map_values_are_single_simulate_runs() {
         for i in [0, 1, t.len() / 3, t.len() / 2, 2 * t.len() / 3, t.len() - 1] {
             let single = simulate(&params_at(&m.params, xs[i], rs[i])).unwrap();
             for (q, col) in Quantity::ALL.iter().zip(&cols) {
-                assert_eq!(col[i], q.of(&single), "{} at row {i}", q.name());
+                assert_eq!(col[i], q.column_value(&single), "{} at row {i}", q.name());
             }
             assert_eq!(recontact[i], f64::from(u8::from(single.recontact)));
         }
@@ -179,8 +179,8 @@ fn difference_map_is_b_minus_a() {
         }
         // A and B are single runs of each configuration
         for i in [0, t.len() / 2, t.len() - 1] {
-            assert_eq!(va[i], q.of(&simulate(&params_at(&d.a.params, xs[i], rs[i])).unwrap()));
-            assert_eq!(vb[i], q.of(&simulate(&params_at(&d.b.params, xs[i], rs[i])).unwrap()));
+            assert_eq!(va[i], q.column_value(&simulate(&params_at(&d.a.params, xs[i], rs[i])).unwrap()));
+            assert_eq!(vb[i], q.column_value(&simulate(&params_at(&d.b.params, xs[i], rs[i])).unwrap()));
         }
     }
     // two rackets with different faces: only points inside both

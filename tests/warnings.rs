@@ -160,7 +160,7 @@ fn map_says_when_a_config_files_impact_point_is_not_used() {
     let out = dir.path().join("m.csv");
     let (cfg, out) = (cfg.to_str().unwrap(), out.to_str().unwrap());
     let args = ["map", "--config", cfg, "--nx", "3", "--nr", "3", "--format", "csv", "--out", out];
-    warns_once(&args, &["x and r of the config file are not used by map"]);
+    warns_once(&args, &["config file", "x (not used by map)"]);
 }
 
 /// `racket` warns as `simulate` does for the same racket file (issue 24, class 7): a mass

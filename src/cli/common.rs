@@ -10,7 +10,7 @@ use racket_impact::params::Params;
 use racket_impact::study::Sources;
 use racket_impact::{Error, Result};
 
-use super::overrides::OverrideArgs;
+use super::overrides::{KeySet, OverrideArgs};
 
 /// `print!` for the commands: a closed pipe (`racket-impact ... | head`) ends the program quietly,
 /// as a shell tool should, instead of panicking; other write errors are errors.
@@ -29,9 +29,23 @@ macro_rules! outln {
 
 pub(crate) use {out, outln};
 
-/// Write to standard output; a reader that has gone away (broken pipe) ends the program with
-/// success, all files having been written before anything is printed.
+/// Write to standard output. A reader that has gone away (broken pipe, `| head`) is not an
+/// error: the rest of the output is dropped quietly and the command goes on to publish its
+/// files. Any other write error (a full disk, `> /dev/full`) is an error, and the command's
+/// staged files are then not published.
 pub fn write_stdout(bytes: &[u8]) -> Result<()> {
+    use std::io::Write;
+    let mut lock = std::io::stdout().lock();
+    match lock.write_all(bytes).and_then(|()| lock.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        other => other.map_err(|e| Error::io("<stdout>", e)),
+    }
+}
+
+/// [`write_stdout`] for a stream that only goes to standard output (`sweep` without `--out`):
+/// a reader that has gone away ends the program with success, as a shell tool should, instead
+/// of computing what nobody reads.
+pub fn stream_stdout(bytes: &[u8]) -> Result<()> {
     use std::io::Write;
     let mut lock = std::io::stdout().lock();
     match lock.write_all(bytes).and_then(|()| lock.flush()) {
@@ -59,7 +73,13 @@ pub fn warn(message: &str) {
 /// Warn, once each, about every parameter of `params` outside its usual range (the ranges are
 /// declared with the parameters) and a first frame frequency no racket has.
 pub fn warn_params<'a>(params: impl IntoIterator<Item = &'a Params>) {
-    let mut said: Vec<String> = Vec::new();
+    warn_params_except(params, &[]);
+}
+
+/// [`warn_params`] but for the parameters `skip`, which the command sets itself from its own
+/// options and warns about in their terms.
+pub fn warn_params_except<'a>(params: impl IntoIterator<Item = &'a Params>, skip: &[&str]) {
+    let mut said: Vec<String> = skip.iter().map(|k| k.to_string()).collect();
     for p in params {
         let f1 = racket_impact::model::basis::Basis::of(&p.racket, p.numerics.segments).omega[0]
             / (2.0 * std::f64::consts::PI);
@@ -93,13 +113,6 @@ pub fn warn_twist(theta_end_deg: f64) {
     }
 }
 
-/// The parameter keys set in `overrides` (flags or a config file), as spelled on the command
-/// line.
-pub fn given_keys(overrides: &racket_impact::params::Overrides) -> Vec<&'static str> {
-    let value = serde_json::to_value(overrides).unwrap_or_default();
-    racket_impact::params::Overrides::KEYS.into_iter().filter(|k| value.get(k).is_some_and(|v| !v.is_null())).collect()
-}
-
 /// Output format.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Format {
@@ -108,26 +121,44 @@ pub enum Format {
     Csv,
 }
 
-/// The parameter arguments of the commands that run impacts.
+/// The parameter arguments of the commands that run impacts: the parameter flags the command
+/// takes ([`KeySet`]).
 #[derive(Args, Debug)]
-pub struct Common {
+pub struct Common<K: KeySet> {
     /// Racket description file (TOML, player units) or preset name; see `racket-impact racket --list`
     #[arg(long)]
     pub racket: Option<String>,
-    /// TOML file with any of the flags below as keys (flags win)
+    /// TOML file with any of the parameter flags below as keys (flags win; a key this command
+    /// does not use is named in one warning)
     #[arg(long)]
     pub config: Option<PathBuf>,
     #[command(flatten)]
-    pub overrides: OverrideArgs,
+    pub overrides: OverrideArgs<K>,
     /// Output format
     #[arg(long, value_enum, default_value_t = Format::Text)]
     pub format: Format,
 }
 
-impl Common {
+impl<K: KeySet> Common<K> {
     /// Where the parameters come from.
     pub fn sources(&self) -> Sources {
-        Sources { racket: self.racket.clone(), config: self.config.clone(), flags: self.overrides.0.clone() }
+        Sources {
+            racket: self.racket.clone(),
+            config: self.config.clone(),
+            flags: self.overrides.0.clone(),
+            command: K::COMMAND,
+            not_taken: K::not_taken(),
+        }
+    }
+
+    /// Refuse a parameter flag none of `params` uses; warn (one line) about config-file keys
+    /// the command does not use.
+    pub fn check_used<'a>(&self, params: impl IntoIterator<Item = &'a Params>) -> Result<()> {
+        let params: Vec<Params> = params.into_iter().copied().collect();
+        if let Some(note) = self.sources().check_used(&params)? {
+            warn(&note);
+        }
+        Ok(())
     }
 }
 

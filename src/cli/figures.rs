@@ -29,6 +29,14 @@ pub struct FiguresArgs {
 pub fn run(a: FiguresArgs) -> Result<()> {
     use racket_impact::experiments;
     if a.list {
+        let given = [("only", !a.only.is_empty()), ("out", a.out.is_some()), ("racket", a.racket.is_some())];
+        if let Some((flag, _)) = given.iter().find(|(_, g)| *g) {
+            return Err(racket_impact::Error::invalid(
+                flag,
+                "(given)",
+                "--list only lists the experiments and runs none",
+            ));
+        }
         for e in experiments::registry() {
             outln!("{:<24} {}\n{:<24} ({})", e.id, e.title, "", e.paper_ref);
         }

@@ -10,6 +10,7 @@ use racket_impact::study::map::{MapRequest, Quantity};
 use racket_impact::Result;
 
 use super::common::{out, outln, warn, warn_params, warn_twist, Common, Format, Progress};
+use super::overrides::MapKeys;
 
 /// What each quantity is, in the help.
 fn quantity_help(q: Quantity) -> &'static str {
@@ -33,7 +34,7 @@ fn quantity_parser() -> impl TypedValueParser<Value = Quantity> {
 #[derive(Args, Debug)]
 pub struct MapArgs {
     #[command(flatten)]
-    pub common: Common,
+    pub common: Common<MapKeys>,
     /// The quantity shown in the heat map (the CSV has every one)
     #[arg(long, value_parser = quantity_parser(), default_value = "power")]
     pub quantity: Quantity,
@@ -66,13 +67,18 @@ pub fn run(a: MapArgs) -> Result<()> {
         compare_tension_lb: a.compare_tension_lb,
     };
     request.check()?;
-    // a config file may be shared with simulate: its impact point is not refused, but said to be unused
-    let config = racket_impact::study::config_file(a.common.config.as_deref())?;
-    if config.x.is_some() || config.r.is_some() {
-        warn("x and r of the config file are not used by map: the grid sets the impact point");
-    }
     let outputs = Outputs::for_csv(&a.out.unwrap_or_else(|| request.default_csv()))?;
     let (configs, total) = request.configurations()?;
+    // (as the grid's points are: off the long axis too)
+    let solved: Vec<_> = configs
+        .iter()
+        .map(|(_, p)| {
+            let mut p = racket_impact::study::map::with_map_solver(p);
+            p.impact.r = 0.5 * p.racket.half_width;
+            p
+        })
+        .collect();
+    a.common.check_used(&solved)?;
 
     let bar = Progress::new(total as u64);
     let started = bar.started;
@@ -81,7 +87,8 @@ pub fn run(a: MapArgs) -> Result<()> {
     let map = computed?;
     let json = map.json()?;
     let csv = map.table.to_csv();
-    outputs.write(&csv, &map.heatmap, &json)?;
+    // the files are published only once the printing has succeeded (nothing left otherwise)
+    let staged = outputs.stage(&csv, &map.heatmap, &json)?;
     match a.common.format {
         Format::Text => {
             out!("{}", map.summary);
@@ -96,8 +103,9 @@ pub fn run(a: MapArgs) -> Result<()> {
         Format::Json => out!("{json}"),
         Format::Csv => out!("{csv}"),
     }
+    staged.commit()?;
     warn_params(configs.iter().map(|(_, p)| p));
-    let theta = ["theta_deg", "theta_deg_a", "theta_deg_b"]
+    let theta = ["theta_end_deg", "theta_end_deg_a", "theta_end_deg_b"]
         .iter()
         .filter_map(|c| map.table.column(c))
         .flatten()

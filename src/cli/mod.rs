@@ -1,6 +1,9 @@
 //! The command-line layer: one module per command, each with its clap arguments and a thin
 //! `run` that calls the library and prints; [`common`] holds what they share and
-//! [`overrides`] the parameter flags built from the parameter declarations.
+//! [`overrides`] the parameter flags built from the parameter declarations. [`Cli`] is the
+//! whole command line (its clap `Command` is what the option tests walk).
+
+use clap::{Parser, Subcommand};
 
 pub mod common;
 pub mod figures;
@@ -12,3 +15,65 @@ pub mod report;
 pub mod simulate;
 pub mod speed;
 pub mod sweep;
+
+#[derive(Parser, Debug)]
+#[command(name = "racket-impact", version, about = "Ball on a flexible tennis racket: R. Cross (2000) replicated")]
+pub struct Cli {
+    /// No warnings on stderr (an implausible but valid value still runs, unremarked)
+    #[arg(long, global = true)]
+    pub quiet: bool,
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// One impact: e_a, tau, theta, energy partition (defaults: the paper's racket, `--load hat`)
+    Simulate(simulate::SimulateArgs),
+    /// Eigenfrequencies of the free racket and the nodes of its fundamental mode
+    Modes(modes::ModesArgs),
+    /// Regenerate the paper's experiments: a CSV table and a PNG figure each
+    Figures(figures::FiguresArgs),
+    /// The paper's numbers beside ours: writes REPORT.md and prints it
+    Report(report::ReportArgs),
+    /// Fit a racket description (file or preset) to the model and show how well it matches
+    Racket(racket::RacketArgs),
+    /// Outgoing ball speed for a swing and an incoming ball; compare tensions or rackets
+    ///
+    /// v_out = e_A v_in + (1 + e_A) v_racket (the paper's frame transformation), with e_A
+    /// computed at the relative speed v_in + v_racket and the racket's swing speed taken at the
+    /// impact point. Example: racket-impact speed --racket tweener --swing 100 --incoming 60
+    /// --compare-tension-lb 50,60
+    Speed(speed::SpeedArgs),
+    /// Run the cartesian product of ranges or lists of any parameters, in parallel, as CSV
+    #[command(long_about = sweep::long_about())]
+    Sweep(sweep::SweepArgs),
+    /// Map a quantity over the string face: one impact per grid point, as CSV, PNG and JSON
+    ///
+    /// Runs an impact at every point of an nx x nr grid over the string face (the racket's head
+    /// ellipse; for a racket without one, such as the paper's, a 32 cm ellipse from the tip,
+    /// 2 half-width wide, centred 16 cm from the tip at the paper's mode-1 node) and writes the table (--out, default
+    /// map_<quantity>.csv, or map_<quantity>_diff.csv for a comparison), the heat map (same
+    /// stem, .png) and metadata (same stem, .json: the full parameters, the mode-1 node, the
+    /// point of maximum e_A). Every parameter flag and --config apply to every point. The impact
+    /// point, the solver and its step are not options: the grid chooses the points, and a map
+    /// runs the modal solver wherever the model variants allow it, else fd with its automatic
+    /// step (a --config file's x, r, solver and dt are named as unused). --format selects what is printed: a text summary, the JSON
+    /// metadata or the CSV table. Example: racket-impact map --racket tweener --quantity power
+    /// --compare-tension-lb 50,60
+    Map(map::MapArgs),
+}
+
+/// Run one command.
+pub fn run(command: Command) -> racket_impact::Result<()> {
+    match command {
+        Command::Simulate(a) => simulate::run(a),
+        Command::Modes(a) => modes::run(a),
+        Command::Figures(a) => figures::run(a),
+        Command::Report(a) => report::run(a),
+        Command::Racket(a) => racket::run(a),
+        Command::Speed(a) => speed::run(a),
+        Command::Sweep(a) => sweep::run(a),
+        Command::Map(a) => map::run(a),
+    }
+}

@@ -4,12 +4,13 @@ use clap::Args;
 use racket_impact::model::beam::Beam;
 use racket_impact::{Error, Result};
 
-use super::common::{given_keys, out, warn_params, Common, Format};
+use super::common::{out, warn_params, Common, Format};
+use super::overrides::ModesKeys;
 
 #[derive(Args, Debug)]
 pub struct ModesArgs {
     #[command(flatten)]
-    pub common: Common,
+    pub common: Common<ModesKeys>,
     /// Number of flexible modes to list (1..=20, at most N-1)
     #[arg(long, default_value_t = 4, allow_hyphen_values = true)]
     pub count: usize,
@@ -17,15 +18,8 @@ pub struct ModesArgs {
 
 /// The free racket's eigenfrequencies and mode-1 nodes.
 pub fn run(a: ModesArgs) -> Result<()> {
-    let used = ["length", "mass", "ei", "segments"];
-    if let Some(key) = given_keys(&a.common.overrides.0).into_iter().find(|k| !used.contains(k)) {
-        return Err(Error::invalid(
-            key,
-            "(given)",
-            "modes does not use it: the free racket's modes depend only on --racket, --length, --mass, --ei and --segments",
-        ));
-    }
     let params = a.common.sources().params()?;
+    a.common.check_used([&params])?;
     let n = params.numerics.segments;
     if a.count == 0 || a.count > 20 || a.count > n - 1 {
         return Err(Error::invalid("count", a.count, format!("must satisfy 1 <= count <= min(20, N-1 = {})", n - 1)));

@@ -7,9 +7,58 @@ use racket_impact::params::keys;
 use racket_impact::params::spec::{ParamSpec, Values};
 use racket_impact::params::{Overrides, Params};
 
-/// The parameter flags (`--x`, `--ks`, ...), in the order of their declaration.
-#[derive(Debug, Clone, Default)]
-pub struct OverrideArgs(pub Overrides);
+/// The parameter keys a command takes: it has a flag for each, and reads each from a config
+/// file; the others it sets itself or does not use (its help does not list them, the command
+/// line refuses them, a config file's values for them are named as unused).
+pub trait KeySet: std::fmt::Debug + Clone + Send + Sync + 'static {
+    /// The command.
+    const COMMAND: &'static str;
+    /// Whether the command takes the parameter `key`.
+    fn takes(key: &str) -> bool;
+    /// The declared keys it does not take.
+    fn not_taken() -> Vec<&'static str> {
+        keys::ALL.iter().map(|s| s.key).filter(|k| !Self::takes(k)).collect()
+    }
+}
+
+/// Declares a [`KeySet`]: `name = "command": |key| takes`.
+macro_rules! key_set {
+    ($($(#[doc = $doc:literal])* $name:ident = $command:literal: |$key:ident| $takes:expr;)+) => {$(
+        $(#[doc = $doc])*
+        #[derive(Debug, Clone, Copy, Default)]
+        pub struct $name;
+        impl KeySet for $name {
+            const COMMAND: &'static str = $command;
+            fn takes($key: &str) -> bool {
+                $takes
+            }
+        }
+    )+};
+}
+
+key_set! {
+    /// `simulate`: every parameter.
+    SimulateKeys = "simulate": |_key| true;
+    /// `modes`: the free racket's modes depend only on its length, mass, stiffness and segments.
+    ModesKeys = "modes": |key| ["length", "mass", "ei", "segments"].contains(&key);
+    /// `speed`: every parameter but the impact speed, incidence and spin, which the swing sets.
+    SpeedKeys = "speed": |key| !racket_impact::study::speed::SPEED_SETS.contains(&key);
+    /// `map`: every parameter but the impact point (the grid sets it) and the solver and its
+    /// step (a map runs the modal solver wherever the variants allow it, else fd with its
+    /// automatic step).
+    MapKeys = "map": |key| !["x", "r", "solver", "dt"].contains(&key);
+}
+
+/// The parameter flags (`--x`, `--ks`, ...) a command takes ([`KeySet`]), in the order of
+/// their declaration.
+#[derive(Debug, Clone)]
+pub struct OverrideArgs<K: KeySet>(pub Overrides, std::marker::PhantomData<K>);
+
+impl<K: KeySet> Default for OverrideArgs<K> {
+    fn default() -> Self {
+        OverrideArgs(Overrides::default(), std::marker::PhantomData)
+    }
+}
 
 /// The clap argument of one parameter: `--KEY <KEY>` with its help; numbers may be negative
 /// (the validation names the range), choices list their names.
@@ -53,13 +102,13 @@ fn help(spec: &ParamSpec, defaults: &Params) -> String {
     format!("{} [default: {value}{unit}{note}]", spec.help())
 }
 
-impl clap::Args for OverrideArgs {
+impl<K: KeySet> clap::Args for OverrideArgs<K> {
     fn augment_args(cmd: Command) -> Command {
         let defaults = match racket_impact::racket::resolve(None, &Overrides::default()) {
             Ok((p, _)) => p,
             Err(_) => Params::default(),
         };
-        keys::ALL.iter().fold(cmd, |cmd, spec| cmd.arg(arg(spec, &defaults)))
+        keys::ALL.iter().filter(|s| K::takes(s.key)).fold(cmd, |cmd, spec| cmd.arg(arg(spec, &defaults)))
     }
 
     fn augment_args_for_update(cmd: Command) -> Command {
@@ -67,7 +116,7 @@ impl clap::Args for OverrideArgs {
     }
 }
 
-impl FromArgMatches for OverrideArgs {
+impl<K: KeySet> FromArgMatches for OverrideArgs<K> {
     fn from_arg_matches(matches: &ArgMatches) -> Result<Self, clap::Error> {
         let mut args = OverrideArgs::default();
         args.update_from_arg_matches(matches)?;
@@ -75,7 +124,7 @@ impl FromArgMatches for OverrideArgs {
     }
 
     fn update_from_arg_matches(&mut self, matches: &ArgMatches) -> Result<(), clap::Error> {
-        for spec in &keys::ALL {
+        for spec in keys::ALL.iter().filter(|s| K::takes(s.key)) {
             // clap has parsed the text already; the setter reads it into its typed field
             let text = matches.get_raw(spec.key).and_then(|mut raw| raw.next()).and_then(|t| t.to_str());
             if let Some(text) = text {

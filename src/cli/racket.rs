@@ -28,7 +28,7 @@ pub fn run(a: RacketArgs) -> Result<()> {
         if let Some(arg) = &a.racket {
             return Err(Error::invalid("racket", arg, "--list lists every preset: give a racket or --list, not both"));
         }
-        return list(a.segments);
+        return list(a.segments, a.format);
     }
     let Some(arg) = a.racket.as_deref() else {
         return Err(Error::invalid("racket", "(missing)", "give a racket file or preset name, or --list"));
@@ -49,24 +49,90 @@ pub fn run(a: RacketArgs) -> Result<()> {
     Ok(())
 }
 
-/// One line per preset, fitted for `segments` segments.
-fn list(segments: usize) -> Result<()> {
+/// The presets, fitted for `segments` segments: one line each as text, or a table as CSV or
+/// JSON (one object per preset).
+fn list(segments: usize, format: Format) -> Result<()> {
+    use racket_impact::render::table::{Table, Value};
+    let mut table = Table::new(
+        "presets",
+        &[
+            "name",
+            "length_cm",
+            "mass_g",
+            "balance_cm",
+            "swingweight_kg_cm2",
+            "twistweight_kg_cm2",
+            "f1_hz",
+            "ks_n_per_m",
+            "profile",
+        ],
+    );
     for name in racket::preset_names() {
         let fitted = racket::load(name)?.to_racket(segments)?;
         let (r, rep) = (&fitted.racket, &fitted.report);
-        outln!(
-            "{name:<22} {:.1} cm, {:.0} g, balance {:.1} cm, swingweight {:.0} kg cm^2, twistweight {:.1} kg cm^2, f1 {:.0} Hz, ks {:.0} N/m{}",
-            100.0 * r.length,
-            1e3 * r.mass,
-            rep.balance_cm.model,
-            rep.swingweight_kg_cm2.model,
-            rep.twistweight_kg_cm2.model,
-            rep.frequency_hz.model,
-            fitted.strings.ks,
-            if r.profile.is_none() { ", uniform (the paper's beam)" } else { "" }
-        );
+        table.rows.push(vec![
+            Value::Text(name.to_string()),
+            Value::Num(100.0 * r.length),
+            Value::Num(1e3 * r.mass),
+            Value::Num(rep.balance_cm.model),
+            Value::Num(rep.swingweight_kg_cm2.model),
+            Value::Num(rep.twistweight_kg_cm2.model),
+            Value::Num(rep.frequency_hz.model),
+            Value::Num(fitted.strings.ks),
+            Value::Text(if r.profile.is_none() { "uniform" } else { "fitted" }.to_string()),
+        ]);
+    }
+    match format {
+        Format::Csv => out!("{}", table.to_csv()),
+        Format::Json => out!("{}", table_json(&table, &[])?),
+        Format::Text => {
+            for row in &table.rows {
+                let v = |i: usize| if let Value::Num(x) = row[i] { x } else { f64::NAN };
+                outln!(
+                    "{:<22} {:.1} cm, {:.0} g, balance {:.1} cm, swingweight {:.0} kg cm^2, twistweight {:.1} kg cm^2, f1 {:.0} Hz, ks {:.0} N/m{}",
+                    row[0].to_csv_field(),
+                    v(1),
+                    v(2),
+                    v(3),
+                    v(4),
+                    v(5),
+                    v(6),
+                    v(7),
+                    if row[8].to_csv_field() == "uniform" { ", uniform (the paper's beam)" } else { "" }
+                );
+            }
+        }
     }
     Ok(())
+}
+
+/// A table's rows as JSON objects (`{"<table name>": [...]}` plus `extra` members), pretty-printed.
+fn table_json(t: &racket_impact::render::table::Table, extra: &[(&str, serde_json::Value)]) -> Result<String> {
+    let rows: Vec<serde_json::Value> = t
+        .rows
+        .iter()
+        .map(|row| {
+            let obj: serde_json::Map<String, serde_json::Value> = t
+                .columns
+                .iter()
+                .zip(row)
+                .map(|(c, v)| {
+                    let value = match v {
+                        racket_impact::render::table::Value::Num(x) => serde_json::json!(x),
+                        racket_impact::render::table::Value::Int(i) => serde_json::json!(i),
+                        racket_impact::render::table::Value::Text(s) => serde_json::json!(s),
+                    };
+                    (c.clone(), value)
+                })
+                .collect();
+            serde_json::Value::Object(obj)
+        })
+        .collect();
+    let mut v = serde_json::json!({ t.name.as_str(): rows });
+    for (k, x) in extra {
+        v[*k] = x.clone();
+    }
+    Ok(format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?))
 }
 
 /// The fit report and the model's values.
@@ -93,22 +159,18 @@ fn text(fitted: &Fitted) -> String {
     s
 }
 
-/// The fit report's rows as objects, with the model's racket, strings and ball.
+/// The fit report's rows as objects (numbers as numbers), with the model's racket, strings and
+/// ball.
 fn json(fitted: &Fitted) -> Result<String> {
-    let t = fitted.report.table();
-    let rows: Vec<serde_json::Value> = t
-        .rows
-        .iter()
-        .map(|row| {
-            let obj: serde_json::Map<String, serde_json::Value> = t
-                .columns
-                .iter()
-                .zip(row)
-                .map(|(c, v)| (c.clone(), serde_json::Value::String(v.to_csv_field())))
-                .collect();
-            serde_json::Value::Object(obj)
-        })
-        .collect();
-    let v = serde_json::json!({ "fit": rows, "racket": fitted.racket, "strings": fitted.strings, "ball": fitted.ball });
-    Ok(format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?))
+    let mut t = fitted.report.table();
+    t.name = "fit".to_string();
+    let value = |v: serde_json::Result<serde_json::Value>| v.map_err(|e| Error::io("<json>", e));
+    table_json(
+        &t,
+        &[
+            ("racket", value(serde_json::to_value(fitted.racket))?),
+            ("strings", value(serde_json::to_value(fitted.strings))?),
+            ("ball", value(serde_json::to_value(fitted.ball))?),
+        ],
+    )
 }

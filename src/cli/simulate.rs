@@ -3,10 +3,12 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use racket_impact::params::spec::sig;
 use racket_impact::solve::{Model, SeriesOptions};
 use racket_impact::{Error, Result};
 
 use super::common::{out, warn, warn_params, warn_twist, Common, Format};
+use super::overrides::SimulateKeys;
 
 /// Sample spacing of the time series unless given, s.
 const DEFAULT_SERIES_DT: f64 = 2.0e-5;
@@ -16,7 +18,7 @@ const DEFAULT_SERIES_END: f64 = 0.0;
 #[derive(Args, Debug)]
 pub struct SimulateArgs {
     #[command(flatten)]
-    pub common: Common,
+    pub common: Common<SimulateKeys>,
     /// Also write the impact's time series (t, F, y_b, Y_T, theta, every energy term) as CSV
     #[arg(long)]
     pub series: Option<PathBuf>,
@@ -32,6 +34,7 @@ pub struct SimulateArgs {
 /// exist.
 pub fn run(a: SimulateArgs) -> Result<()> {
     let params = a.common.sources().params()?;
+    a.common.check_used([&params])?;
     if let Some(path) = &a.series {
         racket_impact::render::io::check_output_dir("series", path)?;
     }
@@ -55,6 +58,24 @@ pub fn run(a: SimulateArgs) -> Result<()> {
             return Err(Error::invalid("series", path.display(), "a time series needs --solver fd"));
         }
         let model = Model::new(&params)?;
+        // the rows, counted before any is made: the impact and the paper's two-period window
+        // (or --series-end), one row per sample or per step, whichever is longer
+        let f1_hz = racket_impact::model::basis::Basis::of(&params.racket, params.numerics.segments).omega[0]
+            / (2.0 * std::f64::consts::PI);
+        let rows = a.series_end.max(0.05 + 2.0 / f1_hz) / a.series_dt.max(model.dt);
+        let most = racket_impact::params::limits::MAX_SERIES_ROWS;
+        if rows.is_nan() || rows > most as f64 {
+            let (field, value) = if a.series_end > 0.05 + 2.0 / f1_hz {
+                ("series-end", a.series_end)
+            } else {
+                ("series-dt", a.series_dt)
+            };
+            return Err(Error::invalid(
+                field,
+                value,
+                format!("the time series would have about {} rows, at most {most}: a larger --series-dt or a shorter --series-end", sig(rows, 2)),
+            ));
+        }
         let (r, s) = model.run_with_series(SeriesOptions { sample_dt: a.series_dt, t_end: a.series_end })?;
         (r, Some(s))
     } else {
@@ -76,10 +97,13 @@ pub fn run(a: SimulateArgs) -> Result<()> {
         Format::Csv => racket_impact::render::impact::result_csv(&params, &result),
         Format::Text => racket_impact::render::impact::result_text(&params, &result),
     };
+    // the series file is published only once the result has been printed
+    let mut staged = racket_impact::render::io::Staged::new();
     if let (Some(path), Some(rows)) = (&a.series, &series) {
-        racket_impact::render::impact::write_series(path, &params, rows)?;
+        racket_impact::render::impact::stage_series(&mut staged, path, &params, rows)?;
     }
     out!("{text}");
+    staged.commit()?;
     warn_params([&params]);
     warn_twist(result.theta_end_deg);
     if result.recontact {

@@ -9,7 +9,7 @@ use racket_impact::params::{keys, Overrides};
 use racket_impact::study::sweep::Sweep;
 use racket_impact::Result;
 
-use super::common::{warn_params, warn_twist, write_stdout, Progress};
+use super::common::{stream_stdout, warn_params, warn_twist, Progress};
 
 #[derive(Args, Debug)]
 pub struct SweepArgs {
@@ -68,6 +68,21 @@ fn keys_with_defaults() -> String {
 /// Run the sweep, writing the header and then each finished chunk's rows.
 pub fn run(a: SweepArgs) -> Result<()> {
     let sweep = Sweep::from_pairs(a.racket.as_deref(), a.config.as_deref(), &a.specs)?;
+    // a swept parameter none of the impacts uses is refused; a config file's unused keys named
+    let representatives = sweep.representatives()?;
+    let swept: Vec<&str> = sweep.axes.iter().filter_map(|ax| keys::find(&ax.key).map(|s| s.key)).collect();
+    if let Some((key, why)) = racket_impact::params::used::first_unused(&swept, &representatives) {
+        let values = sweep.axes.iter().find(|ax| ax.key == key).map(|ax| ax.values.join(",")).unwrap_or_default();
+        return Err(racket_impact::Error::invalid(keys::find(key).map_or("sweep", |s| s.key), values, why));
+    }
+    if let Some(path) = &a.config {
+        let config = racket_impact::study::config_file(Some(path))?;
+        if let Some(note) =
+            racket_impact::study::unused_config_note(path, &config, &swept, &[], "sweep", &representatives)
+        {
+            super::common::warn(&note);
+        }
+    }
     if let Some(path) = &a.out {
         racket_impact::render::io::check_output_dir("out", path)?;
     }
@@ -79,7 +94,7 @@ pub fn run(a: SweepArgs) -> Result<()> {
     let mut emit = |bytes: &[u8]| -> Result<()> {
         match file.as_mut() {
             Some(f) => f.write(bytes),
-            None => write_stdout(bytes),
+            None => stream_stdout(bytes),
         }
     };
     let header = sweep.header();
@@ -103,7 +118,7 @@ pub fn run(a: SweepArgs) -> Result<()> {
     if let Some(f) = file {
         f.commit()?;
     }
-    warn_params(sweep.representatives()?.iter());
+    warn_params(representatives.iter());
     warn_twist(theta_max);
     Ok(())
 }

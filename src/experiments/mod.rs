@@ -134,12 +134,16 @@ pub fn run_and_write(exp: &Experiment, ctx: &Context, out: &Path) -> Result<Tabl
             "every number in an experiment table must be finite",
         ));
     }
-    crate::render::io::write_atomic(&out.join(format!("{}.csv", exp.id)), table.to_csv().as_bytes())?;
-    crate::render::plot::render_png(
+    // the table and its figure are published together, or neither
+    let mut staged = crate::render::io::Staged::new();
+    staged.bytes(&out.join(format!("{}.csv", exp.id)), table.to_csv().as_bytes())?;
+    crate::render::plot::stage_png(
+        &mut staged,
         exp.id,
         &ctx.adapt((exp.chart)(ctx, &table)),
         &out.join(format!("{}.png", exp.id)),
     )?;
+    staged.commit()?;
     Ok(table)
 }
 

@@ -130,6 +130,18 @@ pub fn find(key: &str) -> Option<&'static ParamSpec> {
     ALL.iter().find(|s| s.key == key)
 }
 
+/// The other spellings of a parameter a config file may use: the key with underscores (as in
+/// the JSON, `angle_deg`) and its CSV column with the unit (`ks_n_per_m`), so that names read
+/// off any output can be given back.
+pub fn aliases(spec: &ParamSpec) -> [String; 2] {
+    [spec.key.replace('-', "_"), spec.column.to_string()]
+}
+
+/// The declaration a name denotes: a key, or one of its [`aliases`].
+pub fn find_any(name: &str) -> Option<&'static ParamSpec> {
+    find(name).or_else(|| ALL.iter().find(|s| aliases(s).iter().any(|a| a == name)))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

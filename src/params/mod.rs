@@ -15,17 +15,21 @@
 //! - [`oblique`]: incidence angle, azimuth, incoming spin, friction (beyond the paper).
 //! - [`spec`] and [`keys`]: what a declaration is, and the declarations.
 //! - [`overrides`]: the `--config` file.
+//! - [`limits`]: the most work a command accepts (sweep sizes, series rows, comparisons).
+//! - [`used`]: which parameters an impact reads (a value given for one it does not is refused).
 
 use serde::{Deserialize, Serialize};
 
 use crate::error::Result;
 
 pub mod keys;
+pub mod limits;
 pub mod numerics;
 pub mod oblique;
 pub mod overrides;
 pub mod physical;
 pub mod spec;
+pub mod used;
 pub mod variants;
 
 pub use keys::Overrides;

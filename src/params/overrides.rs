@@ -14,8 +14,35 @@ impl Overrides {
     /// file that is not UTF-8 text, a TOML syntax error, a wrong type and an unknown key are all
     /// errors with one line naming the file and, where TOML knows it, the key and line.
     pub fn from_toml_bytes(path: &std::path::Path, bytes: &[u8]) -> Result<Self> {
-        parse_toml(path, bytes, "give at least one key, e.g. ks = 4e4")
+        let hint = "give at least one key, e.g. ks = 4e4";
+        match canonical_keys(path, bytes)? {
+            Some(text) => parse_toml(path, text.as_bytes(), hint),
+            None => parse_toml(path, bytes, hint),
+        }
     }
+}
+
+/// The config text with every alias of a key ([`super::keys::aliases`]: `angle_deg`,
+/// `ks_n_per_m`) spelled as the key, or `None` when it has none (or is not a TOML table, which
+/// [`parse_toml`] then reports). A key given twice under two spellings is an error.
+fn canonical_keys(path: &std::path::Path, bytes: &[u8]) -> Result<Option<String>> {
+    let Some(table) = std::str::from_utf8(bytes).ok().and_then(|t| t.parse::<toml::Table>().ok()) else {
+        return Ok(None);
+    };
+    if table.keys().all(|k| super::keys::find(k).is_some() || super::keys::find_any(k).is_none()) {
+        return Ok(None);
+    }
+    let mut out = toml::Table::new();
+    for (name, value) in table {
+        let key = super::keys::find_any(&name).map_or(name.clone(), |s| s.key.to_string());
+        if out.insert(key.clone(), value).is_some() {
+            return Err(Error::Config {
+                path: path.into(),
+                message: format!("{name} and {key} name the same parameter: give it once"),
+            });
+        }
+    }
+    toml::to_string(&out).map(Some).map_err(|e| Error::Config { path: path.into(), message: e.to_string() })
 }
 
 /// The bytes of a TOML file; a file that cannot be read is an [`Error::Config`] naming it.
@@ -61,6 +88,16 @@ mod tests {
         assert_eq!(o.half_width, Some(0.1));
         assert_eq!(o.load, Some(LoadRule::Node));
         assert!(toml::from_str::<Overrides>("xx = 0.2").is_err());
+    }
+
+    #[test]
+    fn a_key_may_be_spelled_as_in_the_json_or_the_csv() {
+        let p = std::path::Path::new("c.toml");
+        let o =
+            Overrides::from_toml_bytes(p, b"angle_deg = 30\nks_n_per_m = 3e4\nhalf_width = 0.1\nmb = 0.05").unwrap();
+        assert_eq!((o.angle_deg, o.ks, o.half_width, o.mb), (Some(30.0), Some(3.0e4), Some(0.1), Some(0.05)));
+        let e = Overrides::from_toml_bytes(p, b"ks = 4e4\nks_n_per_m = 3e4").unwrap_err().to_string();
+        assert!(e.contains("name the same parameter"), "{e}");
     }
 
     #[test]

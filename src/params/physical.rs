@@ -20,7 +20,9 @@ pub const STIFFNESS_REL: (f64, f64) = (1.0e-3, 1.0e3);
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Ball {
-    /// Ball mass `m_b`, kg; 1e-4..=10 ([`keys::MB`]). Paper: 0.057 kg.
+    /// Ball mass `m_b`, kg; 1e-4..=10 ([`keys::MB`]). Paper: 0.057 kg. Named `mb` in JSON as
+    /// on the command line (one name per quantity); `mass` is read too.
+    #[serde(rename = "mb", alias = "mass")]
     pub mass: f64,
     /// Compression spring constant `k1` (Eq 3), N/m; 1..=1e9. Paper: 3e4 N/m.
     pub k1: f64,

@@ -312,6 +312,25 @@ macro_rules! declare_params {
                 Ok(())
             }
 
+            /// The keys set, in the order of their declaration.
+            pub fn given(&self) -> Vec<&'static str> {
+                let mut keys = Vec::new();
+                $(
+                    if self.$field.is_some() {
+                        keys.push($key);
+                    }
+                )*
+                keys
+            }
+
+            /// Unset `key` (nothing if it is not a key).
+            pub fn clear(&mut self, key: &str) {
+                match key {
+                    $($key => self.$field = None,)*
+                    _ => {}
+                }
+            }
+
             /// Field-wise `self` where set, else `base`.
             pub fn or(self, base: Overrides) -> Overrides {
                 Overrides { $($field: self.$field.or(base.$field),)* }

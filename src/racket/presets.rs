@@ -38,8 +38,9 @@ pub fn load(arg: &str) -> Result<RacketSpec> {
     if path.is_file() {
         return RacketSpec::from_toml_file(path);
     }
-    Err(Error::Config {
-        path: path.into(),
-        message: format!("is neither a racket preset ({}) nor a file", PRESET_NAMES.join(", ")),
-    })
+    Err(Error::invalid(
+        "racket",
+        arg,
+        format!("must be a racket preset ({}) or a racket file (none at this path)", PRESET_NAMES.join(", ")),
+    ))
 }

@@ -153,7 +153,12 @@ pub mod ranges {
 impl RacketSpec {
     /// Read and check a racket file.
     pub fn from_toml_file(path: &Path) -> Result<Self> {
-        Self::from_toml_bytes(path, &params::read_file(path)?)
+        // (the TOML reading is the config files'; its errors name a racket file here)
+        let as_racket = |e: crate::Error| match e {
+            crate::Error::Config { path, message } => crate::Error::RacketFile { path, message },
+            other => other,
+        };
+        Self::from_toml_bytes(path, &params::read_file(path).map_err(as_racket)?).map_err(as_racket)
     }
 
     /// Parse and check the contents of a racket file (`path` only names it in errors). An empty

@@ -131,31 +131,29 @@ pub fn recorded_oblique(p: &Params) -> Vec<(&'static str, f64)> {
     ]
 }
 
+/// The columns of the time series ([`SeriesRow`]'s fields: time s, force N, displacements m,
+/// twist rad, energies as fractions of the ball's incident energy), before [`recorded`].
+pub const SERIES_COLUMNS: [&str; 13] = [
+    "t_s",
+    "force_n",
+    "y_ball_m",
+    "y_total_m",
+    "theta_rad",
+    "ke_ball",
+    "pe_ball",
+    "pe_string",
+    "ke_racket",
+    "pe_racket",
+    "ke_spin",
+    "hand",
+    "total",
+];
+
 /// The time series as a table; every row ends with the impact it belongs to ([`recorded`]).
 pub fn series_table(params: &Params, rows: &[SeriesRow]) -> Table {
     let fixed = recorded(params);
-    let mut t = Table::new(
-        "series",
-        &[
-            "t_s",
-            "force_n",
-            "y_ball_m",
-            "y_total_m",
-            "theta_rad",
-            "ke_ball",
-            "pe_ball",
-            "pe_string",
-            "ke_racket",
-            "pe_racket",
-            "ke_spin",
-            "hand",
-            "total",
-            fixed[0].0,
-            fixed[1].0,
-            fixed[2].0,
-            fixed[3].0,
-        ],
-    );
+    let columns: Vec<&str> = SERIES_COLUMNS.into_iter().chain(fixed.iter().map(|(c, _)| *c)).collect();
+    let mut t = Table::new("series", &columns);
     for r in rows {
         let vals = [
             r.t_s,
@@ -177,7 +175,12 @@ pub fn series_table(params: &Params, rows: &[SeriesRow]) -> Table {
     t
 }
 
-/// Write the time series CSV atomically.
-pub fn write_series(path: &Path, params: &Params, rows: &[SeriesRow]) -> Result<()> {
-    crate::render::io::write_atomic(path, series_table(params, rows).to_csv().as_bytes())
+/// Stage the time series CSV in `staged` (published with the command's other outputs).
+pub fn stage_series(
+    staged: &mut crate::render::io::Staged,
+    path: &Path,
+    params: &Params,
+    rows: &[SeriesRow],
+) -> Result<()> {
+    staged.bytes(path, series_table(params, rows).to_csv().as_bytes())
 }

@@ -1,18 +1,34 @@
-//! Atomic, deterministic file output.
+//! Atomic, deterministic file output that never replaces what is not a file.
 //!
 //! Every file the crate produces (CSV tables, JSON, PNG figures) is first written to a hidden
-//! temporary file next to its target and then renamed over it, so a reader never sees a
-//! half-written file and an interrupted run never leaves a truncated one behind.
+//! temporary file ([`tempfile`], removed if dropped) next to the file it will become and then
+//! renamed over it, so a reader never sees a half-written file and an interrupted run never
+//! leaves a truncated one behind.
+//!
+//! What is at the output path decides how it is written ([`resolve`]):
+//! - nothing or a regular file: temporary file + rename;
+//! - a symbolic link: its target is written (atomically, as above, where the target is a
+//!   regular file or missing); the link stays;
+//! - a device, FIFO or socket (`/dev/null`, `/dev/stdout`, a named pipe): written through,
+//!   never replaced;
+//! - a directory: refused.
+//!
+//! A command that writes several files and prints stages them in one [`Staged`] and commits
+//! them only after its standard output was written: any error before the commit leaves no
+//! output anywhere. (A rename can still fail halfway through a commit; devices are written
+//! before any rename, so the usual failure, a full device, leaves nothing.)
+//!
+//! Why not `tempfile::NamedTempFile::persist` or `atomic-write-file` alone: both rename onto
+//! the path they are given, which replaces a symlink or a device by a regular file. They are
+//! right for a regular file; [`tempfile`] is used for that part.
 
-use std::fs::{self, File};
+use std::fs::{self, File, OpenOptions};
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicU64, Ordering};
+
+use tempfile::NamedTempFile;
 
 use crate::error::{Error, Result};
-
-/// Distinguishes temporary files made by different threads of the same process.
-static TEMP_COUNTER: AtomicU64 = AtomicU64::new(0);
 
 /// The directory a file at `path` lives in (`.` for a bare file name).
 fn parent_dir(path: &Path) -> &Path {
@@ -22,108 +38,250 @@ fn parent_dir(path: &Path) -> &Path {
     }
 }
 
-/// A fresh temporary path next to `path`: `.<file>.tmp.<pid>.<n>` followed by `suffix`.
-///
-/// Checks that `path` names a file and that its directory exists; creates nothing.
-pub(crate) fn temp_sibling(path: &Path, suffix: &str) -> Result<PathBuf> {
-    let name = path.file_name().ok_or_else(|| Error::io(path, "not a file path (no file name)"))?;
-    let dir = parent_dir(path);
-    if !dir.is_dir() {
-        return Err(Error::io(path, format!("directory {} does not exist", dir.display())));
+/// How an output path is written, once its symbolic links are followed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Resolved {
+    /// A regular file or nothing (at the end of any symlinks): temporary file + rename.
+    File(PathBuf),
+    /// A device, FIFO or socket: written through, never replaced.
+    Through(PathBuf),
+}
+
+impl Resolved {
+    /// Whether the output is written through (a device or FIFO), not replaced.
+    pub fn is_through(&self) -> bool {
+        matches!(self, Resolved::Through(_))
     }
-    let n = TEMP_COUNTER.fetch_add(1, Ordering::Relaxed);
-    let tmp_name = format!(".{}.tmp.{}.{}{}", name.to_string_lossy(), std::process::id(), n, suffix);
-    Ok(dir.join(tmp_name))
 }
 
-/// Move the finished temporary file `tmp` over `path`; on failure remove `tmp`.
-pub(crate) fn commit_temp(tmp: &Path, path: &Path) -> Result<()> {
-    fs::rename(tmp, path).map_err(|e| {
-        let _ = fs::remove_file(tmp);
-        Error::io(path, e)
-    })
-}
-
-/// Write `bytes` to `path` atomically.
-///
-/// The bytes go to a temporary file in the same directory (`.<file>.tmp.<pid>.<n>`), which is
-/// flushed and synced and then renamed over `path`. On any error the temporary file is removed
-/// and an [`Error::Io`] naming `path` is returned; `path` itself is then untouched.
-///
-/// The directory of `path` must already exist; this function never creates directories (see
-/// [`ensure_dir`]).
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
-    let tmp = temp_sibling(path, "")?;
-    if let Err(e) = write_synced(&tmp, path, bytes) {
-        let _ = fs::remove_file(&tmp);
-        return Err(e);
+/// Follow the symbolic links at `path` (a dangling link names the file to create) and say how
+/// the output is written; a directory (or a link to one), a link loop or a missing directory
+/// is an error naming `path`.
+pub fn resolve(path: &Path) -> Result<Resolved> {
+    if path.file_name().is_none() {
+        return Err(Error::io(path, "not a file path (no file name)"));
     }
-    commit_temp(&tmp, path)
+    let mut at = path.to_path_buf();
+    for _ in 0..40 {
+        let meta = match fs::symlink_metadata(&at) {
+            Ok(m) => m,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                let dir = parent_dir(&at);
+                if !dir.is_dir() {
+                    return Err(Error::io(path, format!("directory {} does not exist", dir.display())));
+                }
+                return Ok(Resolved::File(at));
+            }
+            Err(e) => return Err(Error::io(path, e)),
+        };
+        let kind = meta.file_type();
+        if kind.is_symlink() {
+            let link = fs::read_link(&at).map_err(|e| Error::io(path, e))?;
+            at = if link.is_absolute() { link } else { parent_dir(&at).join(link) };
+            continue;
+        }
+        if kind.is_dir() {
+            return Err(Error::io(path, "is a directory"));
+        }
+        return Ok(if kind.is_file() { Resolved::File(at) } else { Resolved::Through(at) });
+    }
+    Err(Error::io(path, "too many levels of symbolic links"))
 }
 
-/// Write `bytes` to the temporary file `tmp` and sync it (errors name the eventual `target`);
-/// the caller removes `tmp` on error and renames it over `target` on success.
-pub(crate) fn write_synced(tmp: &Path, target: &Path, bytes: &[u8]) -> Result<()> {
-    let written = (|| -> std::io::Result<()> {
-        let mut file = File::create(tmp)?;
-        file.write_all(bytes)?;
-        file.flush()?;
-        file.sync_all()
+/// A new empty temporary file for the output `shown`, resolved to `target`: beside a file
+/// target (so the rename stays on one file system), in the system's temporary directory for
+/// a device. Created readable by all (subject to the umask), as a plain file would be.
+fn temp_for(target: &Resolved, shown: &Path, suffix: &str) -> Result<NamedTempFile> {
+    let (dir, name) = match target {
+        Resolved::File(p) => (parent_dir(p).to_path_buf(), p.file_name()),
+        Resolved::Through(p) => (std::env::temp_dir(), p.file_name()),
+    };
+    let prefix = format!(".{}.tmp.", name.map(|n| n.to_string_lossy()).unwrap_or_default());
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(&prefix).suffix(suffix);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        builder.permissions(fs::Permissions::from_mode(0o666));
+    }
+    builder.tempfile_in(&dir).map_err(|e| Error::io(shown, cannot_create(&dir, &e)))
+}
+
+/// Why no file can be created in `dir`, in a few words (`directory d is not writable: permission
+/// denied`).
+fn cannot_create(dir: &Path, e: &std::io::Error) -> String {
+    format!("cannot create a file in directory {}: {}", dir.display(), std::io::Error::from(e.kind()))
+}
+
+/// Copy the finished temporary file `tmp` through the device or FIFO `target`.
+fn write_through(tmp: &Path, target: &Path, shown: &Path) -> Result<()> {
+    let copied = (|| -> std::io::Result<()> {
+        let mut from = File::open(tmp)?;
+        let mut to = OpenOptions::new().write(true).open(target)?;
+        std::io::copy(&mut from, &mut to)?;
+        to.flush()
     })();
-    written.map_err(|e| Error::io(target, e))
+    copied.map_err(|e| Error::io(shown, e))
 }
 
-/// Refuse an output `path` whose directory does not exist, as an invalid value of the option
-/// `field` (checked before any work, so nothing is computed for an output that cannot be
-/// written).
+/// One staged output: its temporary file, where it goes and the path the user gave.
+struct Pending {
+    tmp: NamedTempFile,
+    target: Resolved,
+    shown: PathBuf,
+}
+
+/// Output files staged together and published together ([`Staged::commit`]); dropped without
+/// a commit (an error, a failed print), every temporary file is removed and no output is
+/// touched.
+#[derive(Default)]
+pub struct Staged {
+    files: Vec<Pending>,
+}
+
+impl Staged {
+    /// Nothing staged yet.
+    pub fn new() -> Self {
+        Staged::default()
+    }
+
+    /// Stage `bytes` as the content of `path`.
+    pub fn bytes(&mut self, path: &Path, bytes: &[u8]) -> Result<()> {
+        self.with(path, "", |tmp| {
+            let written = (|| -> std::io::Result<()> {
+                let mut file = OpenOptions::new().write(true).truncate(true).open(tmp)?;
+                file.write_all(bytes)?;
+                file.sync_all()
+            })();
+            written.map_err(|e| Error::io(path, e))
+        })
+    }
+
+    /// Stage the file that `write` writes at the temporary path it is given (which ends in
+    /// `suffix`, for writers that choose the format by extension) as the content of `path`.
+    pub fn with(&mut self, path: &Path, suffix: &str, write: impl FnOnce(&Path) -> Result<()>) -> Result<()> {
+        let target = resolve(path)?;
+        let tmp = temp_for(&target, path, suffix)?;
+        write(tmp.path())?;
+        self.files.push(Pending { tmp, target, shown: path.to_path_buf() });
+        Ok(())
+    }
+
+    /// Publish every staged file: devices and FIFOs are written through first (the writes that
+    /// can fail), then the files are renamed over their targets.
+    pub fn commit(mut self) -> Result<()> {
+        let files = std::mem::take(&mut self.files);
+        let (through, renamed): (Vec<Pending>, Vec<Pending>) = files.into_iter().partition(|p| p.target.is_through());
+        for p in &through {
+            if let Resolved::Through(target) = &p.target {
+                write_through(p.tmp.path(), target, &p.shown)?;
+            }
+        }
+        for p in renamed {
+            if let Resolved::File(target) = &p.target {
+                p.tmp.persist(target).map_err(|e| Error::io(&p.shown, e.error))?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Write `bytes` to `path` atomically (see the module docs for links and devices).
+///
+/// On any error no temporary file is left and an [`Error::Io`] naming `path` is returned;
+/// `path` itself is then untouched. The directory of `path` must already exist; this function
+/// never creates directories (see [`ensure_dir`]).
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
+    let mut staged = Staged::new();
+    staged.bytes(path, bytes)?;
+    staged.commit()
+}
+
+/// Write the file that `write` writes at a temporary path ending in `suffix` to `path`
+/// atomically, as [`write_atomic`].
+pub fn write_with(path: &Path, suffix: &str, write: impl FnOnce(&Path) -> Result<()>) -> Result<()> {
+    let mut staged = Staged::new();
+    staged.with(path, suffix, write)?;
+    staged.commit()
+}
+
+/// Refuse an output `path` that cannot be written, as an invalid value of the option `field`:
+/// its directory does not exist, it is a directory, or no file can be created beside it (a
+/// read-only directory). Checked before any work, so nothing is computed for an output that
+/// cannot be written; creates nothing.
 pub fn check_output_dir(field: &'static str, path: &Path) -> Result<()> {
+    let refuse = |why: String| Error::invalid(field, path.display(), why);
     let dir = parent_dir(path);
     if !dir.is_dir() {
-        return Err(Error::invalid(field, path.display(), format!("directory {} does not exist", dir.display())));
+        return Err(refuse(format!("directory {} does not exist", dir.display())));
+    }
+    let message = |e: Error| match e {
+        Error::Io { message, .. } => message,
+        other => other.to_string(),
+    };
+    let target = resolve(path).map_err(|e| refuse(message(e)))?;
+    if let Resolved::File(_) = target {
+        // a probe of the same kind as the real temporary file, removed at once
+        temp_for(&target, path, "").map_err(|e| refuse(message(e)))?;
     }
     Ok(())
 }
 
 /// A file written in pieces and published atomically: the bytes go to a hidden temporary file
-/// next to the target; [`AtomicFile::commit`] syncs it and renames it over the target. Dropped
-/// without a commit (an error, a panic), the temporary file is removed and the target is
-/// untouched. Used for streamed outputs such as `sweep`, whose size is not known in advance.
+/// next to the target (or straight through a device or FIFO); [`AtomicFile::commit`] syncs it
+/// and renames it over the target. Dropped without a commit (an error, a panic), the temporary
+/// file is removed and the target is untouched. Used for streamed outputs such as `sweep`,
+/// whose size is not known in advance.
 pub struct AtomicFile {
-    tmp: PathBuf,
     path: PathBuf,
-    out: Option<std::io::BufWriter<File>>,
+    out: Option<Stream>,
+}
+
+/// Where an [`AtomicFile`]'s bytes go.
+enum Stream {
+    Temp(std::io::BufWriter<NamedTempFile>, PathBuf),
+    Through(std::io::BufWriter<File>),
 }
 
 impl AtomicFile {
     /// Start writing `path` (its directory must exist).
     pub fn create(path: &Path) -> Result<Self> {
-        let tmp = temp_sibling(path, "")?;
-        let file = File::create(&tmp).map_err(|e| Error::io(path, e))?;
-        Ok(AtomicFile { tmp, path: path.to_path_buf(), out: Some(std::io::BufWriter::new(file)) })
+        let out = match resolve(path)? {
+            Resolved::Through(target) => {
+                let file = OpenOptions::new().write(true).open(&target).map_err(|e| Error::io(path, e))?;
+                Stream::Through(std::io::BufWriter::new(file))
+            }
+            file @ Resolved::File(_) => {
+                let tmp = temp_for(&file, path, "")?;
+                let Resolved::File(target) = file else { unreachable!("matched as a file") };
+                Stream::Temp(std::io::BufWriter::new(tmp), target)
+            }
+        };
+        Ok(AtomicFile { path: path.to_path_buf(), out: Some(out) })
     }
 
     /// Append bytes.
     pub fn write(&mut self, bytes: &[u8]) -> Result<()> {
-        match self.out.as_mut() {
-            Some(w) => w.write_all(bytes).map_err(|e| Error::io(&self.path, e)),
-            None => Err(Error::io(&self.path, "already committed")),
-        }
+        let written = match self.out.as_mut() {
+            Some(Stream::Temp(w, _)) => w.write_all(bytes),
+            Some(Stream::Through(w)) => w.write_all(bytes),
+            None => return Err(Error::io(&self.path, "already committed")),
+        };
+        written.map_err(|e| Error::io(&self.path, e))
     }
 
-    /// Flush, sync and rename over the target.
+    /// Flush, sync and rename over the target (or flush through the device).
     pub fn commit(mut self) -> Result<()> {
-        let w = self.out.take().ok_or_else(|| Error::io(&self.path, "already committed"))?;
-        let file = w.into_inner().map_err(|e| Error::io(&self.path, e.error()))?;
-        file.sync_all().map_err(|e| Error::io(&self.path, e))?;
-        drop(file);
-        commit_temp(&self.tmp, &self.path)
-    }
-}
-
-impl Drop for AtomicFile {
-    fn drop(&mut self) {
-        if self.out.take().is_some() {
-            let _ = fs::remove_file(&self.tmp);
+        let fail = |e: std::io::Error| Error::io(&self.path, e);
+        match self.out.take() {
+            Some(Stream::Temp(w, target)) => {
+                let tmp = w.into_inner().map_err(|e| fail(e.into_error()))?;
+                tmp.as_file().sync_all().map_err(fail)?;
+                tmp.persist(&target).map_err(|e| fail(e.error))?;
+                Ok(())
+            }
+            Some(Stream::Through(mut w)) => w.flush().map_err(fail),
+            None => Err(Error::io(&self.path, "already committed")),
         }
     }
 }
@@ -214,6 +372,41 @@ mod tests {
         assert!(write_atomic(&target, b"data").is_err());
         // Only the (non-empty) directory remains; the temporary file is gone.
         assert_eq!(entries(dir.path()), vec!["sub".to_string()]);
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn links_are_followed_to_what_they_name_and_loops_and_directories_refused() {
+        let dir = scratch();
+        let (a, b, c) = (dir.path().join("a"), dir.path().join("b"), dir.path().join("c.csv"));
+        std::os::unix::fs::symlink("b", &a).unwrap();
+        std::os::unix::fs::symlink("c.csv", &b).unwrap();
+        assert_eq!(resolve(&a).unwrap(), Resolved::File(dir.path().join("c.csv")), "dangling at the end: created");
+        write_atomic(&a, b"x").unwrap();
+        assert_eq!(fs::read(&c).unwrap(), b"x");
+        assert!(fs::symlink_metadata(&a).unwrap().file_type().is_symlink());
+        let (l1, l2) = (dir.path().join("l1"), dir.path().join("l2"));
+        std::os::unix::fs::symlink("l2", &l1).unwrap();
+        std::os::unix::fs::symlink("l1", &l2).unwrap();
+        assert!(resolve(&l1).unwrap_err().to_string().contains("symbolic links"));
+        let d = dir.path().join("d");
+        fs::create_dir(&d).unwrap();
+        std::os::unix::fs::symlink("d", dir.path().join("ld")).unwrap();
+        assert!(resolve(&dir.path().join("ld")).unwrap_err().to_string().contains("is a directory"));
+        assert!(resolve(Path::new("/dev/null")).unwrap().is_through());
+    }
+
+    #[test]
+    fn a_staged_file_dropped_uncommitted_leaves_nothing() {
+        let dir = scratch();
+        let path = dir.path().join("out.csv");
+        fs::write(&path, b"old").unwrap();
+        let mut staged = Staged::new();
+        staged.bytes(&path, b"new").unwrap();
+        staged.bytes(&dir.path().join("other.json"), b"{}").unwrap();
+        drop(staged);
+        assert_eq!(fs::read(&path).unwrap(), b"old");
+        assert_eq!(entries(dir.path()), vec!["out.csv".to_string()]);
     }
 
     #[test]

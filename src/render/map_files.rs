@@ -2,6 +2,7 @@
 
 use crate::error::{Error, Result};
 use crate::render::heatmap::HeatMap;
+use crate::render::io::{resolve, Staged};
 
 /// The three output files of a map: the CSV as given, the PNG and the JSON next to it (same
 /// stem).
@@ -28,43 +29,32 @@ impl Outputs {
             ));
         }
         crate::render::io::check_output_dir("out", path)?;
+        if resolve(path)?.is_through() {
+            return Err(Error::invalid(
+                "out",
+                path.display(),
+                "a map is three files (CSV, PNG and JSON with the same stem): give a file path, not a device or pipe (--format csv prints the table)",
+            ));
+        }
         let out =
             Outputs { csv: path.to_path_buf(), png: path.with_extension("png"), json: path.with_extension("json") };
-        for p in [&out.csv, &out.png, &out.json] {
-            if p.is_dir() {
-                return Err(Error::invalid("out", path.display(), format!("{} is a directory", p.display())));
-            }
+        for p in [&out.png, &out.json] {
+            crate::render::io::check_output_dir("out", p)?;
         }
         Ok(out)
     }
 
-    /// Write all three, all or nothing: each goes to a temporary file next to its target
-    /// first, and only when all three are complete are they renamed over the targets.
-    pub fn write(&self, csv: &str, map: &HeatMap, json: &str) -> Result<()> {
-        let tmp_csv = crate::render::io::temp_sibling(&self.csv, "")?;
-        let tmp_json = crate::render::io::temp_sibling(&self.json, "")?;
-        let tmp_png = crate::render::io::temp_sibling(&self.png, ".png")?;
-        let cleanup = || {
-            for t in [&tmp_csv, &tmp_json, &tmp_png] {
-                let _ = std::fs::remove_file(t);
-            }
-        };
-        let written = (|| -> Result<()> {
-            crate::render::io::write_synced(&tmp_csv, &self.csv, csv.as_bytes())?;
-            crate::render::io::write_synced(&tmp_json, &self.json, json.as_bytes())?;
-            crate::render::heatmap::draw_file(map, &tmp_png)
+    /// Stage all three (see [`crate::render::io::Staged`]): each is complete in a temporary
+    /// file, and the caller commits them together once everything else (the printed summary)
+    /// has succeeded; dropped instead, nothing is written.
+    pub fn stage(&self, csv: &str, map: &HeatMap, json: &str) -> Result<Staged> {
+        let mut staged = Staged::new();
+        staged.bytes(&self.csv, csv.as_bytes())?;
+        staged.bytes(&self.json, json.as_bytes())?;
+        staged.with(&self.png, ".png", |tmp| {
+            crate::render::heatmap::draw_file(map, tmp)
                 .map_err(|message| Error::Plot { id: self.png.display().to_string(), message })
-        })();
-        if let Err(e) = written {
-            cleanup();
-            return Err(e);
-        }
-        for (tmp, path) in [(&tmp_csv, &self.csv), (&tmp_json, &self.json), (&tmp_png, &self.png)] {
-            if let Err(e) = crate::render::io::commit_temp(tmp, path) {
-                cleanup();
-                return Err(e);
-            }
-        }
-        Ok(())
+        })?;
+        Ok(staged)
     }
 }

@@ -33,7 +33,7 @@ pub struct Text {
 /// One field of [`ImpactResult`].
 #[derive(Debug, Clone, Copy)]
 pub struct Field {
-    /// The struct field's name, which is also its JSON and CSV key.
+    /// Its JSON and CSV key (the struct field's name, or the name declared with `as`).
     pub key: &'static str,
     /// Its SI unit (empty for a pure number or a fraction of the incident energy).
     pub unit: &'static str,
@@ -135,18 +135,21 @@ impl Absent for bool {
     }
 }
 
-/// Declares [`ImpactResult`] and [`FIELDS`] from one list: each field's doc, name, type, unit,
-/// whether it is checked and swept, and its text line.
+/// Declares [`ImpactResult`] and [`FIELDS`] from one list: each field's doc, name (`as
+/// "name"` where the JSON and CSV name differs from the Rust one: every non-SI or dimensioned
+/// name carries its unit), type, unit, whether it is checked and swept, and its text line.
 macro_rules! impact_result {
     (@get f64, $key:ident) => { Get::Number(|r: &ImpactResult| r.$key) };
     (@get bool, $key:ident) => { Get::Flag(|r: &ImpactResult| r.$key) };
     (@zero f64) => { 0.0 };
     (@zero bool) => { false };
-    ($($(#[doc = $doc:literal])+ $key:ident: $ty:tt [$unit:literal] checked: $checked:literal, sweep: $sweep:literal, text: $text:expr;)+) => {
+    (@name $key:ident $name:literal) => { $name };
+    (@name $key:ident) => { stringify!($key) };
+    ($($(#[doc = $doc:literal])+ $key:ident $(as $name:literal)?: $ty:tt [$unit:literal] checked: $checked:literal, sweep: $sweep:literal, text: $text:expr;)+) => {
         /// What one impact reports (SPEC.md section 2). Energies are fractions of `m_b v1^2 / 2`.
         #[derive(Debug, Clone, Copy, Serialize)]
         pub struct ImpactResult {
-            $($(#[doc = $doc])+ #[serde(skip_serializing_if = "Absent::absent")] pub $key: $ty,)+
+            $($(#[doc = $doc])+ #[serde(skip_serializing_if = "Absent::absent")] $(#[serde(rename = $name)])? pub $key: $ty,)+
         }
 
         /// Equal field by field, a NaN (a quantity that does not apply) equal to a NaN, so a
@@ -165,7 +168,7 @@ macro_rules! impact_result {
 
         /// Every field of [`ImpactResult`], in declaration (and JSON) order.
         pub const FIELDS: &[Field] = &[$(Field {
-            key: stringify!($key),
+            key: impact_result!(@name $key $($name)?),
             unit: $unit,
             doc: concat!($($doc),+),
             get: impact_result!(@get $ty, $key),
@@ -221,10 +224,10 @@ impact_result! {
     /// < 0 (where `e_a` < 0, near the tip) it moves on in its incoming direction, slower than
     /// the recoiling frame it leaves. This and the fields below are those of an
     /// oblique or spinning ball: NaN, and left out of the JSON, at normal incidence without spin.
-    v2_n: f64 ["m/s"] checked: false, sweep: true, text: text_oblique("v2_n", "m/s along the strings' outward normal (racket at rest before)");
+    v2_n as "v2_n_m_per_s": f64 ["m/s"] checked: false, sweep: true, text: text_oblique("v2_n", "m/s along the strings' outward normal (racket at rest before)");
     /// Rebound velocity in the string plane along `t`, the in-plane direction the ball came
     /// in along, m/s (negative: back the way it came).
-    v2_t: f64 ["m/s"] checked: false, sweep: true, text: text_oblique("v2_t", "m/s in the string plane (> 0: on along the incoming in-plane direction)");
+    v2_t as "v2_t_m_per_s": f64 ["m/s"] checked: false, sweep: true, text: text_oblique("v2_t", "m/s in the string plane (> 0: on along the incoming in-plane direction)");
     /// Outgoing spin, rpm, with the sign convention of `--spin-rpm`: positive is topspin
     /// relative to the ball's incoming motion along the strings (the spin of a ball rolling
     /// along the strings in the in-plane direction it came in along), not the court's topspin
@@ -272,8 +275,8 @@ pub const TEXT_ORDER: [&Field; 25] = [
     field("energy_error"),
     field("momentum_error"),
     field("dt_s"),
-    field("v2_n"),
-    field("v2_t"),
+    field("v2_n_m_per_s"),
+    field("v2_t_m_per_s"),
     field("rebound_angle_deg"),
     field("spin_out_rpm"),
     field("e_t"),

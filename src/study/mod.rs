@@ -14,6 +14,30 @@ use crate::error::{Error, Result};
 use crate::params::{Overrides, Params};
 use crate::racket::Fitted;
 
+/// The columns of the commands' tables that are neither a parameter's column
+/// ([`crate::params::keys`]) nor a result field ([`crate::solve::outcome::FIELDS`]): each with
+/// its unit in its name where it has one (or, for the speeds, the `unit` column beside it).
+/// With the time series' [`crate::render::impact::SERIES_COLUMNS`] they are the vocabulary
+/// every CSV a command writes draws from (tests/vocabulary.rs).
+pub const OTHER_COLUMNS: &[&str] = &[
+    // speed
+    "variant",
+    "ball_speed_out",
+    "change_pct",
+    "unit",
+    "launch_deg",
+    "launch_spin_rpm",
+    // map (a difference map's columns end in _a, _b and _b_minus_a)
+    "power_pct",
+    "ks_a_n_per_m",
+    "ks_b_n_per_m",
+    // modes
+    "mode",
+    "frequency_hz",
+    // sweep: the solver that ran
+    "solver",
+];
+
 /// Where a command's parameters come from: the paper defaults (with the user default `hat`
 /// load) < a racket file or preset < a config file < the flags.
 #[derive(Debug, Clone, Default)]
@@ -24,6 +48,12 @@ pub struct Sources {
     pub config: Option<PathBuf>,
     /// The parameter flags.
     pub flags: Overrides,
+    /// The command these parameters are for (named in the notes about unused config keys).
+    pub command: &'static str,
+    /// The parameter keys the command does not take (it sets them itself or does not use
+    /// them): it has no flag for them, and a config file's values for them are dropped
+    /// ([`Sources::config`]) and named as unused ([`Sources::check_used`]).
+    pub not_taken: Vec<&'static str>,
 }
 
 impl Sources {
@@ -35,10 +65,65 @@ impl Sources {
     /// The parameters with the racket `racket` instead of [`Sources::racket`], validated, and
     /// the racket's fit.
     pub fn resolve(&self, racket: Option<&str>) -> Result<(Params, Option<Fitted>)> {
-        let config = config_file(self.config.as_deref())?;
+        let (config, _) = self.config()?;
         let spec = racket.map(crate::racket::load).transpose()?;
         crate::racket::resolve(spec.as_ref(), &self.flags.clone().or(config))
     }
+
+    /// The config file's overrides without the keys the command does not take, and those keys.
+    pub fn config(&self) -> Result<(Overrides, Vec<&'static str>)> {
+        let mut config = config_file(self.config.as_deref())?;
+        let dropped: Vec<&'static str> = config.given().into_iter().filter(|k| self.not_taken.contains(k)).collect();
+        for k in &dropped {
+            config.clear(k);
+        }
+        Ok((config, dropped))
+    }
+
+    /// Refuse a flag that none of the command's impacts `params` uses
+    /// ([`crate::params::used`]); return one note naming the config file's keys that the
+    /// command does not take or its impacts do not use (a config file may be shared between
+    /// commands, so these are not refused), or `None`.
+    pub fn check_used(&self, params: &[Params]) -> Result<Option<String>> {
+        use crate::params::used::first_unused;
+        if let Some((key, why)) = first_unused(&self.flags.given(), params) {
+            let value = params.first().and_then(|p| crate::params::keys::value_text(key, p)).unwrap_or_default();
+            return Err(Error::invalid(crate::params::keys::find(key).map_or("parameter", |s| s.key), value, why));
+        }
+        let (config, dropped) = self.config()?;
+        let path = self.config.as_deref().unwrap_or(Path::new(""));
+        Ok(unused_config_note(path, &config, &self.flags.given(), &dropped, self.command, params))
+    }
+}
+
+/// One note naming the keys of the config file at `path` (values `config`) that are not used:
+/// those the command does not take (`dropped`), and those none of its impacts `params` uses
+/// ([`crate::params::used`]) unless set otherwise (`overridden`: by a flag, or swept). `None`
+/// when every key is used.
+pub fn unused_config_note(
+    path: &Path,
+    config: &Overrides,
+    overridden: &[&str],
+    dropped: &[&str],
+    command: &str,
+    params: &[Params],
+) -> Option<String> {
+    use crate::params::used::{first_unused, unused_reason};
+    let mut notes: Vec<String> = Vec::new();
+    if !dropped.is_empty() {
+        notes.push(format!("{} (not used by {command})", dropped.join(", ")));
+    }
+    let set: Vec<&str> = config.given().into_iter().filter(|k| overridden.contains(k)).collect();
+    if !set.is_empty() {
+        notes.push(format!("{} (set on the command line)", set.join(", ")));
+    }
+    for key in config.given().into_iter().filter(|k| !overridden.contains(k)) {
+        if first_unused(&[key], params).is_some() {
+            let why = params.first().and_then(|p| unused_reason(key, p)).unwrap_or_default();
+            notes.push(format!("{key} ({why})"));
+        }
+    }
+    (!notes.is_empty()).then(|| format!("config file {}: not used here: {}", path.display(), notes.join("; ")))
 }
 
 /// The overrides of a `--config` file, or none.

@@ -35,6 +35,9 @@ impl SpeedUnit {
     pub const MS: SpeedUnit = SpeedUnit { si: 1.0, label: "m/s" };
 }
 
+/// The parameter keys `speed` sets itself (from the swing, the incoming ball and its spin).
+pub const SPEED_SETS: [&str; 4] = ["v1", "angle-deg", "azimuth-deg", "spin-rpm"];
+
 /// A swing, an incoming ball and the variants to compare.
 #[derive(Debug, Clone)]
 pub struct SpeedRequest {
@@ -95,7 +98,30 @@ impl SpeedRequest {
             }
         }
         let (v_racket, v_in) = (self.swing * self.unit.si, self.incoming * self.unit.si);
+        // the impact runs at the relative speed: its range, said in this command's unit
+        let (lo, hi) = crate::params::keys::V1.range();
+        if !(lo..=hi).contains(&(v_racket + v_in)) {
+            let u = self.unit;
+            let field = if self.swing >= self.incoming { "swing" } else { "incoming" };
+            let value = if field == "swing" { self.swing } else { self.incoming };
+            return Err(Error::invalid(
+                field,
+                value,
+                format!(
+                    "swing + incoming (the impact speed) must satisfy {} <= swing + incoming <= {} {}",
+                    crate::params::spec::sig(lo / u.si, 3),
+                    crate::params::spec::sig(hi / u.si, 3),
+                    u.label
+                ),
+            ));
+        }
         check_comparison(&self.compare_tension_lb, !self.compare_racket.is_empty())?;
+        for (field, n) in
+            [("compare-tension-lb", self.compare_tension_lb.len()), ("compare-racket", self.compare_racket.len())]
+        {
+            let most = crate::params::limits::MAX_COMPARED;
+            crate::params::limits::check_count(field, n as f64, most as u64, "the number of compared variants")?;
+        }
         self.check_unused()?;
         let mut rows = Vec::new();
         for (label, racket, tension) in self.variants() {
@@ -156,11 +182,12 @@ impl SpeedRequest {
         variants
     }
 
-    /// Refuse the parameters `speed` sets itself: the ball speed (from `--swing` and
-    /// `--incoming`) and the incidence and spin (from `--swing-path-deg` and
-    /// `--incoming-spin-rpm`), from the flags or the config file.
+    /// Refuse the parameters `speed` sets itself when given as flags: the ball speed (from
+    /// `--swing` and `--incoming`) and the incidence and spin (from `--swing-path-deg` and
+    /// `--incoming-spin-rpm`). (The command line has no such flags; a config file's values are
+    /// dropped with a note, [`SPEED_SETS`].)
     fn check_unused(&self) -> Result<()> {
-        let given = self.sources.flags.clone().or(crate::study::config_file(self.sources.config.as_deref())?);
+        let given = &self.sources.flags;
         let set: [(&'static str, Option<f64>, &str); 4] = [
             ("v1", given.v1, "the ball speed comes from --swing and --incoming"),
             ("angle-deg", given.angle_deg, "the incidence comes from --swing-path-deg"),
@@ -189,14 +216,14 @@ impl SpeedComparison {
             "r_m",
             "ks_n_per_m",
             "e_a",
-            "tau_ms",
-            "theta_deg",
+            "tau_s",
+            "theta_end_deg",
             "ball_speed_out",
             "change_pct",
             "unit",
         ];
         if self.request.is_stroke() {
-            cols.extend(["launch_deg", "spin_rpm"]);
+            cols.extend(["launch_deg", "launch_spin_rpm"]);
         }
         let mut t = Table::new("speed", &cols);
         for SpeedRow { label, params: p, result: r, v_out, launch } in &self.rows {
@@ -206,7 +233,7 @@ impl SpeedComparison {
                 p.impact.r.into(),
                 p.strings.ks.into(),
                 r.e_a.into(),
-                (1e3 * r.tau_s).into(),
+                r.tau_s.into(),
                 r.theta_end_deg.into(),
                 (v_out / unit.si).into(),
                 gain_pct(self.v_ref(), *v_out).into(),

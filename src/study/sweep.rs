@@ -10,7 +10,7 @@ use rayon::prelude::*;
 use std::path::Path;
 
 use crate::error::{Error, Result};
-use crate::params::{keys, Overrides, Params};
+use crate::params::{keys, limits, Overrides, Params};
 use crate::solve::outcome::{Field, Get, FIELDS};
 use crate::solve::{simulate, ImpactResult};
 
@@ -26,8 +26,8 @@ fn number_text(v: f64) -> String {
 
 /// Impacts computed per parallel chunk (bounded memory, deterministic order).
 pub const CHUNK: usize = 4096;
-/// The largest sweep accepted.
-pub const MAX_POINTS: u64 = 100_000_000;
+/// The largest sweep accepted ([`limits::MAX_SWEEP_POINTS`]).
+pub const MAX_POINTS: u64 = limits::MAX_SWEEP_POINTS;
 
 /// One varied parameter and its values (as text, parsed like a flag).
 #[derive(Debug, Clone, PartialEq)]
@@ -38,9 +38,25 @@ pub struct Axis {
     pub values: Vec<String>,
 }
 
+impl Axis {
+    /// The values that bound the axis: the least and the greatest of a numeric axis (a range
+    /// may hold a million values; every one lies between these), every value of any other.
+    pub fn extremes(&self) -> Vec<&String> {
+        let numbers: Option<Vec<f64>> = self.values.iter().map(|v| v.trim().parse::<f64>().ok()).collect();
+        match numbers {
+            Some(xs) if xs.len() > 2 => {
+                let lo = (0..xs.len()).min_by(|&i, &j| xs[i].total_cmp(&xs[j])).unwrap_or(0);
+                let hi = (0..xs.len()).max_by(|&i, &j| xs[i].total_cmp(&xs[j])).unwrap_or(0);
+                vec![&self.values[lo], &self.values[hi]]
+            }
+            _ => self.values.iter().collect(),
+        }
+    }
+}
+
 /// Expand a spec into values.
 pub fn parse_spec(key: &str, spec: &str) -> Result<Axis> {
-    let bad = |why: &str| Error::Config { path: "<sweep>".into(), message: format!("--{key} {spec}: {why}") };
+    let bad = |why: &str| Error::invalid("sweep", format!("--{key} {spec}"), why);
     let values = if spec.contains(':') {
         let parts: Vec<&str> = spec.split(':').collect();
         let log = match parts.len() {
@@ -50,7 +66,9 @@ pub fn parse_spec(key: &str, spec: &str) -> Result<Axis> {
         };
         let a: f64 = parts[0].parse().map_err(|_| bad("start is not a number"))?;
         let b: f64 = parts[1].parse().map_err(|_| bad("stop is not a number"))?;
-        let n: usize = parts[2].parse().map_err(|_| bad("count is not a whole number"))?;
+        let n: u64 = parts[2].parse().map_err(|_| bad("count is not a whole number"))?;
+        // counted before any value is made
+        limits::check_count("sweep", n as f64, limits::MAX_AXIS_VALUES, &format!("the count of --{key}"))?;
         if n == 0 || !a.is_finite() || !b.is_finite() {
             return Err(bad("count must be >= 1 and the ends finite"));
         }
@@ -196,6 +214,9 @@ impl Sweep {
                 return Err(Error::invalid("sweep", key, "each parameter may be given once"));
             }
             axes.push(parse_spec(key, &pair[1])?);
+            // the product so far, before the next axis is made
+            let product: f64 = axes.iter().map(|a| a.values.len() as f64).product();
+            limits::check_count("sweep", product, MAX_POINTS, "the impacts of a sweep (the product of the counts)")?;
         }
         // the defaults of every command: the racket (or the paper's), hit at its face centre
         let spec = racket.map(crate::racket::load).transpose()?;
@@ -207,14 +228,14 @@ impl Sweep {
         Ok(sweep)
     }
 
-    /// One impact's parameters per value of each axis (the other axes at their first value):
-    /// every value each parameter takes, without the whole product (for the plausibility
-    /// warnings).
+    /// One impact's parameters per bounding value of each axis ([`Axis::extremes`]; the other
+    /// axes at their first value): the range of every parameter, without the whole product
+    /// (for the plausibility warnings and the check that each swept parameter is used).
     pub fn representatives(&self) -> Result<Vec<Params>> {
         let (first, _) = self.point(0)?;
         let mut out = vec![first];
         for axis in &self.axes {
-            for v in &axis.values {
+            for v in axis.extremes() {
                 let mut o = self.base.clone();
                 for other in &self.axes {
                     o.set(&other.key, &other.values[0])?;
@@ -281,9 +302,7 @@ impl Sweep {
     /// the sweep fails before any row is written.
     pub fn validate_all(&self) -> Result<()> {
         let total = self.len();
-        if total > MAX_POINTS {
-            return Err(Error::invalid("sweep", total, format!("a sweep may have at most {MAX_POINTS} impacts")));
-        }
+        limits::check_count("sweep", total as f64, MAX_POINTS, "the impacts of a sweep (the product of the counts)")?;
         (0..total).into_par_iter().try_for_each(|i| self.point(i).map(|_| ()))
     }
 
@@ -291,9 +310,7 @@ impl Sweep {
     /// to `sink`; `progress` gets the number of impacts done so far.
     pub fn run(&self, mut sink: impl FnMut(&[Vec<String>]) -> Result<()>, mut progress: impl FnMut(u64)) -> Result<()> {
         let total = self.len();
-        if total > MAX_POINTS {
-            return Err(Error::invalid("sweep", total, format!("a sweep may have at most {MAX_POINTS} impacts")));
-        }
+        limits::check_count("sweep", total as f64, MAX_POINTS, "the impacts of a sweep (the product of the counts)")?;
         let oblique = self.is_oblique();
         let fixed = self.fixed_keys(oblique);
         let mut start = 0u64;

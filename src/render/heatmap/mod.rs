@@ -149,11 +149,10 @@ pub const BELOW_FLOOR: (u8, u8, u8) = (190, 190, 190);
 /// [`crate::render::plot::render_png`]); errors are [`Error::Plot`] with `id`.
 pub fn render_png(id: &str, map: &HeatMap, path: &Path) -> Result<()> {
     let fail = |message: String| Error::Plot { id: id.to_string(), message };
-    let tmp = crate::render::io::temp_sibling(path, ".png").map_err(|e| fail(e.to_string()))?;
-    match draw_file(map, &tmp) {
-        Ok(()) => crate::render::io::commit_temp(&tmp, path).map_err(|e| fail(e.to_string())),
-        Err(message) => Err(fail(message)),
-    }
+    crate::render::io::write_with(path, ".png", |tmp| draw_file(map, tmp).map_err(fail)).map_err(|e| match e {
+        Error::Plot { .. } => e,
+        other => Error::Plot { id: id.to_string(), message: other.to_string() },
+    })
 }
 
 /// Draw `map` into the file `file` (not atomically; on failure the file is removed).

@@ -223,45 +223,50 @@ impl Chart {
 
 /// Render `chart` as a [`WIDTH`] x [`HEIGHT`] PNG at `path`.
 ///
-/// The directory of `path` must exist. The image is drawn into a temporary file
-/// `.<file>.tmp.<pid>.<n>.png` in the same directory and renamed over `path` when complete, so
-/// `path` is either the old file or the complete new one. Any failure (invalid ranges,
+/// The directory of `path` must exist. The image is drawn into a temporary file and published
+/// by [`crate::render::io::write_with`] when complete, so `path` is either the old file or the
+/// complete new one (a symlink's target is written, a device written through). Any failure (invalid ranges,
 /// mismatched curve lengths, no finite point in any curve, missing directory, backend or
 /// encoder errors) removes the temporary file and returns [`Error::Plot`] with `id`.
 pub fn render_png(id: &str, chart: &Chart, path: &Path) -> Result<()> {
+    let mut staged = crate::render::io::Staged::new();
+    stage_png(&mut staged, id, chart, path)?;
+    staged.commit()
+}
+
+/// [`render_png`] into `staged`, published with the other files of the same command.
+pub fn stage_png(staged: &mut crate::render::io::Staged, id: &str, chart: &Chart, path: &Path) -> Result<()> {
     let fail = |message: String| Error::Plot { id: id.to_string(), message };
     if !fonts_registered() {
         return Err(fail("could not load the bundled DejaVu Sans font".to_string()));
     }
     let plan = Plan::new(chart).map_err(&fail)?;
-    let tmp = crate::render::io::temp_sibling(path, ".png").map_err(|e| fail(e.to_string()))?;
-
-    // `catch_unwind` is a last line of defence: plotters may panic on inputs we did not
-    // foresee, and a figure must never bring down the whole run.
-    let drawn = catch_unwind(AssertUnwindSafe(|| -> std::result::Result<(), String> {
-        let root = BitMapBackend::new(&tmp, (WIDTH, HEIGHT)).into_drawing_area();
-        root.fill(&WHITE).map_err(msg)?;
-        let (x0, x1) = plan.x;
-        if plan.x_log {
-            draw_chart(&root, chart, &plan, (x0..x1).log_scale())?;
-        } else {
-            draw_chart(&root, chart, &plan, x0..x1)?;
-        }
-        root.present().map_err(|e| format!("cannot write {}: {e}", tmp.display()))
-        // `root` (and the backend) is dropped here, before the rename.
-    }));
-    let drawn = match drawn {
-        Ok(r) => r,
-        Err(panic) => Err(format!("plotting backend panicked: {}", panic_text(&*panic))),
-    };
-    match drawn {
-        Ok(()) => crate::render::io::commit_temp(&tmp, path).map_err(|e| fail(e.to_string())),
-        Err(message) => {
-            // Dropping an unsaved backend writes the file; remove whatever is there.
-            let _ = std::fs::remove_file(&tmp);
-            Err(fail(message))
-        }
-    }
+    staged
+        .with(path, ".png", |tmp| {
+            // `catch_unwind` is a last line of defence: plotters may panic on inputs we did not
+            // foresee, and a figure must never bring down the whole run.
+            let drawn = catch_unwind(AssertUnwindSafe(|| -> std::result::Result<(), String> {
+                let root = BitMapBackend::new(tmp, (WIDTH, HEIGHT)).into_drawing_area();
+                root.fill(&WHITE).map_err(msg)?;
+                let (x0, x1) = plan.x;
+                if plan.x_log {
+                    draw_chart(&root, chart, &plan, (x0..x1).log_scale())?;
+                } else {
+                    draw_chart(&root, chart, &plan, x0..x1)?;
+                }
+                root.present().map_err(|e| format!("cannot write {}: {e}", tmp.display()))
+                // `root` (and the backend) is dropped here, before the rename.
+            }));
+            match drawn {
+                Ok(r) => r,
+                Err(panic) => Err(format!("plotting backend panicked: {}", panic_text(&*panic))),
+            }
+            .map_err(&fail)
+        })
+        .map_err(|e| match e {
+            Error::Plot { .. } => e,
+            other => fail(other.to_string()),
+        })
 }
 
 /// Register the bundled DejaVu Sans as "sans-serif" (once per process); `false` on failure.

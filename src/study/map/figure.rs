@@ -31,7 +31,7 @@ impl FaceMap {
         for (x, r, res) in self.points() {
             let mut row: Vec<Value> = vec![x.into(), r.into(), p.strings.ks.into(), p.impact.v1.into()];
             row.extend(fixed.iter().map(|(_, v)| Value::from(*v)));
-            row.extend(Quantity::in_table(oblique).map(|q| Value::Num(q.of(res))));
+            row.extend(Quantity::in_table(oblique).map(|q| Value::Num(q.column_value(res))));
             row.push(Value::Int(i64::from(res.recontact)));
             // the row has one value per column, so push cannot fail
             let _ = t.push(row);
@@ -159,7 +159,7 @@ impl DiffMap {
         for (k, (ra, rb)) in self.a.results.iter().zip(&self.b.results).enumerate() {
             if let (Some(ra), Some(rb)) = (ra, rb) {
                 let (x, r) = self.a.grid.point(k);
-                let (va, vb) = (q.of(ra), q.of(rb));
+                let (va, vb) = (q.column_value(ra), q.column_value(rb));
                 let mut row: Vec<Value> =
                     vec![x.into(), r.into(), pa.strings.ks.into(), pb.strings.ks.into(), pa.impact.v1.into()];
                 row.extend(fixed.iter().map(|(_, v)| Value::from(*v)));

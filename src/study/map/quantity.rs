@@ -62,12 +62,13 @@ impl Quantity {
         }
     }
 
-    /// The table column (with its unit).
+    /// The table column (with its unit): the result field's own name
+    /// ([`crate::solve::outcome::FIELDS`]), in its SI unit; `power_pct` for the power.
     pub fn column(self) -> &'static str {
         match self {
             Quantity::EA => "e_a",
-            Quantity::Tau => "tau_ms",
-            Quantity::Theta => "theta_deg",
+            Quantity::Tau => "tau_s",
+            Quantity::Theta => "theta_end_deg",
             Quantity::FVib => "f_vib",
             Quantity::Power => "power_pct",
             Quantity::Spin => "spin_out_rpm",
@@ -139,10 +140,19 @@ impl Quantity {
         }
     }
 
-    /// Its value for one impact.
+    /// Its value for one impact, as shown (in [`Quantity::unit`]: tau in ms).
     pub fn of(self, r: &ImpactResult) -> f64 {
         let (field, scale) = self.source();
         scale * field.number(r)
+    }
+
+    /// Its value for one impact as in the table's [`Quantity::column`] (SI: tau in s; the power
+    /// in %).
+    pub fn column_value(self, r: &ImpactResult) -> f64 {
+        match self {
+            Quantity::Power => self.of(r),
+            _ => self.source().0.number(r),
+        }
     }
 }
 

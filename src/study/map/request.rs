@@ -9,7 +9,7 @@ use crate::error::{Error, Result};
 use crate::params::{ks_from_tension_lb, Params};
 use crate::render::heatmap::HeatMap;
 use crate::render::table::Table;
-use crate::study::{check_comparison, config_file, racket_label, Sources};
+use crate::study::{check_comparison, racket_label, Sources};
 
 /// A map of one configuration, or the difference of two.
 #[derive(Debug, Clone)]
@@ -167,7 +167,7 @@ impl MapRequest {
         if let Some(r) = flags.r {
             return Err(Error::invalid("r", r, "a map chooses the impact points itself: give --nx/--nr, not --r"));
         }
-        let mut config = config_file(self.sources.config.as_deref())?;
+        let (mut config, _) = self.sources.config()?;
         // an on-axis point at the tip is valid on every face; the grid replaces it
         config.x = Some(0.0);
         config.r = Some(0.0);

@@ -1,0 +1,69 @@
+//! Which parameters an impact actually uses: a value given for a parameter the selected model
+//! does not read (friction at normal incidence, a hand's stiffness with a free grip, a time step
+//! for the modal solver) is refused where it is a flag and named as unused where it comes from a
+//! shared config file, never silently ignored.
+
+use super::{Frame, Grip, Params, SolverKind, StringLaw};
+
+/// Why the impact `params` does not use parameter `key`, or `None` if it does.
+pub fn unused_reason(key: &str, params: &Params) -> Option<&'static str> {
+    let v = &params.variants;
+    match key {
+        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" if params.oblique.is_normal() => Some(
+            "used only for an oblique or spinning ball (at normal incidence without spin no tangential force acts)",
+        ),
+        "hand-stiffness" | "hand-damping" | "grip-length" if v.grip != Grip::Hand => Some("used only with grip = hand"),
+        "string-stiffening" | "stiffening-deflection" if v.strings != StringLaw::Stiffening => {
+            Some("used only with strings = stiffening")
+        }
+        "half-width" if params.impact.r == 0.0 && params.oblique.is_normal() => {
+            Some("used only as the bound of |r| off the long axis (the impact is at r = 0)")
+        }
+        "ix" if params.impact.r == 0.0 && params.oblique.is_normal() => {
+            Some("used only off the long axis (r != 0) or for an oblique ball: nothing twists the frame at r = 0")
+        }
+        "ei" | "solver" if v.frame == Frame::Rigid => Some("not used by the rigid frame (a closed form)"),
+        "dt" if v.frame == Frame::Rigid || params.numerics.solver == SolverKind::Modal => {
+            Some("used only by the fd solver (the modal solver and the rigid frame take no time step)")
+        }
+        _ => None,
+    }
+}
+
+/// The first of `keys` that none of the impacts `params` uses, with the reason (for the
+/// impacts of one command: a key is used if any of them uses it).
+pub fn first_unused<'a>(keys: &[&'a str], params: &[Params]) -> Option<(&'a str, &'static str)> {
+    keys.iter().find_map(|&k| {
+        let reasons: Vec<Option<&'static str>> = params.iter().map(|p| unused_reason(k, p)).collect();
+        match reasons.first() {
+            Some(Some(why)) if reasons.iter().all(Option::is_some) => Some((k, *why)),
+            _ => None,
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_papers_impact_uses_its_own_parameters_and_not_the_variants() {
+        let mut p = Params::default();
+        p.impact.r = 0.0; // on the long axis, as the commands' default point
+        for key in ["x", "r", "ks", "ei", "mass", "v1", "segments", "load", "dt", "solver", "frame", "angle-deg"] {
+            assert_eq!(unused_reason(key, &p), None, "{key}");
+        }
+        for key in ["mu", "kt", "hand-damping", "string-stiffening", "ix"] {
+            assert!(unused_reason(key, &p).is_some(), "{key}");
+        }
+        let mut off_axis = p;
+        off_axis.impact.r = 0.05;
+        assert_eq!(unused_reason("ix", &off_axis), None);
+        assert_eq!(unused_reason("half-width", &off_axis), None);
+        let mut oblique = p;
+        oblique.oblique.angle_deg = 30.0;
+        assert_eq!(unused_reason("mu", &oblique), None);
+        assert_eq!(first_unused(&["x", "mu"], &[p, oblique]), None);
+        assert_eq!(first_unused(&["x", "mu"], &[p]).map(|(k, _)| k), Some("mu"));
+    }
+}

@@ -1,0 +1,463 @@
+//! Every option of every command is used or refused, and each command's help lists exactly
+//! the options it takes (trap classes 3 and 4 of issue 24).
+//!
+//! The options are not listed by hand: they are read from the command line's own clap
+//! definition ([`cli::Cli`], compiled into this test from `src/cli`). For each command and
+//! each option it accepts, a probe runs the command with and without the option (in the
+//! context the option needs, e.g. an incidence angle for the friction coefficient) and the
+//! outputs (standard output, warnings and every file written) must differ; where a context is
+//! needed, the option given without it must change the output or be refused with exit 2. The
+//! parameter options get their probe from the parameter declarations; any other option needs
+//! an entry in [`PROBES`], so a new option fails here until it is shown to do something.
+//! The same holds for a config file's keys: each changes the output or is named in one
+//! warning line.
+
+#[allow(dead_code, unused_imports, unused_macros)]
+#[path = "../src/cli/mod.rs"]
+mod cli;
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use clap::CommandFactory;
+use racket_impact::params::keys;
+use racket_impact::params::spec::Values;
+use racket_impact::params::{Overrides, Params};
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_racket-impact"))
+}
+
+/// A fresh directory each run works in (its files are part of the output).
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new(name: &str) -> Self {
+        let dir = std::env::temp_dir().join(format!("racket-impact-options-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        Scratch(dir)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// What a run produced: its exit code and everything a user sees of it.
+#[derive(Debug, PartialEq)]
+struct Seen {
+    code: Option<i32>,
+    /// Standard output with the elapsed times (`(0.02 s)`) taken out.
+    stdout: String,
+    /// The warning lines.
+    warnings: Vec<String>,
+    /// Every file written below the working directory, with its bytes.
+    files: BTreeMap<String, Vec<u8>>,
+    /// The error line, if any.
+    error: String,
+}
+
+/// A JSON output without its echo of the parameters (every `params` member), so that what
+/// is compared is what was computed; any other text as it is.
+fn results_only(text: &str) -> String {
+    fn strip(v: &mut serde_json::Value) {
+        match v {
+            serde_json::Value::Object(m) => {
+                m.remove("params");
+                m.values_mut().for_each(strip);
+            }
+            serde_json::Value::Array(a) => a.iter_mut().for_each(strip),
+            _ => {}
+        }
+    }
+    match serde_json::from_str::<serde_json::Value>(text) {
+        Ok(mut v) => {
+            strip(&mut v);
+            v.to_string()
+        }
+        Err(_) => text.to_string(),
+    }
+}
+
+/// Remove the elapsed times `(<number> s)` a command prints.
+fn without_times(text: &str) -> String {
+    let mut out = String::new();
+    let mut rest = text;
+    while let Some(i) = rest.find('(') {
+        out.push_str(&rest[..i]);
+        let tail = &rest[i + 1..];
+        let end = tail.find(" s)").filter(|&e| tail[..e].chars().all(|c| c.is_ascii_digit() || c == '.'));
+        match end {
+            Some(e) if e > 0 => rest = &tail[e + 3..],
+            _ => {
+                out.push('(');
+                rest = tail;
+            }
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
+fn files_below(dir: &Path, root: &Path, out: &mut BTreeMap<String, Vec<u8>>) {
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.is_dir() {
+            files_below(&p, root, out);
+        } else if p.file_name().is_some_and(|n| n != "cfg.toml") {
+            let mut bytes = std::fs::read(&p).unwrap();
+            if p.extension().is_some_and(|e| e == "json") {
+                bytes = results_only(&String::from_utf8_lossy(&bytes)).into_bytes();
+            }
+            out.insert(p.strip_prefix(root).unwrap().display().to_string(), bytes);
+        }
+    }
+}
+
+/// Run `racket-impact <command> <args>` in a fresh directory holding `cfg.toml` = `config`.
+fn run(command: &str, args: &[String], config: &str) -> Seen {
+    let s = Scratch::new(&format!("{command}-{}", args.join("_").replace(['/', '.', ' '], "-")));
+    std::fs::write(s.0.join("cfg.toml"), config).unwrap();
+    let o = bin().current_dir(&s.0).arg(command).args(args).output().unwrap();
+    let stderr = String::from_utf8_lossy(&o.stderr).into_owned();
+    let mut files = BTreeMap::new();
+    files_below(&s.0, &s.0, &mut files);
+    Seen {
+        code: o.status.code(),
+        stdout: results_only(&without_times(&String::from_utf8_lossy(&o.stdout))),
+        warnings: stderr.lines().filter(|l| l.starts_with("warning:")).map(String::from).collect(),
+        files,
+        error: stderr.lines().filter(|l| l.starts_with("error")).collect::<Vec<_>>().join(" "),
+    }
+}
+
+/// An option: its clap id and its long name (none for a positional argument).
+type Opt = (String, Option<String>);
+
+/// Each command's options as clap defines them: (command, [(option id, long name)]), the
+/// global `--quiet` included, help and version left out.
+fn option_table() -> Vec<(String, Vec<Opt>)> {
+    let mut cmd = cli::Cli::command();
+    cmd.build();
+    cmd.get_subcommands()
+        .filter(|c| c.get_name() != "help")
+        .map(|c| {
+            let opts = c
+                .get_arguments()
+                .filter(|a| !matches!(a.get_action(), clap::ArgAction::Help | clap::ArgAction::Version))
+                .map(|a| (a.get_id().to_string(), a.get_long().map(String::from)))
+                .collect();
+            (c.get_name().to_string(), opts)
+        })
+        .collect()
+}
+
+/// The arguments every parameter probe of a command runs with (a small map, a swing), in
+/// JSON, whose numbers are printed in full: a parameter must change what is computed, not
+/// only its echo in the output (which [`results_only`] leaves out).
+fn base(command: &str) -> Vec<&'static str> {
+    match command {
+        "speed" => vec!["--swing", "100", "--format", "json"],
+        "map" => vec!["--nx", "7", "--nr", "5", "--format", "json"],
+        "sweep" => vec!["--x", "0.1,0.2"],
+        _ => vec!["--format", "json"],
+    }
+}
+
+/// The probes of the options that are not impact parameters: (command, option id, the
+/// arguments with the option, the same without it). The config file of every run is
+/// `cfg.toml` in the working directory ([`config_for`]).
+const PROBES: &[(&str, &str, &[&str], &[&str])] = &[
+    ("*", "quiet", &["--quiet", "--ks", "1e3"], &["--ks", "1e3"]),
+    ("*", "racket", &["--racket", "tweener"], &[]),
+    ("*", "config", &["--config", "cfg.toml"], &[]),
+    ("*", "format", &["--format", "json"], &[]),
+    ("simulate", "series", &["--series", "s.csv"], &[]),
+    ("simulate", "series_dt", &["--series", "s.csv", "--series-dt", "4e-5"], &["--series", "s.csv"]),
+    ("simulate", "series_end", &["--series", "s.csv", "--series-end", "0.05"], &["--series", "s.csv"]),
+    ("modes", "count", &["--count", "6"], &[]),
+    ("modes", "quiet", &["--quiet", "--mass", "5"], &["--mass", "5"]),
+    ("speed", "quiet", &["--swing", "100", "--quiet", "--ks", "1e3"], &["--swing", "100", "--ks", "1e3"]),
+    ("speed", "racket", &["--swing", "100", "--racket", "tweener"], &["--swing", "100"]),
+    ("speed", "config", &["--swing", "100", "--config", "cfg.toml"], &["--swing", "100"]),
+    ("speed", "format", &["--swing", "100", "--format", "json"], &["--swing", "100"]),
+    ("speed", "swing", &["--swing", "120"], &["--swing", "100"]),
+    ("speed", "incoming", &["--swing", "100", "--incoming", "60"], &["--swing", "100"]),
+    ("speed", "unit", &["--swing", "100", "--unit", "mph"], &["--swing", "100"]),
+    ("speed", "compare_tension_lb", &["--swing", "100", "--compare-tension-lb", "50"], &["--swing", "100"]),
+    ("speed", "compare_racket", &["--swing", "100", "--compare-racket", "light"], &["--swing", "100"]),
+    ("speed", "swing_path_deg", &["--swing", "100", "--swing-path-deg", "20"], &["--swing", "100"]),
+    ("speed", "incoming_spin_rpm", &["--swing", "100", "--incoming-spin-rpm", "1000"], &["--swing", "100"]),
+    ("map", "quiet", &["--nx", "7", "--nr", "5", "--quiet", "--ks", "1e3"], &["--nx", "7", "--nr", "5", "--ks", "1e3"]),
+    ("map", "racket", &["--nx", "7", "--nr", "5", "--racket", "tweener"], &["--nx", "7", "--nr", "5"]),
+    ("map", "config", &["--nx", "7", "--nr", "5", "--config", "cfg.toml"], &["--nx", "7", "--nr", "5"]),
+    ("map", "format", &["--nx", "7", "--nr", "5", "--format", "json"], &["--nx", "7", "--nr", "5"]),
+    ("map", "quantity", &["--nx", "7", "--nr", "5", "--quantity", "tau"], &["--nx", "7", "--nr", "5"]),
+    ("map", "nx", &["--nx", "8", "--nr", "5"], &["--nx", "7", "--nr", "5"]),
+    ("map", "nr", &["--nx", "7", "--nr", "6"], &["--nx", "7", "--nr", "5"]),
+    ("map", "out", &["--nx", "7", "--nr", "5", "--out", "m.csv"], &["--nx", "7", "--nr", "5"]),
+    ("map", "compare_racket", &["--nx", "7", "--nr", "5", "--compare-racket", "light"], &["--nx", "7", "--nr", "5"]),
+    (
+        "map",
+        "compare_tension_lb",
+        &["--nx", "7", "--nr", "5", "--compare-tension-lb", "50"],
+        &["--nx", "7", "--nr", "5"],
+    ),
+    ("sweep", "racket", &["--racket", "tweener", "--x", "0.1,0.2"], &["--x", "0.1,0.2"]),
+    ("sweep", "config", &["--config", "cfg.toml", "--x", "0.1,0.2"], &["--x", "0.1,0.2"]),
+    ("sweep", "out", &["--out", "s.csv", "--x", "0.1,0.2"], &["--x", "0.1,0.2"]),
+    ("sweep", "quiet", &["--quiet", "--ks", "1e3,2e3"], &["--ks", "1e3,2e3"]),
+    ("sweep", "specs", &["--x", "0.1,0.3"], &["--x", "0.1,0.2"]),
+    ("figures", "only", &["--only", "modes"], &[]),
+    ("figures", "out", &["--only", "modes", "--out", "elsewhere"], &["--only", "modes"]),
+    ("figures", "racket", &["--only", "modes", "--racket", "tweener"], &["--only", "modes"]),
+    ("figures", "list", &["--list"], &[]),
+    ("figures", "quiet", &["--quiet", "--only", "modes"], &["--only", "modes"]),
+    ("report", "out", &["--out", "r.md"], &[]),
+    ("report", "no_write", &["--no-write"], &[]),
+    ("report", "quiet", &["--quiet", "--no-write"], &["--no-write"]),
+    ("racket", "racket", &["tweener"], &["players"]),
+    ("racket", "list", &["--list"], &["players"]),
+    ("racket", "segments", &["players", "--segments", "60"], &["players"]),
+    ("racket", "format", &["players", "--format", "json"], &["players"]),
+    ("racket", "quiet", &["--quiet", "--list"], &["--list"]),
+];
+
+/// Options that print nothing different for any input of the command (`--quiet` where the
+/// command never warns): pinned here, so a command that starts to warn must show its
+/// `--quiet` working.
+const SILENT: &[(&str, &str)] = &[("report", "quiet"), ("racket", "quiet"), ("figures", "quiet")];
+
+/// The config file of a command's runs: a value its probe can see.
+fn config_for(command: &str) -> &'static str {
+    match command {
+        "modes" => "ei = 200\n",
+        _ => "ks = 30000\n",
+    }
+}
+
+/// The parameters the commands start from (the paper's racket hit at its face centre).
+fn defaults() -> Params {
+    racket_impact::racket::resolve(None, &Overrides::default()).unwrap().0
+}
+
+/// A value of parameter `key` other than its default, inside its range.
+fn sample_value(key: &str) -> String {
+    let spec = keys::find(key).unwrap();
+    let default = keys::value_text(key, &defaults()).unwrap_or_default();
+    match (key, spec.values) {
+        (_, Values::Choice(choices)) => choices.iter().find(|c| c.name != default).unwrap().name.to_string(),
+        (_, Values::Count) => "50".to_string(),
+        ("x", _) => "0.2".to_string(),
+        ("r", _) => "0.02".to_string(),
+        ("angle-deg", _) => "30".to_string(),
+        ("azimuth-deg", _) => "90".to_string(),
+        ("spin-rpm", _) => "1000".to_string(),
+        ("dt", _) => "1e-6".to_string(),
+        _ => {
+            let d: f64 = default.parse().unwrap_or_else(|_| panic!("{key}: default {default:?} is not a number"));
+            format!("{}", d * 1.1)
+        }
+    }
+}
+
+/// The flags a parameter needs to be used by `command` (a variant selected, an oblique ball).
+fn context(command: &str, key: &str) -> Vec<&'static str> {
+    match key {
+        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" if command == "speed" => {
+            vec!["--swing-path-deg", "20"]
+        }
+        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" => vec!["--angle-deg", "30"],
+        "hand-stiffness" | "hand-damping" | "grip-length" => vec!["--grip", "hand"],
+        "string-stiffening" | "stiffening-deflection" => vec!["--strings", "stiffening"],
+        // the twist and the face's width matter off the long axis (a map's grid is)
+        "ix" if command != "map" => vec!["--r", "0.03"],
+        "half-width" if command != "map" => vec!["--r", "0.13"],
+        _ => vec![],
+    }
+}
+
+fn strings(v: &[&str]) -> Vec<String> {
+    v.iter().map(|s| s.to_string()).collect()
+}
+
+fn differs(a: &Seen, b: &Seen) -> bool {
+    a.stdout != b.stdout || a.warnings != b.warnings || a.files != b.files
+}
+
+#[test]
+fn every_option_of_every_command_changes_the_output_or_is_refused() {
+    let mut failures = Vec::new();
+    let mut probed = 0;
+    for (command, options) in option_table() {
+        let config = config_for(&command);
+        for (id, long) in options {
+            let table = PROBES.iter().find(|(c, o, _, _)| *c == command && *o == id).or_else(|| {
+                PROBES
+                    .iter()
+                    .find(|(c, o, _, _)| *c == "*" && *o == id && !["speed", "map", "sweep"].contains(&&*command))
+            });
+            let (with, without, bare) = match (table, keys::find(&id)) {
+                (Some((_, _, with, without)), _) => (strings(with), strings(without), None),
+                (None, Some(spec)) => {
+                    let flag = [format!("--{}", spec.key), sample_value(spec.key)];
+                    let b = strings(&base(&command));
+                    let ctx = strings(&context(&command, spec.key));
+                    let without: Vec<String> = ctx.iter().chain(&b).cloned().collect();
+                    let with: Vec<String> = flag.iter().chain(&without).cloned().collect();
+                    let bare = (!ctx.is_empty()).then(|| (flag.iter().chain(&b).cloned().collect::<Vec<_>>(), b));
+                    (with, without, bare)
+                }
+                (None, None) => {
+                    failures.push(format!("{command} --{}: no probe; add one to PROBES", long.unwrap_or(id)));
+                    continue;
+                }
+            };
+            probed += 1;
+            let (a, b) = (run(&command, &with, config), run(&command, &without, config));
+            let silent = SILENT.contains(&(command.as_str(), id.as_str()));
+            // (a parameter's context may be refused without it: --r 0.13 beyond the face)
+            let refused_without = bare.is_some() && b.code == Some(2);
+            if a.code != Some(0) || !(b.code == Some(0) || refused_without) {
+                failures.push(format!("{command} {with:?} / {without:?}: must both run: {} {}", a.error, b.error));
+            } else if (differs(&a, &b) || refused_without) == silent {
+                failures.push(format!(
+                    "{command} {with:?} vs {without:?}: the output {}",
+                    if silent { "changed" } else { "did not change" }
+                ));
+            }
+            // without its context, the option changes the output or is refused
+            if let Some((bare_with, bare_without)) = bare {
+                let (a, b) = (run(&command, &bare_with, config), run(&command, &bare_without, config));
+                let refused = a.code == Some(2) && a.error.contains(&format!("invalid {id}"));
+                if !(refused || (a.code == Some(0) && differs(&a, &b))) {
+                    failures.push(format!("{command} {bare_with:?}: silently ignored without its context"));
+                }
+            }
+        }
+    }
+    // every probe is for an option that exists (a stale entry would hide a removed option)
+    let table = option_table();
+    for (c, o, _, _) in PROBES {
+        let exists = table.iter().any(|(name, opts)| (*c == "*" || name == c) && opts.iter().any(|(id, _)| id == o));
+        if !exists {
+            failures.push(format!("PROBES names {c} {o}, which is no option"));
+        }
+    }
+    assert!(probed > 100, "only {probed} options probed");
+    assert!(failures.is_empty(), "{} options not shown to work:\n{}", failures.len(), failures.join("\n"));
+}
+
+#[test]
+fn config_keys_change_the_output_or_are_named_in_one_warning() {
+    let mut failures = Vec::new();
+    for (command, options) in option_table() {
+        if !options.iter().any(|(id, _)| id == "config") {
+            continue;
+        }
+        let b = strings(&base(&command));
+        let with_config = |extra: &[String]| -> Vec<String> {
+            ["--config".to_string(), "cfg.toml".to_string()].iter().chain(extra).chain(&b).cloned().collect()
+        };
+        // (a config file needs a key: the default number of segments)
+        let plain = run(&command, &with_config(&[]), "segments = 39\n");
+        assert_eq!(plain.code, Some(0), "{command}: {}", plain.error);
+        for spec in &keys::ALL {
+            // a choice is used if any of its values changes the output (the command's own
+            // default may not be the paper's: sweep runs modal)
+            let values: Vec<String> = match spec.values {
+                Values::Choice(choices) => choices.iter().map(|c| format!("\"{}\"", c.name)).collect(),
+                _ => vec![sample_value(spec.key)],
+            };
+            let other = if spec.key == "segments" { "" } else { "segments = 39\n" };
+            let (mut used, mut said, mut seen_last) = (false, false, None);
+            for toml_value in values {
+                let seen = run(&command, &with_config(&[]), &format!("{other}{} = {toml_value}\n", spec.key));
+                let named = seen.warnings.iter().filter(|w| w.contains("config file") && w.contains(spec.key)).count();
+                used |= seen.code == Some(0) && differs(&seen, &plain) && named == 0;
+                said |= seen.code == Some(0) && named == 1;
+                seen_last = Some(seen);
+            }
+            let seen = seen_last.unwrap();
+            if !(used || said) {
+                failures.push(format!(
+                    "{command}: config key {} neither changes the output nor is named in one warning ({:?}, {})",
+                    spec.key, seen.warnings, seen.error
+                ));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+#[test]
+fn help_lists_exactly_the_options_each_command_takes() {
+    for (command, options) in option_table() {
+        let o = bin().args([command.as_str(), "--help"]).output().unwrap();
+        assert!(o.status.success());
+        let help = String::from_utf8_lossy(&o.stdout).into_owned();
+        // the option lines of clap's help: indented, starting with -x, or --name
+        let listed: std::collections::BTreeSet<String> = help
+            .lines()
+            .map(str::trim_start)
+            .filter(|l| l.starts_with('-'))
+            .filter_map(|l| l.split([' ', ',']).find(|w| w.starts_with("--")).map(|w| w[2..].to_string()))
+            .filter(|n| n != "help")
+            .collect();
+        let taken: std::collections::BTreeSet<String> = options.iter().filter_map(|(_, long)| long.clone()).collect();
+        assert_eq!(listed, taken, "{command} --help");
+        assert!(!taken.is_empty() || command == "report", "{command}: no options found");
+    }
+}
+
+/// The model selections a parameter may depend on: another solver, frame, grip or string law,
+/// an oblique ball, an impact off the long axis.
+const SELECTIONS: &[&[&str]] = &[
+    &["--solver", "modal"],
+    &["--frame", "rigid"],
+    &["--grip", "hand"],
+    &["--strings", "stiffening"],
+    &["--angle-deg", "30"],
+    &["--r", "0.03"],
+];
+
+#[test]
+fn every_parameter_under_every_model_selection_changes_the_output_or_is_refused() {
+    // simulate takes every parameter; which ones a model reads is decided in one place
+    // (params/used.rs) for every command
+    let mut failures = Vec::new();
+    let mut checked = 0;
+    for spec in &keys::ALL {
+        for selection in SELECTIONS {
+            if selection[0] == format!("--{}", spec.key) {
+                continue;
+            }
+            let ctx: Vec<String> = strings(&context("simulate", spec.key))
+                .into_iter()
+                .chain(strings(selection))
+                .chain(strings(&base("simulate")))
+                .collect();
+            let without = run("simulate", &ctx, "");
+            if without.code != Some(0) {
+                continue; // the selection itself is refused with this context (rigid + hand, ...)
+            }
+            checked += 1;
+            let with: Vec<String> =
+                [format!("--{}", spec.key), sample_value(spec.key)].into_iter().chain(ctx).collect();
+            let seen = run("simulate", &with, "");
+            let refused = seen.code == Some(2) && seen.error.contains(&format!("invalid {}", spec.key));
+            let used = seen.code == Some(0) && differs(&seen, &without);
+            // (a value the selection cannot take is refused naming another field: also not ignored)
+            let refused_other = seen.code == Some(2) && seen.error.contains("invalid");
+            if !(refused || used || refused_other) {
+                failures.push(format!("simulate {with:?}: silently ignored ({})", seen.error));
+            }
+        }
+    }
+    assert!(checked > 100, "only {checked} combinations ran");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}

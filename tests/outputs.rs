@@ -1,0 +1,228 @@
+//! Output paths are written, never replaced (trap class 1 of issue 24): a device or FIFO is
+//! written through and stays what it was, a symlink's target is written and the link kept, a
+//! directory that cannot be written is refused before any work with exit 2 and nothing left,
+//! and a command whose standard output fails (`> /dev/full`) publishes none of its files.
+//!
+//! Run as root, the device nodes are the test's own (`mknod` in a scratch directory), so a
+//! regression cannot replace the machine's `/dev/null`; the read-only directory is then tried
+//! by the binary run as `nobody`, for whom the permission bits hold.
+
+#![cfg(unix)]
+
+use std::os::unix::fs::FileTypeExt;
+use std::os::unix::process::CommandExt;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_racket-impact"))
+}
+
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new(name: &str) -> Self {
+        let dir = std::env::temp_dir().join(format!("racket-impact-outputs-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        Scratch(dir)
+    }
+    fn path(&self, name: &str) -> PathBuf {
+        self.0.join(name)
+    }
+    /// The names in the scratch directory, sorted (hidden temporary files included).
+    fn names(&self) -> Vec<String> {
+        names_in(&self.0)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+fn names_in(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> =
+        std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    v.sort();
+    v
+}
+
+fn is_root() -> bool {
+    std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|s| s.lines().find(|l| l.starts_with("Uid:")).map(|l| l.split_whitespace().nth(2) == Some("0")))
+        .unwrap_or(false)
+}
+
+/// A character device that discards (`null`) or refuses (`full`) what is written: our own node
+/// when we may make one, else the system's.
+fn device(s: &Scratch, which: &str) -> PathBuf {
+    let (minor, system) = match which {
+        "null" => ("3", "/dev/null"),
+        _ => ("7", "/dev/full"),
+    };
+    let own = s.path(&format!("{which}-device"));
+    let made = is_root()
+        && Command::new("mknod").arg(&own).args(["c", "1", minor]).status().map(|st| st.success()).unwrap_or(false);
+    if made {
+        own
+    } else {
+        PathBuf::from(system)
+    }
+}
+
+fn is_char_device(p: &Path) -> bool {
+    std::fs::symlink_metadata(p).map(|m| m.file_type().is_char_device()).unwrap_or(false)
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// Every writer of the crate with `path` as its output (one file each).
+fn writers(path: &Path) -> Vec<Vec<String>> {
+    let p = path.to_str().unwrap().to_string();
+    vec![
+        vec!["simulate".into(), "--solver".into(), "fd".into(), "--series".into(), p.clone()],
+        vec!["sweep".into(), "--out".into(), p.clone(), "--x".into(), "0.1,0.2".into()],
+        vec!["report".into(), "--out".into(), p],
+    ]
+}
+
+fn temp_leftovers(stem: &str) -> Vec<String> {
+    names_in(&std::env::temp_dir()).into_iter().filter(|n| n.starts_with(&format!(".{stem}.tmp."))).collect()
+}
+
+#[test]
+fn a_device_is_written_through_and_stays_a_device() {
+    let s = Scratch::new("device");
+    let null = device(&s, "null");
+    let full = device(&s, "full");
+    for args in writers(&null) {
+        let o = bin().args(&args).stdout(Stdio::null()).output().unwrap();
+        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+        assert!(is_char_device(&null), "{args:?} replaced the device {}", null.display());
+    }
+    for args in writers(&full) {
+        let o = bin().args(&args).stdout(Stdio::null()).output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "{args:?}: a full device must fail: {}", stderr(&o));
+        assert_eq!(stderr(&o).lines().count(), 1, "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains("No space left"), "{args:?}: {}", stderr(&o));
+        assert!(is_char_device(&full), "{args:?} replaced the device {}", full.display());
+    }
+    let name = |p: &Path| p.file_name().unwrap().to_string_lossy().into_owned();
+    assert!(temp_leftovers(&name(&null)).is_empty() && temp_leftovers(&name(&full)).is_empty());
+    // a map is three files named from --out: a device is refused before any work
+    let o = bin().args(["map", "--out"]).arg(&null).output().unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("invalid out") && stderr(&o).contains("device"), "{}", stderr(&o));
+    assert!(is_char_device(&null));
+    let made: Vec<String> = s.names().into_iter().filter(|n| !n.ends_with("-device")).collect();
+    assert!(made.is_empty(), "files left: {made:?}");
+}
+
+#[test]
+fn a_fifo_is_written_through_and_stays_a_fifo() {
+    let s = Scratch::new("fifo");
+    let fifo = s.path("pipe");
+    assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    let regular = s.path("regular.csv");
+    for (args, reference) in writers(&fifo).into_iter().zip(writers(&regular)).take(2) {
+        let reader = {
+            let fifo = fifo.clone();
+            std::thread::spawn(move || std::fs::read(fifo).unwrap())
+        };
+        let o = bin().args(&args).stdout(Stdio::null()).output().unwrap();
+        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+        let through = reader.join().unwrap();
+        let o = bin().args(&reference).stdout(Stdio::null()).output().unwrap();
+        assert!(o.status.success(), "{reference:?}: {}", stderr(&o));
+        assert!(through == std::fs::read(&regular).unwrap(), "{args:?}: the FIFO carried other bytes than a file");
+        assert!(std::fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo(), "{args:?} replaced the FIFO");
+    }
+    assert_eq!(s.names(), vec!["pipe".to_string(), "regular.csv".to_string()]);
+}
+
+#[test]
+fn a_symlink_keeps_pointing_at_its_target_which_is_written() {
+    let s = Scratch::new("symlink");
+    std::fs::create_dir(s.path("data")).unwrap();
+    let target = s.path("data/target.csv");
+    std::fs::write(&target, "old\n").unwrap();
+    let link = s.path("link.csv");
+    std::os::unix::fs::symlink("data/target.csv", &link).unwrap();
+    let dangling = s.path("dangling.csv");
+    std::os::unix::fs::symlink("data/new.csv", &dangling).unwrap();
+    let direct = s.path("direct.csv");
+    for (args, reference) in writers(&link).into_iter().zip(writers(&direct)).take(2) {
+        for a in [&args, &reference] {
+            let o = bin().args(a).stdout(Stdio::null()).output().unwrap();
+            assert!(o.status.success(), "{a:?}: {}", stderr(&o));
+        }
+        assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink(), "{args:?} replaced the link");
+        assert_eq!(std::fs::read_link(&link).unwrap(), Path::new("data/target.csv"));
+        assert!(std::fs::read(&target).unwrap() == std::fs::read(&direct).unwrap(), "{args:?}: the target differs");
+    }
+    for a in [&writers(&dangling)[0], &writers(&direct)[0]] {
+        let o = bin().args(a).stdout(Stdio::null()).output().unwrap();
+        assert!(o.status.success(), "{a:?}: {}", stderr(&o));
+    }
+    assert!(std::fs::symlink_metadata(&dangling).unwrap().file_type().is_symlink());
+    assert!(std::fs::read(s.path("data/new.csv")).unwrap() == std::fs::read(&direct).unwrap());
+    assert_eq!(names_in(&s.path("data")), vec!["new.csv".to_string(), "target.csv".to_string()]);
+    assert_eq!(s.names(), vec!["dangling.csv", "data", "direct.csv", "link.csv"]);
+}
+
+#[test]
+fn a_read_only_directory_is_refused_before_any_work_and_nothing_is_left() {
+    let s = Scratch::new("readonly");
+    let ro = s.path("ro");
+    std::fs::create_dir(&ro).unwrap();
+    let out = ro.join("out.csv");
+    let mut cases = writers(&out);
+    cases.push(vec!["map".into(), "--out".into(), out.to_str().unwrap().into()]);
+    cases.push(vec!["figures".into(), "--only".into(), "modes".into(), "--out".into(), ro.to_str().unwrap().into()]);
+    use std::os::unix::fs::PermissionsExt;
+    std::fs::set_permissions(&ro, std::fs::Permissions::from_mode(0o555)).unwrap();
+    for args in &cases {
+        let mut cmd = bin();
+        cmd.args(args);
+        if is_root() {
+            cmd.uid(65534).gid(65534); // permission bits do not bind root
+        }
+        let o = cmd.output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert_eq!(stderr(&o).lines().count(), 1, "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains("permission denied"), "{args:?}: {}", stderr(&o));
+        assert!(o.stdout.is_empty(), "{args:?} printed a result");
+        assert!(names_in(&ro).is_empty(), "{args:?} left {:?}", names_in(&ro));
+    }
+    std::fs::set_permissions(&ro, std::fs::Permissions::from_mode(0o755)).unwrap();
+}
+
+#[test]
+fn a_failed_standard_output_publishes_no_file() {
+    let s = Scratch::new("stdout");
+    let full = device(&s, "full");
+    let cases: Vec<(Vec<String>, Vec<&str>)> = vec![
+        (vec!["map".into(), "--nx".into(), "5".into(), "--nr".into(), "3".into()], vec!["m.csv", "m.png", "m.json"]),
+        (vec!["simulate".into(), "--solver".into(), "fd".into()], vec!["series.csv"]),
+        (vec!["report".into()], vec!["REPORT.md"]),
+    ];
+    for (args, files) in cases {
+        let mut cmd = bin();
+        cmd.args(&args);
+        match args[0].as_str() {
+            "map" => cmd.arg("--out").arg(s.path("m.csv")),
+            "simulate" => cmd.arg("--series").arg(s.path("series.csv")),
+            _ => cmd.arg("--out").arg(s.path("REPORT.md")),
+        };
+        let o = cmd.stdout(std::fs::OpenOptions::new().write(true).open(&full).unwrap()).output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains("<stdout>"), "{args:?}: {}", stderr(&o));
+        let left: Vec<String> = s.names().into_iter().filter(|n| !n.ends_with("-device")).collect();
+        assert!(left.is_empty(), "{args:?} left {left:?} (expected none of {files:?})");
+    }
+}

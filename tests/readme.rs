@@ -1,0 +1,74 @@
+//! The README's examples still do what the README says (trap class 9 of issue 24): every
+//! `$ racket-impact ...` line of its console blocks runs (exit 0, no error), and where the
+//! README shows the output, the command prints exactly that (up to a `...` line, which marks
+//! the rest as left out). A `$ cat FILE` line with its text creates that file first.
+
+use std::process::Command;
+
+/// One example: the command after `$ `, and the output lines shown under it.
+struct Example {
+    command: String,
+    shown: Vec<String>,
+}
+
+fn examples(readme: &str) -> Vec<Example> {
+    let mut out: Vec<Example> = Vec::new();
+    let mut in_console = false;
+    for line in readme.lines() {
+        if line.starts_with("```") {
+            in_console = line.trim() == "```console";
+            continue;
+        }
+        if !in_console {
+            continue;
+        }
+        match line.strip_prefix("$ ") {
+            Some(cmd) => out.push(Example { command: cmd.to_string(), shown: Vec::new() }),
+            None => {
+                if let Some(last) = out.last_mut() {
+                    last.shown.push(line.to_string());
+                }
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn every_readme_example_runs_and_prints_what_the_readme_shows() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let all = examples(&readme);
+    assert!(all.len() >= 8, "{} examples found", all.len());
+    let mut failures = Vec::new();
+    for ex in &all {
+        // the command without its trailing `# comment`
+        let command = ex.command.split(" #").next().unwrap().trim();
+        let words: Vec<&str> = command.split_whitespace().collect();
+        if words[0] == "cat" {
+            std::fs::write(dir.path().join(words[1]), ex.shown.join("\n") + "\n").unwrap();
+            continue;
+        }
+        assert_eq!(words[0], "racket-impact", "{command}");
+        let o = Command::new(env!("CARGO_BIN_EXE_racket-impact"))
+            .current_dir(dir.path())
+            .args(&words[1..])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&o.stderr);
+        if !o.status.success() || stderr.contains("error") {
+            failures.push(format!("{command}: exit {:?}: {stderr}", o.status.code()));
+            continue;
+        }
+        let printed: Vec<String> =
+            String::from_utf8_lossy(&o.stdout).lines().map(|l| l.trim_end().to_string()).collect();
+        let shown: Vec<String> =
+            ex.shown.iter().take_while(|l| l.trim() != "...").map(|l| l.trim_end().to_string()).collect();
+        let complete = shown.len() == ex.shown.len();
+        let matches = if complete { printed == shown } else { printed.starts_with(&shown) };
+        if !shown.is_empty() && !matches {
+            failures.push(format!("{command}:\nREADME:\n{}\nprinted:\n{}", shown.join("\n"), printed.join("\n")));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+}
