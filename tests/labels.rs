@@ -84,8 +84,15 @@ fn labels_agree_with_signs_across_points_angles_and_spins() {
 fn sign_remarks_are_only_for_the_fields_they_describe() {
     let p = oblique(0.158, 0.0, 30.0, 0.0, 0.0);
     let res = simulate(&p).unwrap();
-    for key in ["e_a", "v2_t", "spin_out_rpm", "tau_s"] {
-        assert_eq!(sign_remark(key, &res), "", "{key}");
+    // every field's key is matched: the two described ones carry a remark, no other does
+    for field in racket_impact::solve::outcome::FIELDS.iter() {
+        let described = ["v2_n_m_per_s", "rebound_angle_deg"].contains(&field.key);
+        let remark = sign_remark(field.key, &res);
+        if field.key == "v2_n_m_per_s" {
+            assert!(!remark.is_empty(), "{}", field.key);
+        } else if !described {
+            assert_eq!(remark, "", "{}", field.key);
+        }
     }
     // at normal incidence the oblique lines are not printed at all
     let normal = simulate(&Params::paper()).unwrap();
@@ -107,7 +114,14 @@ fn json_outputs_write_their_spin_convention() {
         .unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert!(v[0]["spin_convention"].as_str().unwrap().contains("court's frame"), "{v}");
+    let convention = v[0]["spin_convention"].as_str().unwrap();
+    assert!(convention.contains("court's frame"), "{v}");
+    // the incoming spin is printed in the court's frame it was given in, and the parameters'
+    // racket-frame copy of it is named as such (a backspin of 1000 rpm in the court's frame is
+    // -1000 in the racket's frame for a forward swing)
+    assert_eq!(v[0]["incoming_spin_rpm"].as_f64(), Some(1000.0), "{v}");
+    assert!(convention.contains("params.oblique.spin_rpm and result.spin_out_rpm: the racket's frame"), "{v}");
+    assert_eq!(v[0]["params"]["oblique"]["spin_rpm"].as_f64(), Some(-1000.0), "{v}");
     let out = bin().args(["speed", "--swing", "100", "--swing-path-deg", "20"]).output().unwrap();
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("> 0 is topspin in the court's frame"), "{text}");
@@ -127,8 +141,13 @@ fn oblique_maps_name_angle_azimuth_spin_and_mu_in_title_and_table() {
         let col = t.column(column).unwrap_or_else(|| panic!("no {column}: {:?}", t.columns));
         assert!(!col.is_empty() && col.iter().all(|v| *v == value), "{column}");
     }
+    // its metadata and colour bar say which way the spins count
+    let meta = map.metadata("paper racket", Quantity::Spin, (9, 5)).unwrap();
+    assert!(meta["spin_convention"].as_str().unwrap().contains("relative to the ball's incoming motion"), "{meta}");
+    assert!(Quantity::Spin.symbol().contains("> 0: topspin"));
     // a normal map has none of them
     let normal = FaceMap::compute(&Params::paper(), 9, 5, &mut |_| {}).unwrap();
     assert!(normal.table().column("angle_deg").is_none());
+    assert!(normal.metadata("paper", Quantity::Power, (9, 5)).unwrap().get("spin_convention").is_none());
     assert!(!normal.heatmap(Quantity::Power, "paper").title.contains("angle"));
 }

@@ -36,7 +36,7 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
     if !p.oblique.is_normal() {
         let o = &p.oblique;
         s.push_str(&format!(
-            "oblique: angle {} deg from the normal, azimuth {} deg, spin {} rpm, mu {}, kt {} N/m, ball R {} m, I = {} m_b R^2\n",
+            "oblique: angle {} deg from the normal, azimuth {} deg, spin {} rpm (> 0: topspin relative to the incoming motion along the strings), mu {}, kt {} N/m, ball R {} m, I = {} m_b R^2\n",
             fmt_sig(o.angle_deg, 6),
             fmt_sig(o.azimuth_deg, 6),
             fmt_sig(o.spin_rpm, 6),
@@ -76,13 +76,14 @@ pub const SIMULATE_SPIN_CONVENTION: &str =
 /// What the sign of an oblique field means for this result, appended to its text line: the
 /// normal rebound velocity says whether the ball rebounds or moves on, and the rebound angle
 /// why it is over 90 degrees when it does (the labels themselves are fixed).
+/// `key` is the field's JSON and CSV key ([`crate::solve::outcome::Field::key`]).
 pub fn sign_remark(key: &str, r: &ImpactResult) -> &'static str {
     let on = r.v2_n < 0.0;
     match key {
-        "v2_n" if r.v2_n > 0.0 => ": > 0, rebounds away from the strings",
-        "v2_n" if on => ": < 0, moves on in its incoming direction (the frame recoils faster)",
-        "v2_n" if r.v2_n == 0.0 => ": 0, no normal motion after impact",
-        "rebound_angle_deg" if on => ": over 90 since v2_n < 0 (the ball moves on, no rebound)",
+        "v2_n_m_per_s" if r.v2_n > 0.0 => ": > 0, rebounds away from the strings",
+        "v2_n_m_per_s" if on => ": < 0, moves on in its incoming direction (the frame recoils faster)",
+        "v2_n_m_per_s" if r.v2_n == 0.0 => ": 0, no normal motion after impact",
+        "rebound_angle_deg" if on => ": |angle| over 90 since v2_n < 0 (the ball moves on, no rebound)",
         _ => "",
     }
 }

@@ -14,8 +14,10 @@ use crate::solve::ImpactResult;
 use crate::study::{check_comparison, Sources};
 
 /// The sign conventions of the spins a stroke's JSON prints.
-pub const SPEED_SPIN_CONVENTION: &str = "spin_rpm: > 0 topspin in the court's frame (the ball's top moving forward in its \
-     flight); result.spin_out_rpm: > 0 topspin relative to the ball's incoming motion along the strings (the racket's frame)";
+pub const SPEED_SPIN_CONVENTION: &str =
+    "spin_rpm (the ball's spin as it leaves) and incoming_spin_rpm: > 0 topspin in the \
+     court's frame (the ball's top moving forward in its flight); params.oblique.spin_rpm and result.spin_out_rpm: the \
+     racket's frame, > 0 topspin relative to the ball's incoming motion along the strings";
 
 /// A unit of speed.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -261,6 +263,7 @@ impl SpeedComparison {
                 if let (Some((launch_deg, spin_rpm)), Some(o)) = (launch, v.as_object_mut()) {
                     o.insert("launch_deg".into(), (*launch_deg).into());
                     o.insert("spin_rpm".into(), (*spin_rpm).into());
+                    o.insert("incoming_spin_rpm".into(), self.request.incoming_spin_rpm.into());
                     o.insert("spin_convention".into(), SPEED_SPIN_CONVENTION.into());
                 }
                 v

@@ -19,13 +19,15 @@ impl FaceMap {
     /// The JSON metadata of a map of `q` requested on an `nx x nr` grid: the quantity, the grid
     /// and the configuration ([`config_metadata`]).
     pub fn metadata(&self, label: &str, q: Quantity, (nx, nr): (usize, usize)) -> Result<serde_json::Value> {
-        Ok(serde_json::json!({
+        let mut v = serde_json::json!({
             "quantity": q.name(), "column": q.column(), "unit": q.unit(),
             "note": IMPACT_NOTE,
             "grid": grid_metadata(&self.grid, nx, nr),
             "points": self.len(),
             "a": config_metadata(label, self, q)?,
-        }))
+        });
+        name_spin_convention(&mut v, &self.params);
+        Ok(v)
     }
 }
 
@@ -34,7 +36,7 @@ impl DiffMap {
     /// the spread of `B - A`).
     pub fn metadata(&self, labels: (&str, &str), q: Quantity, (nx, nr): (usize, usize)) -> Result<serde_json::Value> {
         let spread = self.spread(q);
-        Ok(serde_json::json!({
+        let mut v = serde_json::json!({
             "quantity": q.name(), "column": q.column(), "unit": q.unit(),
             "note": IMPACT_NOTE,
             "difference": "b - a",
@@ -43,7 +45,9 @@ impl DiffMap {
             "a": config_metadata(labels.0, &self.a, q)?,
             "b": config_metadata(labels.1, &self.b, q)?,
             "b_minus_a": { "min": spread.min, "max": spread.max, "mean": spread.mean },
-        }))
+        });
+        name_spin_convention(&mut v, &self.a.params);
+        Ok(v)
     }
 }
 
@@ -77,4 +81,12 @@ pub fn config_metadata(label: &str, m: &FaceMap, q: Quantity) -> Result<serde_js
 /// `serde_json::to_value` for our plain types (numbers, strings, options), which cannot fail.
 fn json<T: Serialize>(v: &T) -> serde_json::Value {
     serde_json::to_value(v).unwrap_or(serde_json::Value::Null)
+}
+
+/// An oblique or spinning map's metadata says which way its spins count (the sign convention of
+/// `--spin-rpm` and `spin_out_rpm`); a normal-incidence map has no spin to explain.
+fn name_spin_convention(v: &mut serde_json::Value, p: &crate::params::Params) {
+    if let (false, Some(o)) = (p.oblique.is_normal(), v.as_object_mut()) {
+        o.insert("spin_convention".into(), crate::render::impact::SIMULATE_SPIN_CONVENTION.into());
+    }
 }

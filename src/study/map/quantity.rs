@@ -97,7 +97,7 @@ impl Quantity {
             Quantity::Theta => "theta",
             Quantity::FVib => "f_vib",
             Quantity::Power => "power 100 e_A",
-            Quantity::Spin => "spin",
+            Quantity::Spin => "spin out (> 0: topspin relative to the incoming motion)",
             Quantity::ReboundAngle => "rebound angle",
         }
     }
