@@ -265,9 +265,30 @@ fn an_unrealisable_balance_and_swingweight_is_refused_with_the_realisable_range(
         assert!(with_sw(sw).is_ok(), "{t}: {:?}", with_sw(sw).err());
     }
     let near = with_sw(range[0] * 1.0001).unwrap_err().to_string();
-    assert!(near.contains("cannot reach this swingweight so close to the limit"), "{near}");
+    assert!(near.contains("does not reach this swingweight, though some mass distribution could"), "{near}");
     let msg = spec.to_racket(3).unwrap_err().to_string();
     assert!(msg.starts_with("invalid segments = 3"), "{msg}");
+}
+
+#[test]
+fn a_balance_whose_every_swingweight_is_outside_the_allowed_range_is_blamed_itself() {
+    // 1 kg balanced 0.1 cm from the tip: any swingweight it could have is above the key's 2000
+    let spec = parse(
+        "length_cm = 68\nmass_g = 1000\ntwistweight_kg_cm2 = 15\nei_n_m2 = 150\nbalance_cm = 67.9\nswingweight_kg_cm2 = 1999\n",
+    )
+    .unwrap();
+    let err = spec.to_racket(39).unwrap_err();
+    let msg = err.to_string();
+    assert!(matches!(err, Error::InvalidParameter { field: "balance_cm", .. }), "{msg}");
+    assert!(msg.contains("outside the allowed swingweight_kg_cm2 1..2000"), "{msg}");
+    assert_eq!(msg.lines().count(), 1);
+    // where the ranges overlap, the suggested range never leaves the allowed one
+    let spec = parse(
+        "length_cm = 68\nmass_g = 1000\ntwistweight_kg_cm2 = 15\nei_n_m2 = 150\nbalance_cm = 50\nswingweight_kg_cm2 = 1\n",
+    )
+    .unwrap();
+    let msg = spec.to_racket(39).unwrap_err().to_string();
+    assert!(msg.contains("< swingweight_kg_cm2 < 2000 kg cm^2"), "{msg}");
 }
 
 #[test]

@@ -298,13 +298,11 @@ impl RacketSpec {
         let by_area = self.head_size_sq_in.is_some() || self.head_aspect.is_some();
         let (l_cm, w_cm) = match (by_size, by_area) {
             (false, false) => return Ok(None),
-            (true, true) => {
-                return Err(Error::invalid(
-                    "head_length_cm/head_size_sq_in",
-                    "(several given)",
-                    "give either head_length_cm with head_width_cm, or head_size_sq_in with head_aspect",
-                ))
-            }
+            (true, true) => return Err(Error::invalid(
+                "head_length_cm/head_size_sq_in",
+                "(several given)",
+                "give either head_length_cm with head_width_cm, or head_size_sq_in (with head_aspect, or its default)",
+            )),
             (true, false) => {
                 let (Some(l), Some(w)) = (self.head_length_cm, self.head_width_cm) else {
                     let missing = if self.head_length_cm.is_none() { "head_length_cm" } else { "head_width_cm" };

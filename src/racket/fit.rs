@@ -97,9 +97,11 @@ fn node_weights(racket: &Racket, segments: usize) -> (Vec<f64>, Vec<f64>) {
 /// fraction of the length from the tip) whose discrete beam has the spec's balance and
 /// swingweight (its mass is the racket's by construction). Of all densities with that mass,
 /// balance and swingweight it is the one closest to the paper's uniform beam in relative
-/// entropy, and it exists for every balance and swingweight a mass on the racket can have:
-/// `M d^2 < SW < M (d^2 + b (L - b))` with `d` the balance's distance from the swingweight axis
-/// and `b` its distance from the butt (all the mass at the two ends is the upper limit). Newton's
+/// entropy. Any mass on the racket has `M d^2 < SW < M (d^2 + b (L - b))` with `d` the balance's
+/// distance from the swingweight axis and `b` its distance from the butt (all the mass at the
+/// two ends is the upper limit); the family, with its tilt bounded by |t| <= 100, covers the
+/// interior of that range, not the last few per cent next to either limit (nor, on very coarse
+/// beams of 4-6 segments, all of it), and says so when it falls short. Newton's
 /// method on the two moments, whose Jacobian is the covariance of the moments with `(f, f^2)`
 /// under the node masses (exact for masses `~ exp(t1 f_i + t2 f_i^2)`, close for the lumped
 /// ones), with the step halved until the residual falls.
@@ -122,15 +124,32 @@ fn fit_tilt(r: &Resolved, shape: &Shape, racket: &Racket, segments: usize) -> Re
                 if physical {
                     "no mass distribution on the racket has this balance and swingweight"
                 } else {
-                    "the fitted density (the uniform beam tilted by exp(t1 f + t2 f^2), |t| <= 100) cannot reach \
-                     this swingweight so close to the limit of what any mass distribution can have"
+                    "the fitted density family (the uniform beam tilted by exp(t1 f + t2 f^2), |t| <= 100) does not \
+                     reach this swingweight, though some mass distribution could: its limits are those of the family, \
+                     within the physical range"
                 },
+                fmt_sig(mass * 1000.0, 6),
+                fmt_sig(round_sig(true, sw_lo * 1.0e4, 4).max(super::spec::ranges::SWINGWEIGHT.0), 4),
+                fmt_sig(round_sig(false, sw_hi * 1.0e4, 4).min(super::spec::ranges::SWINGWEIGHT.1), 4)
+            ),
+        )
+    };
+    // a balance and mass whose whole physical range lies outside the keys' allowed swingweights
+    // are what is wrong, not the swingweight: no allowed value could be suggested
+    let (sw_min, sw_max) = super::spec::ranges::SWINGWEIGHT;
+    if sw_lo * 1.0e4 >= sw_max || sw_hi * 1.0e4 <= sw_min {
+        return Err(Error::invalid(
+            shape.balance_key,
+            shape.balance_given,
+            format!(
+                "at mass_g = {} every possible swingweight of this balance lies in {}..{} kg cm^2, outside the \
+                 allowed swingweight_kg_cm2 {sw_min}..{sw_max}: check the balance and the mass",
                 fmt_sig(mass * 1000.0, 6),
                 fmt_sig(round_sig(true, sw_lo * 1.0e4, 4), 4),
                 fmt_sig(round_sig(false, sw_hi * 1.0e4, 4), 4)
             ),
-        )
-    };
+        ));
+    }
     if !(shape.swingweight > sw_lo && shape.swingweight < sw_hi) {
         return Err(unreachable(true));
     }

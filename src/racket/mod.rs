@@ -67,17 +67,19 @@
 //! swingweight it is the one of least relative entropy to the uniform beam (the maximum-entropy
 //! distribution with given first and second moments), so it adds no structure the three numbers
 //! do not ask for: mass pulled towards both ends (a heavy head loop and handle, a light throat)
-//! when the swingweight is above the uniform beam's, towards the middle when below. It exists for
-//! every combination a mass on the racket can have, `M d^2 < SW < M (d^2 + b (L - b))` with `d`
-//! the balance's distance from the swingweight axis and `b` from the butt; outside that the
-//! error gives the range. (Before this family the density was piecewise linear over the knots
+//! when the swingweight is above the uniform beam's, towards the middle when below. Any mass on
+//! the racket has `M d^2 < SW < M (d^2 + b (L - b))` with `d` the balance's distance from the
+//! swingweight axis and `b` from the butt; outside that the error gives the range. The family
+//! (tilt bounded by |t| <= 100) fits the interior of that range, every published spec sheet we
+//! tried among them, but not the last few per cent next to either limit, where the error says
+//! the family, not physics, is the limit. (Before this family the density was piecewise linear over the knots
 //! with a constant handle, which could not hold the head-loop mass of real frames: a 300 g,
 //! 32.5 cm, 315 kg cm^2 frame was refused.)
 //!
 //! Physically sensible: the fit reports the density at the knots and its extremes; where the
 //! density leaves [`PLAUSIBLE_DENSITY`] = 0.25..4 times the mean `M / L`, every command warns
 //! (the fit still runs). Real spec sheets fit well inside it: see the fixture
-//! `tests/data/spec_sheets.toml` and the test `published_spec_sheets_fit` (its densities run
+//! `tests/data/spec_sheets/` and the test `published_spec_sheets_fit` (its densities run
 //! from about 0.6 to 2.5 times the mean). The knots `[0, head end, handle start, L]` (head end =
 //! the head length, or 48 % of L without head keys; handle start = L - handle_length_cm, default
 //! [`DEFAULT_HANDLE_LENGTH_CM`]) still carry the stiffness profile.

@@ -103,10 +103,11 @@ fn a_real_frame_with_its_mass_in_the_head_loop_fits() {
     assert!(rep.density_g_per_cm[0] > 2.0 * throat && rep.density_g_per_cm[3] > 2.0 * throat, "{rep:?}");
 }
 
-/// Every balance and swingweight inside the physical limits (here the middle 80 % of the
-/// range, on a grid of masses and balances) fits, exactly on the discrete beam, at two N.
+/// The middle 80 % of every physical balance-swingweight range (on a grid of masses and
+/// balances) fits, exactly on the discrete beam, at two N (the last few per cent next to either
+/// limit are beyond the bounded tilt family and refused with that reason).
 #[test]
-fn every_realisable_balance_and_swingweight_fits() {
+fn the_interior_of_every_realisable_balance_and_swingweight_range_fits() {
     for mass_g in [100.0, 300.0, 400.0] {
         for balance_cm in [20.0, 30.0, 34.0, 38.0, 45.0] {
             let (l, b, m) = (68.58, balance_cm, mass_g / 1000.0);
