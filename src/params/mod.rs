@@ -15,6 +15,7 @@
 //! - [`oblique`]: incidence angle, azimuth, incoming spin, friction (beyond the paper).
 //! - [`spec`] and [`keys`]: what a declaration is, and the declarations.
 //! - [`overrides`]: the `--config` file.
+//! - [`uncertainty`]: the distribution and source of a parameter's uncertainty.
 
 use serde::{Deserialize, Serialize};
 
@@ -26,6 +27,7 @@ pub mod oblique;
 pub mod overrides;
 pub mod physical;
 pub mod spec;
+pub mod uncertainty;
 pub mod variants;
 
 pub use keys::Overrides;
