@@ -55,6 +55,9 @@ enum Command {
     /// metadata or the CSV table. Example: racket-impact map --racket tweener --quantity power
     /// --compare-tension-lb 50,60
     Map(cli::map::MapArgs),
+    /// An impact's result fields under uncertain inputs, or every paper claim under the declared uncertainty
+    #[command(long_about = cli::uncertainty::long_about())]
+    Uncertainty(cli::uncertainty::UncertaintyArgs),
 }
 
 fn main() -> ExitCode {
@@ -89,6 +92,7 @@ fn main() -> ExitCode {
         Command::Speed(a) => cli::speed::run(a),
         Command::Sweep(a) => cli::sweep::run(a),
         Command::Map(a) => cli::map::run(a),
+        Command::Uncertainty(a) => cli::uncertainty::run(a),
     };
     match outcome {
         Ok(()) => ExitCode::SUCCESS,

@@ -12,3 +12,4 @@ pub mod report;
 pub mod simulate;
 pub mod speed;
 pub mod sweep;
+pub mod uncertainty;

@@ -9,6 +9,7 @@ pub mod map;
 pub mod sensitivity;
 pub mod speed;
 pub mod sweep;
+pub mod uncertainty;
 
 use std::path::{Path, PathBuf};
 

@@ -67,22 +67,27 @@ impl SplitMix {
 }
 
 /// First-order and total indices from the base rows `rows` (repeats allowed):
-/// `S_i = mean(f_B (f_ABi - f_A)) / V`, `ST_i = mean((f_A - f_ABi)^2) / (2 V)`, with `V` the
-/// variance of the A and B values of those rows.
+/// `S_i = mean((f_B - m) (f_ABi - f_A)) / V` (Saltelli 2010, with the output centred on the
+/// mean m of the A and B values, as SALib does: the same expectation, far less variance for
+/// an output whose mean is large against its spread) and `ST_i = mean((f_A - f_ABi)^2) / (2 V)`
+/// (Jansen 1999), with `V` the variance of the A and B values of those rows.
 fn indices(runs: &[f64], design: &Design, rows: &[usize]) -> (Vec<f64>, Vec<f64>) {
     let n = design.samples();
     let (a, b) = (&runs[..n], &runs[n..2 * n]);
     let m = rows.len() as f64;
     let mean = rows.iter().map(|&j| a[j] + b[j]).sum::<f64>() / (2.0 * m);
     let var = rows.iter().map(|&j| (a[j] - mean).powi(2) + (b[j] - mean).powi(2)).sum::<f64>() / (2.0 * m - 1.0);
-    let undefined = !(var > 0.0 && var.is_finite());
+    // an output that does not vary has no indices (its variance is rounding noise, if any)
+    let first_value = a[rows[0]];
+    let constant = rows.iter().all(|&j| a[j] == first_value && b[j] == first_value);
+    let undefined = constant || !(var > 0.0 && var.is_finite());
     (0..design.inputs())
         .map(|i| {
             if undefined {
                 return (f64::NAN, f64::NAN);
             }
             let ab = &runs[(2 + i) * n..(3 + i) * n];
-            let first = rows.iter().map(|&j| b[j] * (ab[j] - a[j])).sum::<f64>() / m / var;
+            let first = rows.iter().map(|&j| (b[j] - mean) * (ab[j] - a[j])).sum::<f64>() / m / var;
             let total = rows.iter().map(|&j| (a[j] - ab[j]).powi(2)).sum::<f64>() / (2.0 * m) / var;
             (first, total)
         })
