@@ -41,12 +41,14 @@ impl Dist {
         }
     }
 
-    /// The text form (`uniform:LO:HI`, `normal:MEAN:SD`, `loguniform:LO:HI`).
+    /// The text form (`uniform:LO:HI`, `normal:MEAN:SD`, `loguniform:LO:HI`), numbers to six
+    /// significant digits.
     pub fn text(&self) -> String {
+        use super::spec::sig;
         match *self {
-            Dist::Uniform { lo, hi } => format!("uniform:{lo}:{hi}"),
-            Dist::Normal { mean, sd } => format!("normal:{mean}:{sd}"),
-            Dist::LogUniform { lo, hi } => format!("loguniform:{lo}:{hi}"),
+            Dist::Uniform { lo, hi } => format!("uniform:{}:{}", sig(lo, 6), sig(hi, 6)),
+            Dist::Normal { mean, sd } => format!("normal:{}:{}", sig(mean, 6), sig(sd, 6)),
+            Dist::LogUniform { lo, hi } => format!("loguniform:{}:{}", sig(lo, 6), sig(hi, 6)),
         }
     }
 

@@ -47,6 +47,16 @@ where
     Ok(out)
 }
 
+/// The design with the first `samples` base rows of `design` (same seed, same points) and its
+/// runs, taken from `rows` (the runs of `design`): the smaller study for free, to show how the
+/// estimates move when the sample count doubles.
+pub fn prefix(design: &Design, rows: &[Vec<f64>], samples: usize) -> Result<(Design, Vec<Vec<f64>>)> {
+    let small = Design::new(samples.min(design.samples()) as u64, design.inputs(), design.seed())?;
+    let n = design.samples();
+    let runs = (0..small.runs()).map(|k| rows[(k / small.samples()) * n + k % small.samples()].clone()).collect();
+    Ok((small, runs))
+}
+
 /// Summarise every output column of `rows` (as [`run`] returns them).
 pub fn summarise_all(design: &Design, rows: &[Vec<f64>]) -> Vec<Summary> {
     let outputs = rows.first().map_or(0, Vec::len);

@@ -108,3 +108,15 @@ fn a_constant_output_has_no_indices() {
     assert!(s.sd < 1e-15 && s.q05 == 0.1 + 0.2 && s.q95 == 0.1 + 0.2, "{s:?}");
     assert!(s.first[0].value.is_nan() && s.total[0].lo.is_nan());
 }
+
+#[test]
+fn the_first_rows_of_a_larger_design_are_the_smaller_design() {
+    let dists = [Dist::Uniform { lo: 0.0, hi: 1.0 }; 3];
+    let f = |x: &[f64]| Ok(vec![x[0] * x[1] + x[2]]);
+    let big = Design::new(32, 3, 9).unwrap();
+    let small = Design::new(16, 3, 9).unwrap();
+    let rows = run(&big, &dists, f, |_| {}).unwrap();
+    let (d, sub) = prefix(&big, &rows, 16).unwrap();
+    assert_eq!(d, small);
+    assert_eq!(sub, run(&small, &dists, f, |_| {}).unwrap());
+}
