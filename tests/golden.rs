@@ -100,6 +100,10 @@ fn topspin_forehand() {
 fn robustness() {
     check("robustness");
 }
+#[test]
+fn sensitivity() {
+    check("sensitivity");
+}
 
 #[test]
 fn every_registered_experiment_has_a_golden_test_and_committed_outputs() {

@@ -25,6 +25,7 @@
 //! | `oblique_tension` | (beyond) spin against tension, friction constant or tension-dependent | [`oblique_tension`] |
 //! | `topspin_forehand` | (beyond) a forehand brushing up: speed, launch angle, spin | [`topspin_forehand`] |
 //! | `robustness` | (ours) every claim under the declared input uncertainty | [`robustness`] |
+//! | `sensitivity` | (ours) Sobol' indices of the headline outputs per uncertain input | [`sensitivity`] |
 //!
 //! All paper experiments use the paper's numerics (`node` load, N = 39) as SPEC.md asks;
 //! `convergence` shows what that costs. Shared pieces: [`setup`] (the racket an experiment runs
@@ -58,6 +59,7 @@ pub mod oblique_tension;
 pub mod off_axis;
 pub mod position;
 pub mod robustness;
+pub mod sensitivity;
 pub mod speeds;
 pub mod topspin_forehand;
 pub mod variant_grip;
@@ -117,6 +119,7 @@ pub fn registry() -> Vec<Experiment> {
         oblique_tension::EXPERIMENT,
         topspin_forehand::EXPERIMENT,
         robustness::EXPERIMENT,
+        sensitivity::EXPERIMENT,
     ]
 }
 
