@@ -284,13 +284,15 @@ fn run(ctx: &Context) -> Result<Table> {
     table(&study(ctx, SAMPLES, SEED, true, |_| {})?)
 }
 
-/// Where a value sits against the claim's band: -1 and 1 at its edges, 0 at the paper's value.
+/// Where a value sits against the claim's band, `asinh` of the distance from the paper's value
+/// in half tolerances: 0 at the paper's value, `asinh(+-1)` at the band's edges, and values
+/// tens of tolerances away still on the chart.
 fn in_band(v: f64, (lo, hi): (f64, f64)) -> f64 {
-    (2.0 * v - lo - hi) / (hi - lo)
+    ((2.0 * v - lo - hi) / (hi - lo)).asinh()
 }
 
 /// Verdict colours (palette indices).
-const COLOURS: [(&str, usize); 3] = [("holds", 3), ("part", 1), ("not at all", 4)];
+const COLOURS: [(&str, usize); 3] = [("holds", 3), ("part", 1), ("not at all", 5)];
 
 fn chart(_: &Context, t: &Table) -> Chart {
     let col = |name: &str| super::col(t, name);
@@ -317,20 +319,19 @@ fn chart(_: &Context, t: &Table) -> Chart {
     let x: Vec<f64> = (1..=n).map(|k| k as f64).collect();
     let y: Vec<f64> = (0..n).map(|k| in_band(nominal[k], (lo[k], hi[k]))).collect();
     curves.push(Curve::new("nominal (the paper's inputs, fd)", x, y).with_style(LineStyle::Points).with_color(0));
-    for edge in [-1.0, 1.0] {
+    for edge in [-1.0f64, 1.0] {
         let label = if edge > 0.0 { "edges of the claim's tolerance" } else { "" };
-        curves.push(
-            Curve::new(label, vec![0.0, n as f64 + 1.0], vec![edge, edge]).with_style(LineStyle::Dashed).with_color(5),
-        );
+        let y = edge.asinh();
+        curves
+            .push(Curve::new(label, vec![0.0, n as f64 + 1.0], vec![y, y]).with_style(LineStyle::Dashed).with_color(0));
     }
     Chart {
         x_range: Some((0.0, n as f64 + 1.0)),
-        y_range: Some((-4.0, 4.0)),
         curves,
         ..Chart::new(
             format!("Claims under input uncertainty ({SAMPLES} x 11 samples, modal solver)"),
             "claim (row of figures/robustness.csv)",
-            "(value - paper) / half tolerance",
+            "asinh((value - paper) / half tolerance)",
         )
     }
 }
@@ -345,7 +346,7 @@ mod tests {
         assert_eq!(Robust::of(1.0, 4.0, (0.0, 3.0)), Robust::Part);
         assert_eq!(Robust::of(-1.0, 0.5, (0.0, 3.0)), Robust::Part);
         assert_eq!(Robust::of(3.5, 4.0, (0.0, 3.0)), Robust::NotAtAll);
-        assert_eq!(in_band(3.0, (1.0, 3.0)), 1.0);
+        assert_eq!(in_band(3.0, (1.0, 3.0)), 1.0f64.asinh());
     }
 
     #[test]

@@ -83,6 +83,17 @@ fn run(ctx: &Context) -> Result<Table> {
     Ok(t)
 }
 
+/// A palette colour per output and the style of its interval bars: the palette has five
+/// solid colours no two of which are alike, so the sixth output's bars are dashed.
+const COLOURS: [(usize, LineStyle); 6] = [
+    (1, LineStyle::Solid),
+    (2, LineStyle::Solid),
+    (3, LineStyle::Solid),
+    (6, LineStyle::Solid),
+    (0, LineStyle::Solid),
+    (5, LineStyle::Dashed),
+];
+
 fn chart(_: &Context, t: &Table) -> Chart {
     let names = inputs().iter().map(|s| s.key).collect::<Vec<_>>();
     let outputs = t.column_text("output").unwrap_or_default();
@@ -92,16 +103,17 @@ fn chart(_: &Context, t: &Table) -> Chart {
     let n_out = OUTPUTS.len() as f64;
     for (o, (key, label)) in OUTPUTS.iter().enumerate() {
         let offset = (o as f64 - (n_out - 1.0) / 2.0) * 0.12;
-        let colour = o + 1;
+        let (colour, bars) = COLOURS[o];
         let (mut xs, mut ys) = (Vec::new(), Vec::new());
         for k in (0..t.rows.len()).filter(|&k| outputs[k] == *key) {
             let i = names.iter().position(|n| *n == inputs_col[k]).unwrap_or(0);
             let x = (i + 1) as f64 + offset;
             xs.push(x);
             ys.push(total[k]);
-            curves.push(Curve::new("", vec![x, x], vec![lo[k], hi[k]]).with_color(colour));
+            curves.push(Curve::new("", vec![x, x], vec![lo[k], hi[k]]).with_color(colour).with_style(bars));
         }
-        curves.push(Curve::new(*label, xs, ys).with_style(LineStyle::Points).with_color(colour));
+        let label = if bars == LineStyle::Dashed { format!("{label} (dashed bars)") } else { label.to_string() };
+        curves.push(Curve::new(label, xs, ys).with_style(LineStyle::Points).with_color(colour));
     }
     let axis: Vec<String> = names.iter().enumerate().map(|(i, n)| format!("{} {n}", i + 1)).collect();
     Chart {
