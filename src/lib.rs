@@ -24,7 +24,7 @@
 //! ```text
 //! src/main.rs, src/cli/  the command line: parse, dispatch, print (clap lives only here)
 //!         |
-//! src/study/             sweeps, string-face maps, swing-speed comparisons
+//! src/study/             sweeps, string-face maps, swing-speed comparisons, Sobol' uncertainty
 //! src/experiments/       one file per result of the paper, each with its paper claims
 //! src/report.rs          the claims collected, the paper beside ours
 //! src/racket/            racket files in player units, fitted to the beam, and the fit report
@@ -56,7 +56,8 @@
 //!   result with its one field table, and the time series.
 //! - [`experiments`]: one module per result of the paper (figure -> module table there), each
 //!   with its paper claims; they run on a racket given as an argument ([`experiments::Context`]).
-//! - [`study`]: parallel, streamed parameter sweeps, string-face maps, swing-speed comparisons.
+//! - [`study`]: parallel, streamed parameter sweeps, string-face maps, swing-speed comparisons,
+//!   uncertainty propagation and Sobol' sensitivity (`uncertainty`, the `robustness` experiment).
 //! - [`render`]: result tables, the one look of every figure, heat maps, the text of one
 //!   impact, the files of a map, atomic writes.
 //! - [`report`]: the paper's numbers beside ours, collected from the experiments' claims.

@@ -13,6 +13,7 @@
 use serde::Deserialize;
 
 mod beyond;
+mod robustness;
 
 use crate::error::{Error, Result};
 use crate::experiments::{self, Context, Ours, PaperClaim};
@@ -253,10 +254,11 @@ pub fn markdown(rows: &[Row]) -> String {
     s
 }
 
-/// The whole report: the paper's claims ([`markdown`]) and the section beyond the paper
+/// The whole report: the paper's claims ([`markdown`]), how robust each is under the declared
+/// input uncertainty ([`robustness::section`]) and the section beyond the paper
 /// ([`beyond::section`]).
 pub fn document(rows: &[Row]) -> Result<String> {
-    Ok(markdown(rows) + &beyond::section()?)
+    Ok(markdown(rows) + &robustness::section()? + &beyond::section()?)
 }
 
 /// Check the claims file: unique ids, positive tolerances, and a computation for each claim

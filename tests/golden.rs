@@ -96,6 +96,14 @@ fn oblique_tension() {
 fn topspin_forehand() {
     check("topspin_forehand");
 }
+#[test]
+fn robustness() {
+    check("robustness");
+}
+#[test]
+fn sensitivity() {
+    check("sensitivity");
+}
 
 #[test]
 fn every_registered_experiment_has_a_golden_test_and_committed_outputs() {

@@ -15,6 +15,7 @@ pub mod report;
 pub mod simulate;
 pub mod speed;
 pub mod sweep;
+pub mod uncertainty;
 
 #[derive(Parser, Debug)]
 #[command(name = "racket-impact", version, about = "Ball on a flexible tennis racket: R. Cross (2000) replicated")]
@@ -62,6 +63,9 @@ pub enum Command {
     /// metadata or the CSV table. Example: racket-impact map --racket tweener --quantity power
     /// --compare-tension-lb 50,60
     Map(map::MapArgs),
+    /// An impact's result fields under uncertain inputs, or every paper claim under the declared uncertainty
+    #[command(long_about = uncertainty::long_about())]
+    Uncertainty(uncertainty::UncertaintyArgs),
 }
 
 /// Run one command.
@@ -75,5 +79,6 @@ pub fn run(command: Command) -> racket_impact::Result<()> {
         Command::Speed(a) => speed::run(a),
         Command::Sweep(a) => sweep::run(a),
         Command::Map(a) => map::run(a),
+        Command::Uncertainty(a) => uncertainty::run(a),
     }
 }

@@ -26,16 +26,17 @@ pub const EXPERIMENT: Experiment = Experiment {
     run,
     chart,
     claims: &[
-        PaperClaim { id: "clamped_tau_ks2e4", ours: |_| Ours::plain(drop_100_in(2.0e4).tau_s * 1e3) },
-        PaperClaim { id: "clamped_e_ks2e4", ours: |_| Ours::plain(drop_100_in(2.0e4).e) },
-        PaperClaim { id: "clamped_tau_ks4e4", ours: |_| Ours::plain(drop_100_in(4.0e4).tau_s * 1e3) },
-        PaperClaim { id: "clamped_e_ks4e4", ours: |_| Ours::plain(drop_100_in(4.0e4).e) },
+        PaperClaim { id: "clamped_tau_ks2e4", ours: |c| Ours::plain(drop_100_in(c, 2.0e4).tau_s * 1e3) },
+        PaperClaim { id: "clamped_e_ks2e4", ours: |c| Ours::plain(drop_100_in(c, 2.0e4).e) },
+        PaperClaim { id: "clamped_tau_ks4e4", ours: |c| Ours::plain(drop_100_in(c, 4.0e4).tau_s * 1e3) },
+        PaperClaim { id: "clamped_e_ks4e4", ours: |c| Ours::plain(drop_100_in(c, 4.0e4).e) },
     ],
 };
 
-/// The paper's ball dropped 100 inches on the strings (`ks`, N/m) of a clamped racket.
-fn drop_100_in(ks: f64) -> DropResult {
-    clamped_drop(&Ball::default(), &Strings { ks }, drop_speed(DROP_HEIGHT_100_IN))
+/// The context's ball (the paper's) dropped 100 inches on the strings (the context's
+/// [`Context::ks`] of `ks`, N/m) of a clamped racket.
+fn drop_100_in(ctx: &Context, ks: f64) -> DropResult {
+    clamped_drop(&ctx.ball, &Strings { ks: ctx.ks(ks) }, drop_speed(DROP_HEIGHT_100_IN))
 }
 
 fn ks_values() -> Vec<f64> {

@@ -25,16 +25,16 @@ pub const EXPERIMENT: Experiment = Experiment {
     run,
     chart,
     claims: &[
-        PaperClaim { id: "concrete_tau", ours: |_| Ours::plain(drop_100_in().tau_s * 1e3) },
-        PaperClaim { id: "concrete_e", ours: |_| Ours::plain(drop_100_in().e) },
+        PaperClaim { id: "concrete_tau", ours: |c| Ours::plain(drop_100_in(c).tau_s * 1e3) },
+        PaperClaim { id: "concrete_e", ours: |c| Ours::plain(drop_100_in(c).e) },
         // the p that gives e = 0.762 (the rules' upper limit of 0.745 + 0.017) by Eq 12
         PaperClaim { id: "ball_p_for_e_0_762", ours: |_| Ours::plain(2.0 / (0.745_f64 + 0.017).powi(2) - 1.0) },
     ],
 };
 
-/// The paper's ball dropped 100 inches on concrete.
-fn drop_100_in() -> DropResult {
-    concrete_drop(&Ball::default(), drop_speed(DROP_HEIGHT_100_IN))
+/// The context's ball (the paper's) dropped 100 inches on concrete.
+fn drop_100_in(ctx: &Context) -> DropResult {
+    concrete_drop(&ctx.ball, drop_speed(DROP_HEIGHT_100_IN))
 }
 
 /// Drop heights, m (2.54 m is the rules' 100 inches).

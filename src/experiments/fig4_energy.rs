@@ -34,7 +34,7 @@ pub const EXPERIMENT: Experiment = Experiment {
 /// A quantity of the Fig 4 impact, with its converged value.
 fn fig4_claim(ctx: &Context, q: fn(&ImpactResult) -> f64) -> Result<Ours> {
     let p = params(ctx);
-    Ok(Ours::new(q(&impact(&p)?), None, Some(q(&impact(&converged(p))?))))
+    Ok(Ours::new(q(&impact(&p)?), None, ctx.converged(|| Ok(q(&impact(&converged(p))?)))?))
 }
 
 /// The Fig 4 impact.
@@ -42,7 +42,7 @@ pub fn params(ctx: &Context) -> Params {
     let mut p = ctx.base_params();
     p.impact.x = 0.10;
     p.impact.r = 0.05;
-    p.strings.ks = 4.0e4;
+    p.strings.ks = ctx.ks(4.0e4);
     p
 }
 

@@ -46,5 +46,9 @@ fn dead_spot(ctx: &Context) -> Result<Ours> {
 fn node_f_vib(ctx: &Context) -> Result<Ours> {
     let p = ctx.paper_params(0.16, 4.0e4);
     let q = |r: &ImpactResult| r.f_vib_peak_pe;
-    Ok(Ours::new(read_off_curve(&p, 0.16, q)?, Some(q(&impact(&p)?)), Some(q(&impact(&converged(p))?))))
+    Ok(Ours::new(
+        read_off_curve(&p, 0.16, q)?,
+        Some(q(&impact(&p)?)),
+        ctx.converged(|| Ok(q(&impact(&converged(p))?)))?,
+    ))
 }

@@ -29,8 +29,8 @@ pub const EXPERIMENT: Experiment = Experiment {
         c
     },
     claims: &[
-        PaperClaim { id: "fig9_e_a_ei150", ours: |ctx| e_a_at_tip(ctx, 150.0) },
-        PaperClaim { id: "fig9_e_a_ei384", ours: |ctx| e_a_at_tip(ctx, 384.0) },
+        PaperClaim { id: "fig9_e_a_ei150", ours: |ctx| e_a_at_tip(ctx, ctx.frame_ei(150.0)) },
+        PaperClaim { id: "fig9_e_a_ei384", ours: |ctx| e_a_at_tip(ctx, ctx.frame_ei(384.0)) },
         PaperClaim { id: "fig9_serve_gain", ours: serve_gain },
     ],
 };
@@ -39,11 +39,11 @@ pub const EXPERIMENT: Experiment = Experiment {
 fn e_a_at_tip(ctx: &Context, ei: f64) -> Result<Ours> {
     let mut p = ctx.paper_params(X_TIP, 4.0e4);
     p.racket.ei = ei;
-    Ok(Ours::new(impact(&p)?.e_a, None, Some(impact(&converged(p))?.e_a)))
+    Ok(Ours::new(impact(&p)?.e_a, None, ctx.converged(|| Ok(impact(&converged(p))?.e_a))?))
 }
 
 /// The serve speed gain of the EI 384 frame over the EI 150 one at 6 cm, %.
 fn serve_gain(ctx: &Context) -> Result<Ours> {
-    let (a, b) = (tip_setup(ctx, 150.0)?, tip_setup(ctx, 384.0)?);
+    let (a, b) = (tip_setup(ctx, ctx.frame_ei(150.0))?, tip_setup(ctx, ctx.frame_ei(384.0))?);
     Ours::plain(gain_pct(1.0 + a.e_a, 1.0 + b.e_a))
 }

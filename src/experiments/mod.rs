@@ -24,6 +24,8 @@
 //! | `oblique_angle` | (beyond) spin and rebound angle against incidence angle | [`oblique_angle`] |
 //! | `oblique_tension` | (beyond) spin against tension, friction constant or tension-dependent | [`oblique_tension`] |
 //! | `topspin_forehand` | (beyond) a forehand brushing up: speed, launch angle, spin | [`topspin_forehand`] |
+//! | `robustness` | (ours) every claim under the declared input uncertainty | [`robustness`] |
+//! | `sensitivity` | (ours) Sobol' indices of the headline outputs per uncertain input | [`sensitivity`] |
 //!
 //! All paper experiments use the paper's numerics (`node` load, N = 39) as SPEC.md asks;
 //! `convergence` shows what that costs. Shared pieces: [`setup`] (the racket an experiment runs
@@ -56,6 +58,8 @@ pub mod oblique_angle;
 pub mod oblique_tension;
 pub mod off_axis;
 pub mod position;
+pub mod robustness;
+pub mod sensitivity;
 pub mod speeds;
 pub mod topspin_forehand;
 pub mod variant_grip;
@@ -116,6 +120,8 @@ pub fn registry() -> Vec<Experiment> {
         oblique_angle::EXPERIMENT,
         oblique_tension::EXPERIMENT,
         topspin_forehand::EXPERIMENT,
+        robustness::EXPERIMENT,
+        sensitivity::EXPERIMENT,
     ]
 }
 

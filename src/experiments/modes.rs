@@ -25,37 +25,47 @@ pub const EXPERIMENT: Experiment = Experiment {
     claims: &[
         PaperClaim {
             id: "modes_f1",
-            ours: |_| Ok(Ours::new(paper_beam().frequency_hz(1), None, Some(fine_beam().frequency_hz(1)))),
+            ours: |c| {
+                Ok(Ours::new(paper_beam(c).frequency_hz(1), None, c.converged(|| Ok(fine_beam(c).frequency_hz(1)))?))
+            },
         },
         PaperClaim {
             id: "modes_period",
-            ours: |_| Ok(Ours::new(1e3 / paper_beam().frequency_hz(1), None, Some(1e3 / fine_beam().frequency_hz(1)))),
+            ours: |c| {
+                Ok(Ours::new(
+                    1e3 / paper_beam(c).frequency_hz(1),
+                    None,
+                    c.converged(|| Ok(1e3 / fine_beam(c).frequency_hz(1)))?,
+                ))
+            },
         },
         PaperClaim {
             id: "modes_f2",
-            ours: |_| Ok(Ours::new(paper_beam().frequency_hz(2), None, Some(fine_beam().frequency_hz(2)))),
+            ours: |c| {
+                Ok(Ours::new(paper_beam(c).frequency_hz(2), None, c.converged(|| Ok(fine_beam(c).frequency_hz(2)))?))
+            },
         },
         PaperClaim { id: "modes_node", ours: node_cm },
         PaperClaim {
             id: "modes_f1_ei384",
-            ours: |_| Ours::plain(Beam::new(&Racket { ei: 384.0, ..Racket::default() }, 39).modes().frequency_hz(1)),
+            ours: |c| Ours::plain(Beam::new(&Racket { ei: c.frame_ei(384.0), ..c.racket }, 39).modes().frequency_hz(1)),
         },
     ],
 };
 
-/// The paper's beam (N = 39) and its modes.
-fn paper_beam() -> Modes {
-    Beam::new(&Racket::default(), 39).modes()
+/// The context's racket (the paper's) as the paper's beam (N = 39), and its modes.
+fn paper_beam(ctx: &Context) -> Modes {
+    Beam::new(&ctx.racket, 39).modes()
 }
 
-/// The paper's racket on a converged beam (N = 320) and its modes.
-fn fine_beam() -> Modes {
-    Beam::new(&Racket::default(), 320).modes()
+/// The context's racket on a converged beam (N = 320) and its modes.
+fn fine_beam(ctx: &Context) -> Modes {
+    Beam::new(&ctx.racket, 320).modes()
 }
 
 /// The node of the fundamental mode, cm from the tip.
-fn node_cm(_: &Context) -> Result<Ours> {
-    let beam = Beam::new(&Racket::default(), 39);
+fn node_cm(ctx: &Context) -> Result<Ours> {
+    let beam = Beam::new(&ctx.racket, 39);
     Ours::plain(100.0 * beam.modes().node_positions(1, &beam.x)[0])
 }
 

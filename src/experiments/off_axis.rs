@@ -3,7 +3,7 @@
 //! to 10 cm; theta is the rotation about the long axis at the end of the impact (Eq 7). The
 //! full impact with the N = 39 node scheme.
 
-use super::{col, impact, line, on_right, paper_label, paper_value, scaled, styled, sweep, Context, V1_OFF_AXIS};
+use super::{col, impact, line, on_right, paper_label, paper_value, scaled, styled, sweep, Context};
 use crate::error::Result;
 use crate::render::plot::{Chart, Curve, LineStyle};
 use crate::render::table::fmt_sig;
@@ -20,7 +20,7 @@ pub fn run(ctx: &Context, id: &str, x: f64) -> Result<Table> {
             .map(|i| {
                 let mut p = ctx.paper_params(x, ks);
                 p.impact.r = 0.005 * i as f64;
-                p.impact.v1 = V1_OFF_AXIS;
+                p.impact.v1 = ctx.v1_off_axis();
                 p
             })
             .collect();
@@ -104,6 +104,6 @@ pub fn chart(t: &Table, title: &str, paper: Vec<Curve>) -> Chart {
 pub fn theta_r4(ctx: &Context, x: f64, ks: f64) -> Result<f64> {
     let mut p = ctx.paper_params(x, ks);
     p.impact.r = 0.04;
-    p.impact.v1 = V1_OFF_AXIS;
+    p.impact.v1 = ctx.v1_off_axis();
     Ok(impact(&p)?.theta_end_deg)
 }

@@ -120,5 +120,9 @@ pub fn sweep_curves(x: Vec<f64>, t: &Table) -> Vec<Curve> {
 /// A centre quantity three ways: read off the node curve, at node 9, converged.
 pub fn centre_three(ctx: &Context, ks: f64, q: fn(&ImpactResult) -> f64) -> Result<Ours> {
     let p = ctx.paper_params(CENTRE_X, ks);
-    Ok(Ours::new(read_off_curve(&p, CENTRE_X, q)?, Some(q(&impact(&p)?)), Some(q(&impact(&converged(p))?))))
+    Ok(Ours::new(
+        read_off_curve(&p, CENTRE_X, q)?,
+        Some(q(&impact(&p)?)),
+        ctx.converged(|| Ok(q(&impact(&converged(p))?)))?,
+    ))
 }

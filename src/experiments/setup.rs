@@ -2,7 +2,7 @@
 //! parameters on them, and the helpers that run impacts the way the paper's figures do.
 
 use crate::error::{Error, Result};
-use crate::params::{Ball, LoadRule, Params, Racket};
+use crate::params::{Ball, LoadRule, Params, Racket, SolverKind};
 use crate::render::plot::{Chart, LineStyle};
 use crate::solve::{simulate, ImpactResult};
 
@@ -23,6 +23,17 @@ pub struct Context {
     /// The racket's name when it is not the paper's (`figures --racket`): the figures say it in
     /// their titles and leave out the paper's markers, which belong to the paper's racket.
     pub racket_name: Option<String>,
+    /// A factor on every string stiffness the experiments use (1: the paper's tension
+    /// calibration; the `robustness` experiment draws it).
+    pub ks_factor: f64,
+    /// A factor on the 30 m/s of Figs 7-8 (1: the paper's).
+    pub v1_factor: f64,
+    /// The solver of every impact: the explicit reference (`fd`) for the paper's numbers; the
+    /// `robustness` experiment samples with the modal one.
+    pub solver: SolverKind,
+    /// Whether the claims also compute their converged counterpart (`hat` load, N = 320):
+    /// the report's; off while the `robustness` experiment samples.
+    pub converged_too: bool,
 }
 
 impl Default for Context {
@@ -35,7 +46,15 @@ impl Context {
     /// The paper's racket and ball.
     pub fn paper() -> Self {
         let p = Params::paper();
-        Context { racket: p.racket, ball: p.ball, racket_name: None }
+        Context {
+            racket: p.racket,
+            ball: p.ball,
+            racket_name: None,
+            ks_factor: 1.0,
+            v1_factor: 1.0,
+            solver: p.numerics.solver,
+            converged_too: true,
+        }
     }
 
     /// Another racket and ball. The paper's figures place impacts along the whole length, as
@@ -44,7 +63,7 @@ impl Context {
     pub fn with_racket(mut racket: Racket, ball: Ball) -> Self {
         racket.head_length = None;
         racket.half_width = racket.half_width.max(Racket::default().half_width);
-        Context { racket, ball, racket_name: None }
+        Context { racket, ball, ..Context::paper() }
     }
 
     /// The same context naming its racket (not the paper's).
@@ -69,7 +88,28 @@ impl Context {
         let mut p = Params::paper();
         p.racket = self.racket;
         p.ball = self.ball;
+        p.numerics.solver = self.solver;
         p
+    }
+
+    /// The string stiffness standing for the paper's `paper_ks` (N/m): `paper_ks` times
+    /// [`Context::ks_factor`].
+    pub fn ks(&self, paper_ks: f64) -> f64 {
+        paper_ks * self.ks_factor
+    }
+
+    /// A claim's converged counterpart `f()` where [`Context::converged_too`], else `None`.
+    pub fn converged(&self, f: impl FnOnce() -> Result<f64>) -> Result<Option<f64>> {
+        if self.converged_too {
+            f().map(Some)
+        } else {
+            Ok(None)
+        }
+    }
+
+    /// The incident speed of Figs 7-8, m/s: [`V1_OFF_AXIS`] times [`Context::v1_factor`].
+    pub fn v1_off_axis(&self) -> f64 {
+        V1_OFF_AXIS * self.v1_factor
     }
 
     /// The bending stiffness standing for the paper's `paper_ei` (N m^2) on this racket: the
@@ -81,12 +121,12 @@ impl Context {
     }
 
     /// This racket, ball and the paper's numerics (node load, N = 39) with an impact on the
-    /// long axis.
+    /// long axis, the strings at [`Context::ks`] of `ks`.
     pub fn paper_params(&self, x: f64, ks: f64) -> Params {
         let mut p = self.base_params();
         p.impact.x = x;
         p.impact.r = 0.0;
-        p.strings.ks = ks;
+        p.strings.ks = self.ks(ks);
         p
     }
 }

@@ -16,7 +16,6 @@
 
 use super::{
     fig6_string_stiffness::X_TIP, impact, line, read_off_curve, Context, Experiment, Ours, PaperClaim, CENTRE_X,
-    V1_OFF_AXIS,
 };
 use crate::error::Result;
 use crate::params::{ks_from_tension_lb, Params};
@@ -117,7 +116,7 @@ pub fn centre_setup(ctx: &Context, ks: f64) -> Result<Setup> {
     let p = ctx.paper_params(CENTRE_X, ks);
     let mut q = p;
     q.impact.r = 0.04;
-    q.impact.v1 = V1_OFF_AXIS;
+    q.impact.v1 = ctx.v1_off_axis();
     Ok(Setup {
         e_a: read_off_curve(&p, CENTRE_X, |r| r.e_a)?,
         tau_s: read_off_curve(&p, CENTRE_X, |r| r.tau_s)?,
@@ -132,7 +131,7 @@ pub fn tip_setup(ctx: &Context, ei: f64) -> Result<Setup> {
     p.racket.ei = ei;
     let r = impact(&p)?;
     p.impact.r = 0.04;
-    p.impact.v1 = V1_OFF_AXIS;
+    p.impact.v1 = ctx.v1_off_axis();
     Ok(Setup { e_a: r.e_a, tau_s: r.tau_s, theta_deg: impact(&p)?.theta_end_deg })
 }
 

@@ -6,8 +6,15 @@
 use serde::{Deserialize, Serialize};
 
 use super::spec::{declare_params, Check, FlagValue, ParamSpec};
+use super::uncertainty::Dist;
 use super::{Frame, Grip, LoadRule, Params, SolverKind, StringLaw};
 use crate::error::{Error, Result};
+
+/// The rules' largest and smallest coefficient of restitution of a ball dropped 100 in on
+/// concrete, `0.745 +- 0.017` (paper p. 3): the ends of the declared range of `p` (Eq 12).
+pub const E_MAX: f64 = 0.745 + 0.017;
+/// See [`E_MAX`].
+pub const E_MIN: f64 = 0.745 - 0.017;
 
 declare_params! {
     /// Impact distance from the tip, m (0 <= x <= length)
@@ -18,34 +25,43 @@ declare_params! {
         what "off-axis distance", unit "m", column "r_m", rule;
     /// String-plane stiffness, N/m (1 ..= 1e12)
     KS ks: f64 = "ks" at strings.ks,
-        what "string-plane stiffness", unit "N/m", column "ks_n_per_m", within(1.0, 1.0e12), usual(5.0e3, 2.0e5);
+        what "string-plane stiffness", unit "N/m", column "ks_n_per_m", within(1.0, 1.0e12), usual(5.0e3, 2.0e5),
+        uncertain(Dist::Uniform { lo: 3.6e4, hi: 4.4e4 }, 4.0e4, "p. 3, String parameters: k_s is 'typically about 10 %' larger at large deflection, so the k_s of a tension (60 lb = 4e4 N/m, the SPEC.md calibration) is taken as known to +-10 %; a claim takes it as one factor on every k_s it uses");
     /// Frame bending stiffness EI, N m^2 (1e-2 ..= 1e9)
     EI ei: f64 = "ei" at racket.ei,
-        what "bending stiffness EI", unit "N m^2", column "ei_n_m2", within(1.0e-2, 1.0e9);
+        what "bending stiffness EI", unit "N m^2", column "ei_n_m2", within(1.0e-2, 1.0e9),
+        uncertain(Dist::Uniform { lo: 150.0 * 0.9 * 0.9, hi: 150.0 * 1.1 * 1.1 }, 150.0, "p. 4, Racket parameters: the fundamental is 'typically about 125 Hz'; f1 within +-10 % (112.5-137.5 Hz, assumed for 'about') is EI = 150 (f1/125)^2 N m^2");
     /// Racket mass, kg (1e-3 ..= 1e6)
     MASS mass: f64 = "mass" at racket.mass,
-        what "racket mass", unit "kg", column "mass_kg", within(1.0e-3, 1.0e6), usual(0.15, 1.0);
+        what "racket mass", unit "kg", column "mass_kg", within(1.0e-3, 1.0e6), usual(0.15, 1.0),
+        uncertain(Dist::Uniform { lo: 0.32, hi: 0.36 }, 0.34, "assumed: the paper's 340 g racket (p. 4) +-20 g, the spread of plausible rackets of its length");
     /// Racket length, m (0.05 ..= 5)
     LENGTH length: f64 = "length" at racket.length,
-        what "racket length", unit "m", column "length_m", within(0.05, 5.0), usual(0.4, 1.0);
+        what "racket length", unit "m", column "length_m", within(0.05, 5.0), usual(0.4, 1.0),
+        uncertain(Dist::Uniform { lo: 0.686, hi: 0.737 }, 0.71, "assumed: 27 in (standard) to 29 in (the rules' maximum), about the paper's 71 cm (p. 4)");
     /// Moment of inertia about the long axis, kg m^2 (1e-7 ..= 1e4)
     IX ix: f64 = "ix" at racket.ix,
-        what "moment of inertia about the long axis", unit "kg m^2", column "ix_kg_m2", within(1.0e-7, 1.0e4), usual(3.0e-4, 6.0e-3);
+        what "moment of inertia about the long axis", unit "kg m^2", column "ix_kg_m2", within(1.0e-7, 1.0e4), usual(3.0e-4, 6.0e-3),
+        uncertain(Dist::Uniform { lo: 0.0012, hi: 0.0018 }, 0.0015, "p. 4: I_x = 0.0015 kg m^2, 'typical for such a racket (Brody 1985)'; assumed +-20 %");
     /// Half-width of the string face, m (1e-3 ..= 1): the largest |r|
     HALF_WIDTH half_width: f64 = "half-width" at racket.half_width,
         what "string-face half-width", unit "m", column "half_width_m", within(1.0e-3, 1.0), usual(0.05, 0.2);
     /// Ball mass, kg (1e-4 ..= 10)
     MB mb: f64 = "mb" at ball.mass,
-        what "ball mass", unit "kg", column "mb_kg", within(1.0e-4, 10.0), usual(0.02, 0.2);
+        what "ball mass", unit "kg", column "mb_kg", within(1.0e-4, 10.0), usual(0.02, 0.2),
+        uncertain(Dist::Uniform { lo: 0.0558, hi: 0.0576 }, 0.057, "p. 3, Ball parameters: the rules' 'mass of 56.7 +- 0.9 g' (every legal ball; the paper computes with 57 g)");
     /// Ball compression stiffness k1, N/m (1 ..= 1e9)
     K1 k1: f64 = "k1" at ball.k1,
-        what "ball compression stiffness", unit "N/m", column "k1_n_per_m", within(1.0, 1.0e9), usual(5.0e3, 2.0e5);
+        what "ball compression stiffness", unit "N/m", column "k1_n_per_m", within(1.0, 1.0e9), usual(5.0e3, 2.0e5),
+        uncertain(Dist::Uniform { lo: 2.4e4, hi: 3.6e4 }, 3.0e4, "assumed: the paper gives no range (p. 3, 'it is assumed that k1 = 3e4 N/m'); +-20 %");
     /// Ball hysteresis exponent p (1 < p <= 10)
     P p: f64 = "p" at ball.p,
-        what "hysteresis exponent", unit "", column "p", rule, usual(1.2, 5.0);
+        what "hysteresis exponent", unit "", column "p", rule, usual(1.2, 5.0),
+        uncertain(Dist::Uniform { lo: 2.0 / (E_MAX * E_MAX) - 1.0, hi: 2.0 / (E_MIN * E_MIN) - 1.0 }, 2.55, "p. 3, Ball parameters: the rules' 'e = 0.745 +- 0.017' for a 100-inch drop on concrete through Eq 12, p = 2/e^2 - 1 (2.444 at e 0.762, 2.774 at e 0.728), uniform in p");
     /// Incident ball speed, m/s (1e-3 ..= 1e3)
     V1 v1: f64 = "v1" at impact.v1,
-        what "incident ball speed", unit "m/s", column "v1_m_per_s", within(1.0e-3, 1.0e3), usual(0.0, 70.0);
+        what "incident ball speed", unit "m/s", column "v1_m_per_s", within(1.0e-3, 1.0e3), usual(0.0, 70.0),
+        uncertain(Dist::Uniform { lo: 27.0, hi: 33.0 }, 30.0, "assumed: the 30 m/s relative speed of Figs 7-8 (p. 6) +-10 %; the model is linear in v1, so only absolute rotations and forces depend on it");
     /// Number of beam segments N (4..=400)
     SEGMENTS segments: usize = "segments" at numerics.segments,
         what "number of beam segments", unit "", column "segments", rule;
@@ -125,6 +141,11 @@ pub const USUAL_F1_HZ: (f64, f64) = (60.0, 300.0);
 /// Largest twist at the end of the impact the small-angle model (Eq 7) is meant for, degrees.
 pub const SMALL_TWIST_DEG: f64 = 15.0;
 
+/// The parameters with a declared uncertainty, in the order of the flags.
+pub fn uncertain() -> impl Iterator<Item = &'static ParamSpec> {
+    ALL.iter().filter(|s| s.uncertainty.is_some())
+}
+
 /// The declaration of `key`, if it is a parameter.
 pub fn find(key: &str) -> Option<&'static ParamSpec> {
     ALL.iter().find(|s| s.key == key)
@@ -163,6 +184,32 @@ mod tests {
             assert_eq!(find(spec.key), Some(spec));
         }
         assert_eq!(Overrides::KEYS.to_vec(), ALL.iter().map(|s| s.key).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn declared_uncertainties_are_about_the_paper_values_and_valid() {
+        let paper = Params::paper();
+        let keys: Vec<&str> = uncertain().map(|s| s.key).collect();
+        assert_eq!(keys, ["ks", "ei", "mass", "length", "ix", "mb", "k1", "p", "v1"]);
+        for spec in uncertain() {
+            let u = spec.uncertainty.unwrap();
+            let (lo, hi) = u.dist.extent();
+            assert!(lo < u.nominal && u.nominal < hi, "{}: {lo} {} {hi}", spec.key, u.nominal);
+            assert!(!u.source.is_empty());
+            if spec.key != V1.key {
+                assert_eq!(Some(u.nominal), value_number(spec.key, &paper), "{}", spec.key);
+            }
+            for v in [lo, hi] {
+                let mut p = paper;
+                let mut o = Overrides::default();
+                o.set(spec.key, &v.to_string()).unwrap();
+                o.apply(&mut p);
+                p.validate().unwrap();
+            }
+        }
+        // p through Eq 12 at the rules' e: e = sqrt(2/(p+1))
+        let Some(Dist::Uniform { lo, hi }) = P.uncertainty.map(|u| u.dist) else { panic!() };
+        assert!(((2.0 / (lo + 1.0)).sqrt() - 0.762).abs() < 1e-12 && ((2.0 / (hi + 1.0)).sqrt() - 0.728).abs() < 1e-12);
     }
 
     #[test]

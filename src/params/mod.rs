@@ -17,6 +17,7 @@
 //! - [`overrides`]: the `--config` file.
 //! - [`limits`]: the most work a command accepts (sweep sizes, series rows, comparisons).
 //! - [`used`]: which parameters an impact reads (a value given for one it does not is refused).
+//! - [`uncertainty`]: the distribution and source of a parameter's uncertainty.
 
 use serde::{Deserialize, Serialize};
 
@@ -30,6 +31,7 @@ pub mod overrides;
 pub mod physical;
 pub mod spec;
 pub mod used;
+pub mod uncertainty;
 pub mod variants;
 
 pub use keys::Overrides;

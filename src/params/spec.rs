@@ -25,6 +25,9 @@ pub struct ParamSpec {
     /// The range real rackets, balls and shots lie in, `(lo, hi)` in the parameter's unit:
     /// a value outside it is valid (it runs) but earns a warning ([`ParamSpec::unusual`]).
     pub usual: Option<(f64, f64)>,
+    /// How uncertain the paper's value is, with the source of that (the inputs of the
+    /// `robustness` experiment); `None` for a parameter the paper fixes by choice.
+    pub uncertainty: Option<super::uncertainty::Uncertainty>,
 }
 
 /// The kind of value a parameter takes.
@@ -238,13 +241,16 @@ pub(crate) fn one_of<T: Copy>(key: &'static str, text: &str, choices: &[(T, &str
 /// Each entry: the doc line (the flag's help), then
 /// `CONST field: Type = "key" at place.in.params, what "...", unit "...", column "...", check;`
 /// where `check` is `within(lo, hi)`, `rule` or `choice`, optionally followed by
-/// `, usual(lo, hi)`: the range real equipment and shots lie in (outside it: a warning).
+/// `, usual(lo, hi)`: the range real equipment and shots lie in (outside it: a warning), and
+/// optionally by `, uncertain(dist, nominal, "source")`: the paper value's uncertainty
+/// ([`Uncertainty`](super::uncertainty::Uncertainty)).
 macro_rules! declare_params {
     ($(
         #[doc = $doc:literal]
         $konst:ident $field:ident: $ty:ty = $key:literal at $($place:ident).+,
         what $what:literal, unit $unit:literal, column $column:literal, $check:ident $(($lo:expr, $hi:expr))?
-        $(, usual($ulo:expr, $uhi:expr))?;
+        $(, usual($ulo:expr, $uhi:expr))?
+        $(, uncertain($dist:expr, $nominal:expr, $source:literal))?;
     )*) => {
         $(
             #[doc = concat!("The `", $key, "` parameter:", $doc)]
@@ -257,6 +263,7 @@ macro_rules! declare_params {
                 values: <$ty as FlagValue>::VALUES,
                 check: declare_params!(@check $check $(($lo, $hi))?),
                 usual: declare_params!(@usual $(($ulo, $uhi))?),
+                uncertainty: declare_params!(@uncertain $(($dist, $nominal, $source))?),
             };
         )*
 
@@ -351,6 +358,10 @@ macro_rules! declare_params {
     (@check choice) => { Check::Choice };
     (@usual ($lo:expr, $hi:expr)) => { Some(($lo, $hi)) };
     (@usual) => { None };
+    (@uncertain ($dist:expr, $nominal:expr, $source:literal)) => {
+        Some(super::uncertainty::Uncertainty { dist: $dist, nominal: $nominal, source: $source })
+    };
+    (@uncertain) => { None };
 }
 
 pub(crate) use declare_params;

@@ -1,12 +1,15 @@
 //! Studies built from many impacts, the library logic behind the commands that run them:
 //! [`sweep`] (the cartesian product of any parameters, streamed), [`map`] (one impact per
 //! point of the string face) and [`speed`] (outgoing ball speeds for a swing, compared across
-//! tensions or rackets). [`Sources`] resolves a command's parameters from a racket, a config
+//! tensions or rackets), [`sensitivity`] (Sobol'/Saltelli uncertainty propagation and global
+//! sensitivity for any model). [`Sources`] resolves a command's parameters from a racket, a config
 //! file and the flags.
 
 pub mod map;
+pub mod sensitivity;
 pub mod speed;
 pub mod sweep;
+pub mod uncertainty;
 
 use std::path::{Path, PathBuf};
 

@@ -1,0 +1,195 @@
+//! `uncertainty`: an impact's result fields under uncertain inputs (`--vary KEY=DIST`), or every
+//! paper claim under the declared input uncertainty (`--claims`): mean, sd, q05, q50, q95 and
+//! Sobol' indices with bootstrap intervals.
+
+use std::path::PathBuf;
+
+use clap::Args;
+use racket_impact::experiments::robustness;
+use racket_impact::params::keys;
+use racket_impact::study::sensitivity::Design;
+use racket_impact::study::uncertainty::{summary_json, Study, DEFAULT_SAMPLES};
+use racket_impact::{Error, Result};
+
+use super::common::{given_keys, out, warn_params, Common, Format, Progress};
+use super::overrides::SimulateKeys;
+
+#[derive(Args, Debug)]
+pub struct UncertaintyArgs {
+    #[command(flatten)]
+    pub common: Common<SimulateKeys>,
+    /// An uncertain input, KEY=DIST (repeatable): KEY any real-valued parameter, DIST
+    /// uniform:LO:HI, normal:MEAN:SD or loguniform:LO:HI; every sample must be a valid value
+    #[arg(long = "vary", value_name = "KEY=DIST")]
+    pub vary: Vec<String>,
+    /// Base samples N of the Saltelli design, 1..=65536: N (d + 2) impacts for d inputs [default: 256; with --claims 128]
+    #[arg(long)]
+    pub samples: Option<u64>,
+    /// Seed of the scrambled Sobol' sequence and of the bootstrap [default: 0; with --claims 2000]
+    #[arg(long)]
+    pub seed: Option<u32>,
+    /// Write the output (in --format) to this file, atomically, instead of standard output
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Every paper claim under the declared uncertainty of the paper's inputs (the robustness
+    /// experiment); takes only --samples, --seed, --format and --out
+    #[arg(long)]
+    pub claims: bool,
+}
+
+/// The long help: what is computed and the declared uncertainties `--claims` uses.
+pub fn long_about() -> String {
+    let declared: Vec<String> = keys::uncertain()
+        .filter_map(|s| s.uncertainty.map(|u| format!("{} ~ {} ({})", s.key, u.dist.text(), u.source)))
+        .collect();
+    format!(
+        "An impact's result fields under uncertain inputs, or every paper claim under the declared uncertainty\n\n\
+         Every simulate option sets the fixed parameters; each --vary KEY=DIST draws one input. The impact \
+         runs N (d + 2) times over a Saltelli design (scrambled Sobol' sequence, deterministic for --seed) on \
+         all cores, with the modal solver unless --solver is given or a hand grip or stiffening strings need \
+         fd. For every numeric result field: mean, sd, q05, q50, q95, and each input's first-order (Saltelli \
+         2010) and total (Jansen) Sobol' index with 95 % bootstrap intervals. --format json gives \
+         {{\"samples\", \"seed\", \"inputs\", \"outputs\": {{field: {{\"mean\", \"sd\", \"q05\", \"q50\", \"q95\", \
+         \"first_order\", \"total_order\", \"first_order_ci\", \"total_order_ci\"}}}}}}. Example: racket-impact \
+         uncertainty --x 0.06 --vary ks=uniform:2e4:6e4 --vary mb=normal:0.057:0.0005 --format json\n\n\
+         --claims: each paper claim (golden/paper_claims.csv) under the uncertainties declared with the \
+         parameters, drawn as factors on the paper's values: {}",
+        declared.join("; ")
+    )
+}
+
+/// Run the study and write its output.
+pub fn run(a: UncertaintyArgs) -> Result<()> {
+    if a.claims {
+        return run_claims(a);
+    }
+    let samples = a.samples.unwrap_or(DEFAULT_SAMPLES);
+    Design::new(samples, a.vary.len().max(1), 0)?; // the count first, before anything else
+    let sources = a.common.sources();
+    let given = sources.flags.clone().or(racket_impact::study::config_file(sources.config.as_deref())?);
+    for text in &a.vary {
+        let key = text.split_once('=').map_or(text.as_str(), |(k, _)| k).trim();
+        if given_keys(&sources.flags).contains(&key) {
+            return Err(Error::invalid("vary", text, format!("{key} is both fixed (--{key}) and varied; give one")));
+        }
+    }
+    let mut base = sources.params()?;
+    a.common.check_used([&base])?;
+    if let Some(solver) = racket_impact::study::sweep::default_solver(&given, &[]) {
+        base.numerics.solver = solver;
+    }
+    let study = Study::new(base, &a.vary, samples, a.seed.unwrap_or(0))?;
+    if let Some(path) = &a.out {
+        racket_impact::render::io::check_output_dir("out", path)?;
+    }
+    let progress = Progress::new(study.design.runs() as u64);
+    let outputs = study.run(|done| progress.update(done as u64))?;
+    drop(progress);
+    let text = match a.common.format {
+        Format::Json => json_text(&study.json(&outputs))?,
+        Format::Csv => study.csv(&outputs),
+        Format::Text => study.text(&outputs),
+    };
+    emit(a.out.as_ref(), &text)?;
+    warn_params([&study.base]);
+    Ok(())
+}
+
+/// `--claims`: the robustness table of every paper claim.
+fn run_claims(a: UncertaintyArgs) -> Result<()> {
+    let refuse = |what: String| {
+        Err(Error::invalid("claims", what, "--claims uses the paper's inputs and their declared uncertainty; it takes only --samples, --seed, --format and --out"))
+    };
+    if let Some(v) = a.vary.first() {
+        return refuse(format!("--vary {v}"));
+    }
+    if let Some(k) = given_keys(&a.common.overrides.0).first() {
+        return refuse(format!("--{k}"));
+    }
+    if a.common.racket.is_some() || a.common.config.is_some() {
+        return refuse(if a.common.racket.is_some() { "--racket".into() } else { "--config".into() });
+    }
+    let samples = a.samples.unwrap_or(robustness::SAMPLES);
+    let seed = a.seed.unwrap_or(robustness::SEED);
+    let inputs = robustness::inputs();
+    let design = Design::new(samples, inputs.len(), seed)?;
+    if let Some(path) = &a.out {
+        racket_impact::render::io::check_output_dir("out", path)?;
+    }
+    let progress = Progress::new(design.runs() as u64);
+    let rows = robustness::study(&racket_impact::experiments::Context::paper(), samples, seed, false, |done| {
+        progress.update(done as u64)
+    })?;
+    drop(progress);
+    let table = robustness::table(&rows)?;
+    let text = match a.common.format {
+        Format::Csv => table.to_csv(),
+        Format::Text => claims_text(&rows, samples, seed, design.runs()),
+        Format::Json => {
+            let keys: Vec<&str> = inputs.iter().map(|s| s.key).collect();
+            let mut outputs = serde_json::Map::new();
+            for r in &rows {
+                let mut v = summary_json(&r.summary, &keys);
+                v["unit"] = r.claim.unit.clone().into();
+                v["paper"] = r.claim.paper_value()?.into();
+                v["band"] = serde_json::json!([r.band.0, r.band.1]);
+                v["nominal"] = r.nominal.into();
+                v["numerical"] = r.numerical.into();
+                v["verdict"] = r.verdict.name().into();
+                outputs.insert(r.claim.id.clone(), v);
+            }
+            let inputs: Vec<serde_json::Value> = inputs
+                .iter()
+                .filter_map(|s| {
+                    s.uncertainty.map(|u| {
+                        serde_json::json!({"key": s.key, "dist": u.dist.text(), "nominal": u.nominal, "source": u.source})
+                    })
+                })
+                .collect();
+            json_text(&serde_json::json!({
+                "samples": samples, "seed": seed, "runs": design.runs(), "inputs": inputs, "outputs": outputs
+            }))?
+        }
+    };
+    emit(a.out.as_ref(), &text)
+}
+
+/// One line per claim: nominal, q05-q95, verdict, the two inputs it hinges on.
+fn claims_text(rows: &[robustness::ClaimRobustness], samples: u64, seed: u32, runs: usize) -> String {
+    use racket_impact::params::spec::sig;
+    let mut s = format!(
+        "{samples} base samples x 11 = {runs} evaluations of every claim (modal solver), seed {seed}\n\
+         {:<32} {:>10} {:>10} {:>10} {:>10}  {:<11} top inputs (total index)\n",
+        "claim", "nominal", "q05", "q50", "q95", "verdict"
+    );
+    for r in rows {
+        let top: Vec<String> =
+            robustness::top_two(&r.summary).iter().map(|(k, v)| format!("{k} {}", sig(*v, 2))).collect();
+        s.push_str(&format!(
+            "{:<32} {:>10} {:>10} {:>10} {:>10}  {:<11} {}\n",
+            r.claim.id,
+            sig(r.nominal, 4),
+            sig(r.summary.q05, 4),
+            sig(r.summary.q50, 4),
+            sig(r.summary.q95, 4),
+            r.verdict.name(),
+            top.join(", ")
+        ));
+    }
+    s
+}
+
+fn json_text(v: &serde_json::Value) -> Result<String> {
+    Ok(format!("{}\n", serde_json::to_string_pretty(v).map_err(|e| Error::io("<json>", e))?))
+}
+
+/// To the file (atomically) or standard output.
+fn emit(path: Option<&PathBuf>, text: &str) -> Result<()> {
+    match path {
+        Some(p) => racket_impact::render::io::write_atomic(p, text.as_bytes()),
+        None => {
+            out!("{text}");
+            Ok(())
+        }
+    }
+}

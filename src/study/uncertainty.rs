@@ -1,0 +1,340 @@
+//! `uncertainty`: one impact's result fields under uncertain inputs. Any numeric parameter is
+//! varied by a distribution (`--vary ks=uniform:2e4:6e4`), the impact is run over a Saltelli
+//! design ([`sensitivity`](super::sensitivity)) in parallel, and every numeric result field is
+//! summarised: mean, sd, q05, q50, q95, and the first-order and total Sobol' index of each input
+//! with bootstrap intervals.
+
+use serde_json::{json, Map, Value};
+
+use super::sensitivity::{self, Design, Summary};
+use crate::error::{Error, Result};
+use crate::params::spec::{sig, Check, Values};
+use crate::params::uncertainty::Dist;
+use crate::params::{keys, Overrides, Params};
+use crate::solve::outcome::{Get, FIELDS};
+use crate::solve::simulate;
+
+/// Base samples unless given (a power of two, as the Sobol' sequence likes).
+pub const DEFAULT_SAMPLES: u64 = 256;
+
+/// One varied input.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Input {
+    /// The parameter key.
+    pub key: &'static str,
+    /// Its distribution.
+    pub dist: Dist,
+}
+
+/// Parse `KEY=DIST` and check it against the parameter's declaration and the base parameters:
+/// a known, real-valued key whose every sample (the distribution's [`extent`](Dist::extent))
+/// is a valid value.
+pub fn parse_vary(text: &str, base: &Params) -> Result<Input> {
+    let (key, dist) = text.split_once('=').ok_or_else(|| {
+        Error::invalid("vary", text, "give KEY=DIST, DIST uniform:LO:HI, normal:MEAN:SD or loguniform:LO:HI")
+    })?;
+    let spec = keys::find(key.trim()).ok_or_else(|| {
+        Error::invalid("vary", text, format!("unknown parameter '{key}' (known: {})", Overrides::KEYS.join(", ")))
+    })?;
+    if spec.values != Values::Number {
+        let numeric: Vec<&str> = keys::ALL.iter().filter(|s| s.values == Values::Number).map(|s| s.key).collect();
+        return Err(Error::invalid(
+            "vary",
+            text,
+            format!("only real-valued parameters can be varied ({})", numeric.join(", ")),
+        ));
+    }
+    let dist = Dist::parse(spec.key, dist)?;
+    let (lo, hi) = dist.extent();
+    let unit = if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) };
+    if let Check::Within(min, max) = spec.check {
+        if lo < min || hi > max {
+            return Err(Error::invalid(
+                spec.key,
+                dist.text(),
+                format!(
+                    "samples reach {}..{}{unit}; {} must satisfy {min:e} <= {} <= {max:e}{unit}",
+                    sig(lo, 6),
+                    sig(hi, 6),
+                    spec.what,
+                    spec.key
+                ),
+            ));
+        }
+    }
+    // a parameter checked by a rule of its own (the impact point, p, ...): both ends must pass it
+    for v in [lo, hi] {
+        let mut p = *base;
+        let mut o = Overrides::default();
+        o.set(spec.key, &v.to_string())?;
+        o.apply(&mut p);
+        p.validate().map_err(|e| {
+            Error::invalid(spec.key, dist.text(), format!("samples reach {}{unit}, where {e}", sig(v, 6)))
+        })?;
+    }
+    Ok(Input { key: spec.key, dist })
+}
+
+/// One output's summary as JSON: mean, sd, q05, q50, q95 and, keyed by input, `first_order`,
+/// `total_order`, `first_order_ci` and `total_order_ci` (`[lo, hi]`); an index of an output
+/// that does not vary is null.
+pub fn summary_json(s: &Summary, inputs: &[&str]) -> Value {
+    let per_input = |f: &dyn Fn(usize) -> Value| -> Value {
+        Value::Object(inputs.iter().enumerate().map(|(k, key)| (key.to_string(), f(k))).collect())
+    };
+    json!({
+        "mean": s.mean, "sd": s.sd, "q05": s.q05, "q50": s.q50, "q95": s.q95,
+        "first_order": per_input(&|k| json!(s.first[k].value)),
+        "total_order": per_input(&|k| json!(s.total[k].value)),
+        "first_order_ci": per_input(&|k| json!([s.first[k].lo, s.first[k].hi])),
+        "total_order_ci": per_input(&|k| json!([s.total[k].lo, s.total[k].hi])),
+    })
+}
+
+/// The study: base parameters, varied inputs and the design.
+#[derive(Debug, Clone)]
+pub struct Study {
+    /// The parameters every run starts from.
+    pub base: Params,
+    /// The varied inputs, in the order given.
+    pub inputs: Vec<Input>,
+    /// The design.
+    pub design: Design,
+}
+
+/// A result field summarised: its key, unit and value.
+pub type OutputField = (&'static str, &'static str, fn(&crate::ImpactResult) -> f64);
+
+/// One output's summary, named.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Output {
+    /// The result field (`e_a`).
+    pub key: &'static str,
+    /// Its unit.
+    pub unit: &'static str,
+    /// The summary.
+    pub summary: Summary,
+}
+
+impl Study {
+    /// Check the sample count first (nothing allocated before), then each `--vary` (known,
+    /// real-valued, in range, given once).
+    pub fn new(base: Params, varies: &[String], samples: u64, seed: u32) -> Result<Study> {
+        if varies.is_empty() {
+            return Err(Error::invalid("vary", "(none)", "give at least one --vary KEY=DIST"));
+        }
+        let design = Design::new(samples, varies.len(), seed)?;
+        let mut inputs: Vec<Input> = Vec::with_capacity(varies.len());
+        for text in varies {
+            let input = parse_vary(text, &base)?;
+            if inputs.iter().any(|i| i.key == input.key) {
+                return Err(Error::invalid(
+                    "vary",
+                    text,
+                    format!("{} is varied twice; vary each parameter once", input.key),
+                ));
+            }
+            inputs.push(input);
+        }
+        Ok(Study { base, inputs, design })
+    }
+
+    /// Whether the runs are oblique or spinning (their oblique result fields are then outputs).
+    fn is_oblique(&self) -> bool {
+        !self.base.oblique.is_normal()
+            || self.inputs.iter().any(|i| i.key == keys::ANGLE_DEG.key || i.key == keys::SPIN_RPM.key)
+    }
+
+    /// The result fields summarised: the numeric sweep columns.
+    pub fn output_fields(&self) -> Vec<OutputField> {
+        let oblique = self.is_oblique();
+        FIELDS
+            .iter()
+            .filter(|f| f.sweep && (oblique || !f.is_oblique()))
+            .filter_map(|f| match f.get {
+                Get::Number(g) => Some((f.key, f.unit, g)),
+                Get::Flag(_) => None,
+            })
+            .collect()
+    }
+
+    /// The parameters of one run with the input values `x`.
+    pub fn params_at(&self, x: &[f64]) -> Result<Params> {
+        let mut o = Overrides::default();
+        for (input, v) in self.inputs.iter().zip(x) {
+            o.set(input.key, &v.to_string())?;
+        }
+        let mut p = self.base;
+        o.apply(&mut p);
+        p.validate()?;
+        Ok(p)
+    }
+
+    /// Run the design (all cores) and summarise every output; `progress` gets the runs done.
+    pub fn run(&self, progress: impl FnMut(usize)) -> Result<Vec<Output>> {
+        let fields = self.output_fields();
+        let dists: Vec<Dist> = self.inputs.iter().map(|i| i.dist).collect();
+        let rows = sensitivity::run(
+            &self.design,
+            &dists,
+            |x| {
+                let r = simulate(&self.params_at(x)?)?;
+                Ok(fields.iter().map(|(_, _, g)| g(&r)).collect())
+            },
+            progress,
+        )?;
+        let summaries = sensitivity::summarise_all(&self.design, &rows);
+        Ok(fields.iter().zip(summaries).map(|(&(key, unit, _), summary)| Output { key, unit, summary }).collect())
+    }
+
+    /// The JSON document: `{"samples", "seed", "inputs": [...], "outputs": {field: {...}}}`
+    /// (an index of an output that does not vary is null).
+    pub fn json(&self, outputs: &[Output]) -> Value {
+        let inputs: Vec<Value> = self
+            .inputs
+            .iter()
+            .map(|i| json!({"key": i.key, "dist": i.dist.text(), "column": keys::find(i.key).map(|s| s.column)}))
+            .collect();
+        let keys: Vec<&str> = self.inputs.iter().map(|i| i.key).collect();
+        let mut out = Map::new();
+        for o in outputs {
+            let mut v = summary_json(&o.summary, &keys);
+            v["unit"] = o.unit.into();
+            out.insert(o.key.to_string(), v);
+        }
+        json!({
+            "samples": self.design.samples(),
+            "seed": self.design.seed(),
+            "runs": self.design.runs(),
+            "confidence": sensitivity::CONFIDENCE,
+            "inputs": inputs,
+            "outputs": out,
+        })
+    }
+
+    /// The CSV table: one row per output; per input `first_KEY`, `first_KEY_lo`,
+    /// `first_KEY_hi`, `total_KEY`, `total_KEY_lo`, `total_KEY_hi` (empty where undefined).
+    pub fn csv(&self, outputs: &[Output]) -> String {
+        let mut head = vec!["output".to_string(), "unit".into()];
+        head.extend(["mean", "sd", "q05", "q50", "q95"].map(String::from));
+        for i in &self.inputs {
+            for kind in ["first", "total"] {
+                for end in ["", "_lo", "_hi"] {
+                    head.push(format!("{kind}_{}{end}", i.key));
+                }
+            }
+        }
+        let num = |v: f64| if v.is_finite() { ryu::Buffer::new().format(v).to_string() } else { String::new() };
+        let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(Vec::new());
+        let _ = w.write_record(&head);
+        for o in outputs {
+            let s = &o.summary;
+            let mut row = vec![o.key.to_string(), o.unit.to_string()];
+            row.extend([s.mean, s.sd, s.q05, s.q50, s.q95].map(num));
+            for k in 0..self.inputs.len() {
+                for ix in [s.first[k], s.total[k]] {
+                    row.extend([ix.value, ix.lo, ix.hi].map(num));
+                }
+            }
+            let _ = w.write_record(&row);
+        }
+        String::from_utf8(w.into_inner().unwrap_or_default()).unwrap_or_default()
+    }
+
+    /// A text table: each output's spread, then each input's indices with their intervals.
+    pub fn text(&self, outputs: &[Output]) -> String {
+        let inputs: Vec<String> = self.inputs.iter().map(|i| format!("{} ~ {}", i.key, i.dist.text())).collect();
+        let mut s = format!(
+            "{} base samples x {} = {} impacts, seed {}; inputs: {}\nSobol' indices: first-order S and total ST, [{} % bootstrap interval]\n\n",
+            self.design.samples(),
+            self.design.inputs() + 2,
+            self.design.runs(),
+            self.design.seed(),
+            inputs.join(", "),
+            100.0 * sensitivity::CONFIDENCE
+        );
+        let f = |v: f64| if v.is_finite() { sig(v, 4) } else { "-".to_string() };
+        for o in outputs {
+            let m = &o.summary;
+            s.push_str(&format!(
+                "{:<22} mean {} sd {}  q05 {} q50 {} q95 {} {}\n",
+                o.key,
+                f(m.mean),
+                f(m.sd),
+                f(m.q05),
+                f(m.q50),
+                f(m.q95),
+                o.unit
+            ));
+            for (k, i) in self.inputs.iter().enumerate() {
+                let (a, b) = (m.first[k], m.total[k]);
+                s.push_str(&format!(
+                    "    {:<20} S {} [{}, {}]  ST {} [{}, {}]\n",
+                    i.key,
+                    f(a.value),
+                    f(a.lo),
+                    f(a.hi),
+                    f(b.value),
+                    f(b.lo),
+                    f(b.hi)
+                ));
+            }
+        }
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn study(varies: &[&str], samples: u64) -> Result<Study> {
+        let mut base = Params::default();
+        base.numerics.solver = crate::params::SolverKind::Modal;
+        Study::new(base, &varies.iter().map(|s| s.to_string()).collect::<Vec<_>>(), samples, 1)
+    }
+
+    #[test]
+    fn bad_specs_are_one_line_refusals_naming_the_field_and_range() {
+        let msg = |v: &[&str], n: u64| study(v, n).unwrap_err().to_string();
+        assert!(msg(&["kz=uniform:1:2"], 8).starts_with("invalid vary = kz=uniform:1:2: unknown parameter 'kz'"));
+        assert_eq!(msg(&["ks=uniform:5e4:2e4"], 8), "invalid ks = uniform:5e4:2e4: the range needs LO < HI");
+        assert_eq!(msg(&["ks=normal:4e4:-1"], 8), "invalid ks = normal:4e4:-1: a normal needs SD > 0");
+        assert_eq!(
+            msg(&["ks=uniform:0.5:2e4"], 8),
+            "invalid ks = uniform:0.5:20000: samples reach 0.5..20000 N/m; string-plane stiffness must satisfy 1e0 <= ks <= 1e12 N/m"
+        );
+        assert!(msg(&["x=uniform:0.1:0.9"], 8).starts_with("invalid x = uniform:0.1:0.9: samples reach 0.9 m, where"));
+        assert!(msg(&["p=uniform:0.5:2"], 8).contains("1 < p <= 10"));
+        assert!(msg(&["ks=uniform:2e4:3e4", "ks=uniform:3e4:4e4"], 8).contains("ks is varied twice"));
+        assert!(msg(&["segments=uniform:10:20"], 8).contains("only real-valued parameters"));
+        assert!(msg(&["ks"], 8).contains("give KEY=DIST"));
+        assert!(msg(&["ks=uniform:2e4:3e4"], 0).starts_with("invalid samples = 0: must satisfy 1 <= samples <= 65536"));
+        assert!(msg(&["ks=uniform:2e4:3e4"], u64::MAX).contains("samples <= 65536"));
+        for m in [msg(&["ks=uniform:5e4:2e4"], 8), msg(&["x=uniform:0.1:0.9"], 8)] {
+            assert!(!m.contains('\n'), "{m}");
+        }
+    }
+
+    #[test]
+    fn outputs_follow_the_inputs_and_are_deterministic() {
+        let s = study(&["ks=loguniform:2e4:6e4", "mb=normal:0.057:0.0005"], 16).unwrap();
+        let out = s.run(|_| {}).unwrap();
+        assert_eq!(s.csv(&out), s.csv(&s.run(|_| {}).unwrap()), "same seed, same numbers");
+        let e_a = out.iter().find(|o| o.key == "e_a").unwrap();
+        // e_A falls with ks at the Fig 4 point: ks carries most of its variance
+        assert!(e_a.summary.q05 < e_a.summary.q50 && e_a.summary.q50 < e_a.summary.q95);
+        assert!(e_a.summary.total[0].value > e_a.summary.total[1].value, "{:?}", e_a.summary);
+        let json = s.json(&out);
+        assert_eq!(json["samples"], 16);
+        assert_eq!(json["inputs"][0]["key"], "ks");
+        for key in ["mean", "sd", "q05", "q50", "q95"] {
+            assert!(json["outputs"]["e_a"][key].is_number(), "{key}");
+        }
+        assert!(json["outputs"]["e_a"]["first_order"]["ks"].is_number());
+        assert!(json["outputs"]["e_a"]["total_order_ci"]["mb"][1].is_number());
+        let csv = s.csv(&out);
+        assert!(csv.starts_with("output,unit,mean,sd,q05,q50,q95,first_ks,first_ks_lo,first_ks_hi,total_ks"));
+        assert_eq!(csv.lines().count(), out.len() + 1);
+    }
+}

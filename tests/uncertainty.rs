@@ -1,0 +1,157 @@
+//! The `uncertainty` command end to end: its JSON shape, determinism for a seed, `--out`
+//! written atomically, `--claims`, and every bad spec refused in one line with exit 2 and no
+//! file written.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn bin(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_racket-impact")).args(args).output().unwrap()
+}
+
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new(name: &str) -> Self {
+        let dir = std::env::temp_dir().join(format!("racket-impact-uq-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        Scratch(dir)
+    }
+    fn path(&self, name: &str) -> String {
+        self.0.join(name).to_str().unwrap().to_string()
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+#[test]
+fn json_has_the_documented_shape_and_a_seed_fixes_it() {
+    let args = [
+        "uncertainty",
+        "--x",
+        "0.06",
+        "--vary",
+        "ks=uniform:2e4:6e4",
+        "--vary",
+        "p=normal:2.55:0.05",
+        "--samples",
+        "32",
+        "--seed",
+        "7",
+        "--format",
+        "json",
+    ];
+    let out = bin(&args);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!((v["samples"].as_u64(), v["seed"].as_u64()), (Some(32), Some(7)));
+    assert_eq!(v["inputs"][0]["key"], "ks");
+    assert_eq!(v["inputs"][1]["dist"], "normal:2.55:0.05");
+    let e_a = &v["outputs"]["e_a"];
+    for key in ["mean", "sd", "q05", "q50", "q95"] {
+        assert!(e_a[key].is_number(), "{key}");
+    }
+    for key in ["first_order", "total_order"] {
+        assert!(e_a[key]["ks"].is_number() && e_a[key]["p"].is_number(), "{key}");
+    }
+    for key in ["first_order_ci", "total_order_ci"] {
+        let ci = e_a[key]["ks"].as_array().unwrap();
+        assert!(ci[0].as_f64().unwrap() <= ci[1].as_f64().unwrap(), "{key}");
+    }
+    // at 6 cm from the tip e_A rises steeply as the strings soften: ks carries its variance
+    assert!(e_a["total_order"]["ks"].as_f64().unwrap() > e_a["total_order"]["p"].as_f64().unwrap());
+    assert_eq!(bin(&args).stdout, out.stdout, "same seed, same bytes");
+    let other: Vec<&str> = args.iter().map(|a| if *a == "7" { "8" } else { a }).collect();
+    assert_ne!(bin(&other).stdout, out.stdout, "another seed, other samples");
+}
+
+#[test]
+fn out_writes_the_file_and_csv_has_one_row_per_output() {
+    let s = Scratch::new("out");
+    let path = s.path("u.csv");
+    let out = bin(&[
+        "uncertainty",
+        "--vary",
+        "mb=uniform:0.0558:0.0576",
+        "--samples",
+        "8",
+        "--format",
+        "csv",
+        "--out",
+        &path,
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(out.stdout.is_empty());
+    let csv = std::fs::read_to_string(&path).unwrap();
+    assert!(csv.starts_with("output,unit,mean,sd,q05,q50,q95,first_mb,first_mb_lo,first_mb_hi,total_mb"), "{csv}");
+    assert!(csv.lines().any(|l| l.starts_with("e_a,")));
+}
+
+#[test]
+fn claims_give_every_claim_a_verdict() {
+    let out = bin(&["uncertainty", "--claims", "--samples", "2", "--format", "csv"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let csv = String::from_utf8(out.stdout).unwrap();
+    let mut lines = csv.lines();
+    let head = lines.next().unwrap();
+    assert!(
+        head.starts_with("id,unit,paper,band_lo,band_hi,nominal,numerical,q05,q50,q95,verdict,top_input"),
+        "{head}"
+    );
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), 44);
+    assert!(rows.iter().all(|r| ["holds", "part", "not at all"].iter().any(|v| r.contains(&format!(",{v},")))));
+}
+
+#[test]
+fn bad_specs_are_refused_in_one_line_and_nothing_is_written() {
+    let s = Scratch::new("bad");
+    let path = s.path("never.json");
+    let cases: [(&[&str], &str); 12] = [
+        (&["--vary", "kz=uniform:1:2"], "unknown parameter 'kz'"),
+        (&["--vary", "ks=uniform:5e4:2e4"], "invalid ks = uniform:5e4:2e4: the range needs LO < HI"),
+        (&["--vary", "ks=normal:4e4:-5"], "a normal needs SD > 0"),
+        (&["--vary", "ks=uniform:0.5:2e4"], "1e0 <= ks <= 1e12 N/m"),
+        (&["--vary", "p=uniform:0.8:2"], "1 < p <= 10"),
+        (&["--vary", "ks=uniform:2e4:3e4", "--vary", "ks=uniform:3e4:4e4"], "ks is varied twice"),
+        (
+            &["--vary", "ks=uniform:2e4:3e4", "--samples", "0"],
+            "invalid samples = 0: must satisfy 1 <= samples <= 65536",
+        ),
+        (&["--vary", "ks=uniform:2e4:3e4", "--samples", "100000"], "samples <= 65536"),
+        (&["--vary", "ks=uniform:2e4:3e4", "--ks", "3e4"], "ks is both fixed (--ks) and varied"),
+        (&["--vary", "load=uniform:1:2"], "only real-valued parameters"),
+        (&["--claims", "--vary", "ks=uniform:2e4:3e4"], "invalid claims"),
+        (&[], "give at least one --vary KEY=DIST"),
+    ];
+    for (args, want) in cases {
+        let mut all = vec!["uncertainty"];
+        all.extend_from_slice(args);
+        all.extend_from_slice(&["--format", "json", "--out", &path]);
+        let out = bin(&all);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(want), "{args:?}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+        assert!(!std::path::Path::new(&path).exists(), "{args:?} wrote a file");
+    }
+}
+
+#[test]
+fn help_lists_exactly_what_the_command_accepts() {
+    let help = String::from_utf8(bin(&["uncertainty", "--help"]).stdout).unwrap();
+    for option in
+        ["--vary", "--samples", "--seed", "--format", "--out", "--claims", "--racket", "--config", "--ks", "--mb"]
+    {
+        assert!(help.contains(option), "{option} missing from --help");
+    }
+    for declared in ["ks ~ uniform:36000:44000", "p ~ uniform:2.44445:2.7737"] {
+        assert!(help.contains(declared), "{declared} missing from --help");
+    }
+}
