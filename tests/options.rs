@@ -164,6 +164,7 @@ fn base(command: &str) -> Vec<&'static str> {
         "speed" => vec!["--swing", "100", "--format", "json"],
         "map" => vec!["--nx", "7", "--nr", "5", "--format", "json"],
         "sweep" => vec!["--x", "0.1,0.2"],
+        "uncertainty" => vec!["--vary", "v1=uniform:6:8", "--samples", "8", "--format", "json"],
         _ => vec!["--format", "json"],
     }
 }
@@ -212,6 +213,62 @@ const PROBES: &[(&str, &str, &[&str], &[&str])] = &[
     ("sweep", "out", &["--out", "s.csv", "--x", "0.1,0.2"], &["--x", "0.1,0.2"]),
     ("sweep", "quiet", &["--quiet", "--ks", "1e3,2e3"], &["--ks", "1e3,2e3"]),
     ("sweep", "specs", &["--x", "0.1,0.3"], &["--x", "0.1,0.2"]),
+    // uncertainty's runs draw v1 (8 base samples), so its own probe of --v1 varies ks instead
+    (
+        "uncertainty",
+        "quiet",
+        &["--vary", "v1=uniform:6:8", "--samples", "8", "--quiet", "--ks", "1e3"],
+        &["--vary", "v1=uniform:6:8", "--samples", "8", "--ks", "1e3"],
+    ),
+    (
+        "uncertainty",
+        "racket",
+        &["--vary", "v1=uniform:6:8", "--samples", "8", "--racket", "tweener"],
+        &["--vary", "v1=uniform:6:8", "--samples", "8"],
+    ),
+    (
+        "uncertainty",
+        "config",
+        &["--vary", "v1=uniform:6:8", "--samples", "8", "--config", "cfg.toml"],
+        &["--vary", "v1=uniform:6:8", "--samples", "8"],
+    ),
+    (
+        "uncertainty",
+        "format",
+        &["--vary", "v1=uniform:6:8", "--samples", "8", "--format", "json"],
+        &["--vary", "v1=uniform:6:8", "--samples", "8"],
+    ),
+    (
+        "uncertainty",
+        "vary",
+        &["--vary", "v1=uniform:6:8", "--samples", "8", "--vary", "ks=uniform:3e4:5e4"],
+        &["--vary", "v1=uniform:6:8", "--samples", "8"],
+    ),
+    (
+        "uncertainty",
+        "samples",
+        &["--vary", "v1=uniform:6:8", "--samples", "16"],
+        &["--vary", "v1=uniform:6:8", "--samples", "8"],
+    ),
+    (
+        "uncertainty",
+        "seed",
+        &["--vary", "v1=uniform:6:8", "--samples", "8", "--seed", "3"],
+        &["--vary", "v1=uniform:6:8", "--samples", "8"],
+    ),
+    (
+        "uncertainty",
+        "out",
+        &["--vary", "v1=uniform:6:8", "--samples", "8", "--out", "u.json"],
+        &["--vary", "v1=uniform:6:8", "--samples", "8"],
+    ),
+    ("uncertainty", "claims", &["--claims", "--samples", "8"], &["--vary", "v1=uniform:6:8", "--samples", "8"]),
+    (
+        "uncertainty",
+        "v1",
+        &["--vary", "ks=uniform:3e4:5e4", "--samples", "8", "--v1", "10"],
+        &["--vary", "ks=uniform:3e4:5e4", "--samples", "8"],
+    ),
     ("figures", "only", &["--only", "modes"], &[]),
     ("figures", "out", &["--only", "modes", "--out", "elsewhere"], &["--only", "modes"]),
     ("figures", "racket", &["--only", "modes", "--racket", "tweener"], &["--only", "modes"]),
@@ -297,14 +354,19 @@ fn every_option_of_every_command_changes_the_output_or_is_refused() {
         let config = config_for(&command);
         for (id, long) in options {
             let table = PROBES.iter().find(|(c, o, _, _)| *c == command && *o == id).or_else(|| {
-                PROBES
-                    .iter()
-                    .find(|(c, o, _, _)| *c == "*" && *o == id && !["speed", "map", "sweep"].contains(&&*command))
+                PROBES.iter().find(|(c, o, _, _)| {
+                    *c == "*" && *o == id && !["speed", "map", "sweep", "uncertainty"].contains(&&*command)
+                })
             });
             let (with, without, bare) = match (table, keys::find(&id)) {
                 (Some((_, _, with, without)), _) => (strings(with), strings(without), None),
                 (None, Some(spec)) => {
-                    let flag = [format!("--{}", spec.key), sample_value(spec.key)];
+                    // sweep and uncertainty run modal unless told: their other solver is fd
+                    let value = match (spec.key, command.as_str()) {
+                        ("solver", "sweep" | "uncertainty") => "fd".to_string(),
+                        _ => sample_value(spec.key),
+                    };
+                    let flag = [format!("--{}", spec.key), value];
                     let b = strings(&base(&command));
                     let ctx = strings(&context(&command, spec.key));
                     let without: Vec<String> = ctx.iter().chain(&b).cloned().collect();

@@ -164,3 +164,20 @@ fn messages_speak_in_the_names_and_units_of_the_command_run() {
         }
     }
 }
+
+/// A sweep names each column once, whichever keys are its axes: a swept solver (`--solver
+/// modal`, `--solver fd,modal`) is its own column, not repeated as the trailing solver column.
+#[test]
+fn a_sweep_names_each_column_once() {
+    for args in
+        [&["--x", "0.1,0.2", "--solver", "modal"][..], &["--solver", "fd,modal"], &["--x", "0.1", "--angle-deg", "30"]]
+    {
+        let out = Command::new(env!("CARGO_BIN_EXE_racket-impact")).arg("sweep").args(args).output().unwrap();
+        assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+        let text = String::from_utf8_lossy(&out.stdout);
+        let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+        let unique: BTreeSet<&str> = header.iter().copied().collect();
+        assert_eq!(unique.len(), header.len(), "{args:?}: {header:?}");
+        assert!(header.contains(&"solver"), "{args:?}: {header:?}");
+    }
+}

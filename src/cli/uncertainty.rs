@@ -11,7 +11,7 @@ use racket_impact::study::sensitivity::Design;
 use racket_impact::study::uncertainty::{summary_json, Study, DEFAULT_SAMPLES};
 use racket_impact::{Error, Result};
 
-use super::common::{given_keys, out, warn_params, Common, Format, Progress};
+use super::common::{given_keys, out, warn, warn_params, Common, Format, Progress};
 use super::overrides::SimulateKeys;
 
 #[derive(Args, Debug)]
@@ -52,7 +52,7 @@ pub fn long_about() -> String {
          {{\"samples\", \"seed\", \"inputs\", \"outputs\": {{field: {{\"mean\", \"sd\", \"q05\", \"q50\", \"q95\", \
          \"first_order\", \"total_order\", \"first_order_ci\", \"total_order_ci\"}}}}}}. Example: racket-impact \
          uncertainty --x 0.06 --vary ks=uniform:2e4:6e4 --vary mb=normal:0.057:0.0005 --format json\n\n\
-         --claims: each paper claim (golden/paper_claims.csv) under the uncertainties declared with the \
+         With --claims: each paper claim (golden/paper_claims.csv) under the uncertainties declared with the \
          parameters, drawn as factors on the paper's values: {}",
         declared.join("; ")
     )
@@ -66,18 +66,32 @@ pub fn run(a: UncertaintyArgs) -> Result<()> {
     let samples = a.samples.unwrap_or(DEFAULT_SAMPLES);
     Design::new(samples, a.vary.len().max(1), 0)?; // the count first, before anything else
     let sources = a.common.sources();
-    let given = sources.flags.clone().or(racket_impact::study::config_file(sources.config.as_deref())?);
+    let from_config = racket_impact::study::config_file(sources.config.as_deref())?;
+    let given = sources.flags.clone().or(from_config.clone());
+    let mut unused_in_config = Vec::new();
     for text in &a.vary {
         let key = text.split_once('=').map_or(text.as_str(), |(k, _)| k).trim();
         if given_keys(&sources.flags).contains(&key) {
             return Err(Error::invalid("vary", text, format!("{key} is both fixed (--{key}) and varied; give one")));
         }
+        if given_keys(&from_config).contains(&key) {
+            unused_in_config.push(key);
+        }
+    }
+    if let (Some(path), false) = (&sources.config, unused_in_config.is_empty()) {
+        // a shared config file may set what this run draws: said once, not refused
+        warn(&format!(
+            "config file {} sets {}, which --vary draws: the file's value is not used",
+            path.display(),
+            unused_in_config.join(", ")
+        ));
     }
     let mut base = sources.params()?;
-    a.common.check_used([&base])?;
     if let Some(solver) = racket_impact::study::sweep::default_solver(&given, &[]) {
         base.numerics.solver = solver;
     }
+    // with the solver the runs use: --dt is refused with the modal one
+    a.common.check_used([&base])?;
     let study = Study::new(base, &a.vary, samples, a.seed.unwrap_or(0))?;
     if let Some(path) = &a.out {
         racket_impact::render::io::check_output_dir("out", path)?;

@@ -30,8 +30,8 @@ pub mod oblique;
 pub mod overrides;
 pub mod physical;
 pub mod spec;
-pub mod used;
 pub mod uncertainty;
+pub mod used;
 pub mod variants;
 
 pub use keys::Overrides;

@@ -154,20 +154,26 @@ fn swept(oblique: bool) -> impl Iterator<Item = &'static Field> {
     FIELDS.iter().filter(move |f| f.sweep && (oblique || !f.is_oblique()))
 }
 
-/// Result columns written for every impact: [`swept`] fields, then the solver.
-pub fn result_columns(oblique: bool) -> impl Iterator<Item = &'static str> {
-    swept(oblique).map(|f| f.key).chain(["solver"])
+/// Result columns written for every impact: [`swept`] fields, then the solver (unless the
+/// solver is itself a swept axis, whose column already names it: no column twice).
+pub fn result_columns(oblique: bool, solver_swept: bool) -> impl Iterator<Item = &'static str> {
+    swept(oblique).map(|f| f.key).chain((!solver_swept).then_some("solver"))
 }
 
 /// The result columns of one impact. Numbers are written in their shortest form that reads back
 /// as the same `f64` (`ryu`: `0.25`, `1.5e-7`, `3.0`): exact, and without the noise digits of a
 /// fixed 17; a flag as 0 or 1.
-fn result_fields<'a>(r: &'a ImpactResult, p: &Params, oblique: bool) -> impl Iterator<Item = String> + 'a {
+fn result_fields<'a>(
+    r: &'a ImpactResult,
+    p: &Params,
+    oblique: bool,
+    solver_swept: bool,
+) -> impl Iterator<Item = String> + 'a {
     let fields = swept(oblique).map(move |f| match f.get {
         Get::Number(g) => number_text(g(r)),
         Get::Flag(g) => u8::from(g(r)).to_string(),
     });
-    fields.chain([p.numerics.solver.name().to_string()])
+    fields.chain((!solver_swept).then(|| p.numerics.solver.name().to_string()))
 }
 
 impl Sweep {
@@ -271,9 +277,14 @@ impl Sweep {
     /// The CSV header.
     pub fn header(&self) -> Vec<String> {
         let oblique = self.is_oblique();
-        let results = result_columns(oblique).map(String::from);
+        let results = result_columns(oblique, self.solver_swept()).map(String::from);
         let fixed = self.fixed_keys(oblique).into_iter().map(|k| column_name(k).to_string());
         self.axes.iter().map(|a| column_name(&a.key).to_string()).chain(fixed).chain(results).collect()
+    }
+
+    /// Whether the solver is one of the axes (then its column is not repeated at the end).
+    pub fn solver_swept(&self) -> bool {
+        self.axes.iter().any(|a| a.key == "solver")
     }
 
     /// The [`recorded_keys`] that are not swept: their columns follow the swept ones.
@@ -313,6 +324,7 @@ impl Sweep {
         limits::check_count("sweep", total as f64, MAX_POINTS, "the impacts of a sweep (the product of the counts)")?;
         let oblique = self.is_oblique();
         let fixed = self.fixed_keys(oblique);
+        let solver_swept = self.solver_swept();
         let mut start = 0u64;
         while start < total {
             let end = (start + CHUNK as u64).min(total);
@@ -326,7 +338,7 @@ impl Sweep {
                         .into_iter()
                         .map(str::to_string)
                         .chain(fixed)
-                        .chain(result_fields(&r, &p, oblique))
+                        .chain(result_fields(&r, &p, oblique, solver_swept))
                         .collect())
                 })
                 .collect::<Result<_>>()?;

@@ -206,6 +206,7 @@ impl Study {
             "samples": self.design.samples(),
             "seed": self.design.seed(),
             "runs": self.design.runs(),
+            "solver": self.base.numerics.solver.name(),
             "confidence": sensitivity::CONFIDENCE,
             "inputs": inputs,
             "outputs": out,
@@ -245,10 +246,11 @@ impl Study {
     pub fn text(&self, outputs: &[Output]) -> String {
         let inputs: Vec<String> = self.inputs.iter().map(|i| format!("{} ~ {}", i.key, i.dist.text())).collect();
         let mut s = format!(
-            "{} base samples x {} = {} impacts, seed {}; inputs: {}\nSobol' indices: first-order S and total ST, [{} % bootstrap interval]\n\n",
+            "{} base samples x {} = {} impacts ({} solver), seed {}; inputs: {}\nSobol' indices: first-order S and total ST, [{} % bootstrap interval]\n\n",
             self.design.samples(),
             self.design.inputs() + 2,
             self.design.runs(),
+            self.base.numerics.solver.name(),
             self.design.seed(),
             inputs.join(", "),
             100.0 * sensitivity::CONFIDENCE
