@@ -70,7 +70,7 @@ pub fn warn_params<'a>(params: impl IntoIterator<Item = &'a Params>) {
                 sig(f1, 4)
             )
         });
-        for line in keys::unusual(p).into_iter().chain(frequency) {
+        for line in keys::unusual(p).into_iter().chain(frequency).chain(p.oblique.idle_options()) {
             // one line per parameter, the first unusual value it takes
             let key = line.split(' ').next().unwrap_or_default().to_string();
             if !said.contains(&key) {

@@ -26,6 +26,7 @@ pub mod oblique;
 pub mod overrides;
 pub mod physical;
 pub mod spec;
+pub mod strings;
 pub mod variants;
 
 pub use keys::Overrides;
@@ -33,7 +34,7 @@ pub use numerics::{check_segments, LoadRule, Numerics, SolverKind, MAX_SEGMENTS,
 pub use oblique::Oblique;
 pub(crate) use overrides::{parse_toml, read_file};
 pub use physical::{ellipse_half_width, Ball, Impact, Profile, Racket, Strings, DEFAULT_FACE_LENGTH, STIFFNESS_REL};
-pub use variants::{Frame, Grip, StringLaw, Variants};
+pub use variants::{Frame, Grip, StringLaw, StringName, TangentialLaw, Variants};
 
 /// Acceleration of gravity used for drop tests, m/s^2.
 pub const G: f64 = 9.81;
