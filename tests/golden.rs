@@ -96,6 +96,10 @@ fn oblique_tension() {
 fn topspin_forehand() {
     check("topspin_forehand");
 }
+#[test]
+fn validation_spin() {
+    check("validation_spin");
+}
 
 #[test]
 fn every_registered_experiment_has_a_golden_test_and_committed_outputs() {

@@ -24,6 +24,7 @@
 //! | `oblique_angle` | (beyond) spin and rebound angle against incidence angle | [`oblique_angle`] |
 //! | `oblique_tension` | (beyond) spin against tension, friction constant or tension-dependent | [`oblique_tension`] |
 //! | `topspin_forehand` | (beyond) a forehand brushing up: speed, launch angle, spin | [`topspin_forehand`] |
+//! | `validation_spin` | (beyond) spin against the TWU table and further measurements, each tangential law | [`validation_spin`] |
 //!
 //! All paper experiments use the paper's numerics (`node` load, N = 39) as SPEC.md asks;
 //! `convergence` shows what that costs. Shared pieces: [`setup`] (the racket an experiment runs
@@ -58,6 +59,7 @@ pub mod off_axis;
 pub mod position;
 pub mod speeds;
 pub mod topspin_forehand;
+pub mod validation_spin;
 pub mod variant_grip;
 pub mod variant_rigid;
 pub mod variant_strings;
@@ -114,6 +116,7 @@ pub fn registry() -> Vec<Experiment> {
         oblique_angle::EXPERIMENT,
         oblique_tension::EXPERIMENT,
         topspin_forehand::EXPERIMENT,
+        validation_spin::EXPERIMENT,
     ]
 }
 
