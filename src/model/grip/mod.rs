@@ -115,10 +115,10 @@ struct Kin {
 
 /// Switches per piece at most (each moves on in time; the count guards rounding).
 const MAX_SWITCHES: usize = 64;
-/// Bisection steps for a switch time.
-const BISECTIONS: usize = 50;
+/// Iterations at most to locate a switch time.
+const BISECTIONS: usize = 100;
 /// Substep length as a fraction of the fastest time scale of the contact.
-const SUBSTEP: f64 = 0.05;
+const SUBSTEP: f64 = 0.2;
 
 /// The physical tangential contact of one impact in progress.
 #[derive(Debug, Clone, Copy)]
@@ -211,19 +211,9 @@ impl Contact {
                     self.commit(piece, t, h, end);
                     t += h;
                 }
-                Some(_) => {
+                Some(first) => {
                     // the shortest substep whose end violates a guard, to rounding
-                    let (mut lo, mut hi) = (0.0, h);
-                    for _ in 0..BISECTIONS {
-                        let mid = 0.5 * (lo + hi);
-                        let y = self.step(piece, t, &self.y, mid, f_max);
-                        if self.violated(piece, t + mid, &y, f_max).is_some() {
-                            hi = mid;
-                        } else {
-                            lo = mid;
-                        }
-                    }
-                    let y = self.step(piece, t, &self.y, hi, f_max);
+                    let (hi, y) = self.locate(piece, t, h, f_max, first);
                     let which = self.violated(piece, t + hi, &y, f_max);
                     self.commit(piece, t, hi, y);
                     t += hi;
@@ -339,10 +329,11 @@ impl Contact {
         std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
     }
 
-    /// The first guard the state `y` at `t` violates: 0 the ball's grip or slide, 1 the
+    /// The guards of the current modes at state `y` and time `t`, each non-negative while its
+    /// mode lasts (infinite where it does not apply): 0 the ball's grip or slide, 1 the
     /// strings' stick or slide, 2 the sign of the spin (or its hold at zero) while the offset
     /// torque acts.
-    fn violated(&self, piece: &ForcePiece, t: f64, y: &Y, peak: Peak) -> Option<usize> {
+    fn guards(&self, piece: &ForcePiece, t: f64, y: &Y, peak: Peak) -> [f64; 3] {
         let law = &self.law;
         let k = self.kin(piece, t, y, peak);
         let f = piece.force(t).max(0.0);
@@ -350,28 +341,74 @@ impl Contact {
             Ball::Grip => law.base.mu * f - k.p.abs(),
             Ball::Slide(sign) => sign * (k.w - k.sdot - k.qdot),
         };
-        if ball < 0.0 {
-            return Some(0);
-        }
-        if let Some(b) = law.bed {
-            let strings = match self.modes.strings {
-                Strings::Stuck => b.limit(f) - (k.p - b.k_lat * y[Q]).abs(),
-                Strings::Slide(sb) => sb * k.qdot,
-            };
-            if strings < 0.0 {
-                return Some(1);
+        let strings = match (law.bed, self.modes.strings) {
+            (Some(b), Strings::Stuck) => b.limit(f) - (k.p - b.k_lat * y[Q]).abs(),
+            (Some(_), Strings::Slide(sb)) => sb * k.qdot,
+            (None, _) => f64::INFINITY,
+        };
+        let spin = match (k.capacity > 0.0, self.modes.spin) {
+            (false, _) => f64::INFINITY,
+            (true, 0.0) => k.capacity - k.torque.abs(),
+            (true, sign) => sign * y[OM],
+        };
+        [ball, strings, spin]
+    }
+
+    /// The first guard the state `y` at `t` violates, if any ([`Self::guards`]).
+    fn violated(&self, piece: &ForcePiece, t: f64, y: &Y, peak: Peak) -> Option<usize> {
+        self.guards(piece, t, y, peak).iter().position(|&g| g < 0.0)
+    }
+
+    /// The earliest time in `(0, h]` after `t` at which a guard fails (one fails at `h`), to
+    /// rounding: the Illinois variant of regula falsi on the guard that fails, restarted on
+    /// any guard that fails earlier. Returns the time and the state there.
+    fn locate(&self, piece: &ForcePiece, t: f64, h: f64, peak: Peak, first: usize) -> (f64, Y) {
+        let start = self.guards(piece, t, &self.y, peak);
+        let (mut g, mut lo, mut hi) = (first, 0.0, h);
+        let mut at_hi = self.step(piece, t, &self.y, h, peak);
+        for _ in 0..MAX_SWITCHES {
+            let value = |tau: f64, y: &Y| self.guards(piece, t + tau, y, peak)[g];
+            let (mut a, mut fa) = (lo, start[g].max(0.0));
+            if a > 0.0 {
+                fa = value(a, &self.step(piece, t, &self.y, a, peak)).max(0.0);
+            }
+            let (mut b, mut fb) = (hi, value(hi, &at_hi));
+            let mut side = 0;
+            for _ in 0..BISECTIONS {
+                if b - a <= 1e-13 * h {
+                    break;
+                }
+                let mut c = (a * fb - b * fa) / (fb - fa);
+                if !(c > a && c < b) {
+                    c = 0.5 * (a + b);
+                }
+                let y = self.step(piece, t, &self.y, c, peak);
+                let fc = value(c, &y);
+                if fc < 0.0 {
+                    (b, fb, at_hi) = (c, fc, y);
+                    if side == -1 {
+                        fa *= 0.5;
+                    }
+                    side = -1;
+                } else {
+                    (a, fa) = (c, fc);
+                    if side == 1 {
+                        fb *= 0.5;
+                    }
+                    side = 1;
+                }
+            }
+            // another guard failing before this one's root takes over
+            let y = self.step(piece, t, &self.y, a, peak);
+            match self.violated(piece, t + a, &y, peak) {
+                Some(other) if a > 0.0 => {
+                    (g, hi, at_hi) = (other, a, y);
+                    lo = 0.0;
+                }
+                _ => return (b, at_hi),
             }
         }
-        if k.capacity > 0.0 {
-            let spin = match self.modes.spin {
-                0.0 => k.capacity - k.torque.abs(),
-                sign => sign * y[OM],
-            };
-            if spin < 0.0 {
-                return Some(2);
-            }
-        }
-        None
+        (hi, at_hi)
     }
 
     /// Change the mode whose guard `g` failed, at `t`.
