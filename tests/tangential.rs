@@ -226,3 +226,40 @@ fn a_named_string_sets_its_friction() {
     e.oblique.mu_ss = 0.3;
     assert_eq!(simulate(&e).unwrap(), a);
 }
+
+/// Run the binary; exit code, stdout, stderr.
+fn cli(args: &[&str]) -> (Option<i32>, String, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_racket-impact")).args(args).output().unwrap();
+    (out.status.code(), String::from_utf8_lossy(&out.stdout).into(), String::from_utf8_lossy(&out.stderr).into())
+}
+
+/// `--string`: an unknown name is one line listing the known ones (exit 2, no result), a
+/// `--mu` beside a string that sets it is refused, the name works in a config file, a command
+/// that has no use for it refuses it, and at normal incidence it earns one warning line.
+#[test]
+fn the_string_option_is_used_or_refused() {
+    let (code, out, err) = cli(&["simulate", "--string", "bogus", "--angle-deg", "30"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(out.is_empty() && err.trim_end().lines().count() == 1, "{err}");
+    assert!(err.contains("--string") && err.contains("tcs-16") && err.contains("nxt-16"), "{err}");
+    let (code, out, err) = cli(&["simulate", "--string", "tcs-16", "--mu", "0.5", "--angle-deg", "30"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(out.is_empty() && err.trim_end().lines().count() == 1 && err.contains("mu"), "{err}");
+    let (code, _, err) = cli(&["modes", "--string", "tcs-16"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("string"), "{err}");
+    let dir = std::env::temp_dir().join(format!("racket-impact-string-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let cfg = dir.join("c.toml");
+    std::fs::write(&cfg, "string = \"alu-rough-16\"\ntangential = \"physical\"\nangle-deg = 30\n").unwrap();
+    let (code, out, err) = cli(&["simulate", "--config", cfg.to_str().unwrap()]);
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert_eq!(code, Some(0), "{err}");
+    assert!(
+        out.contains("mu 0.498") && out.contains("tangential: physical (mu-ss 0.077, string Luxilon ALU Rough 16)"),
+        "{out}"
+    );
+    let (code, _, err) = cli(&["simulate", "--tangential", "physical", "--string", "tcs-16"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(err.lines().filter(|l| l.contains("ignored at normal incidence")).count(), 1, "{err}");
+}
