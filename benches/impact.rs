@@ -33,6 +33,13 @@ fn paper_impact(c: &mut Criterion) {
     c.bench_function("fig4_impact_n39_node_modal_prepared_oblique_30deg", |b| {
         b.iter(|| prepared_oblique.run().unwrap())
     });
+    // the same with all four tangential mechanisms (`--tangential physical`)
+    let mut physical = oblique;
+    physical.oblique.tangential = racket_impact::params::TangentialLaw::Physical;
+    let prepared_physical = racket_impact::solve::modal::ModalModel::new(&physical).unwrap();
+    c.bench_function("fig4_impact_n39_node_modal_prepared_oblique_30deg_physical", |b| {
+        b.iter(|| prepared_physical.run().unwrap())
+    });
     let mut fine = p;
     fine.numerics.segments = 160;
     fine.numerics.load = LoadRule::Hat;

@@ -104,6 +104,10 @@ fn robustness() {
 fn sensitivity() {
     check("sensitivity");
 }
+#[test]
+fn validation_spin() {
+    check("validation_spin");
+}
 
 #[test]
 fn every_registered_experiment_has_a_golden_test_and_committed_outputs() {

@@ -325,10 +325,16 @@ fn sample_value(key: &str) -> String {
 /// The flags a parameter needs to be used by `command` (a variant selected, an oblique ball).
 fn context(command: &str, key: &str) -> Vec<&'static str> {
     match key {
-        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" if command == "speed" => {
+        "mu-ss" if command == "speed" => vec!["--swing-path-deg", "20", "--tangential", "bed"],
+        "mu-ss" => vec!["--angle-deg", "30", "--tangential", "bed"],
+        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string"
+            if command == "speed" =>
+        {
             vec!["--swing-path-deg", "20"]
         }
-        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" => vec!["--angle-deg", "30"],
+        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string" => {
+            vec!["--angle-deg", "30"]
+        }
         "hand-stiffness" | "hand-damping" | "grip-length" => vec!["--grip", "hand"],
         "string-stiffening" | "stiffening-deflection" => vec!["--strings", "stiffening"],
         // the twist and the face's width matter off the long axis (a map's grid is)

@@ -26,6 +26,7 @@
 //! | `topspin_forehand` | (beyond) a forehand brushing up: speed, launch angle, spin | [`topspin_forehand`] |
 //! | `robustness` | (ours) every claim under the declared input uncertainty | [`robustness`] |
 //! | `sensitivity` | (ours) Sobol' indices of the headline outputs per uncertain input | [`sensitivity`] |
+//! | `validation_spin` | (beyond) spin against the TWU table and further measurements, each tangential law | [`validation_spin`] |
 //!
 //! All paper experiments use the paper's numerics (`node` load, N = 39) as SPEC.md asks;
 //! `convergence` shows what that costs. Shared pieces: [`setup`] (the racket an experiment runs
@@ -62,6 +63,7 @@ pub mod robustness;
 pub mod sensitivity;
 pub mod speeds;
 pub mod topspin_forehand;
+pub mod validation_spin;
 pub mod variant_grip;
 pub mod variant_rigid;
 pub mod variant_strings;
@@ -122,6 +124,7 @@ pub fn registry() -> Vec<Experiment> {
         topspin_forehand::EXPERIMENT,
         robustness::EXPERIMENT,
         sensitivity::EXPERIMENT,
+        validation_spin::EXPERIMENT,
     ]
 }
 

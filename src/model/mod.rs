@@ -7,6 +7,7 @@ pub mod beam;
 pub mod contact;
 pub mod coupling;
 pub mod free;
+pub mod grip;
 pub mod rank_one;
 pub mod reduced;
 pub mod short_turn;

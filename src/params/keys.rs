@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 
 use super::spec::{declare_params, Check, FlagValue, ParamSpec};
 use super::uncertainty::Dist;
-use super::{Frame, Grip, LoadRule, Params, SolverKind, StringLaw};
+use super::{Frame, Grip, LoadRule, Params, SolverKind, StringLaw, StringName, TangentialLaw};
 use crate::error::{Error, Result};
 
 /// The rules' largest and smallest coefficient of restitution of a ball dropped 100 in on
@@ -113,6 +113,15 @@ declare_params! {
     /// Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9; default 2e4)
     KT kt: f64 = "kt" at oblique.kt,
         what "tangential stiffness", unit "N/m", column "kt_n_per_m", within(1.0, 1.0e9);
+    /// Tangential contact law: elastic (default), loss, offset, bed, radius or physical (all four)
+    TANGENTIAL tangential: TangentialLaw = "tangential" at oblique.tangential,
+        what "tangential contact law", unit "", column "tangential", choice;
+    /// String-to-string friction coefficient, for the bed mechanism (0 ..= 2; default 0.08)
+    MU_SS mu_ss: f64 = "mu-ss" at oblique.mu_ss,
+        what "string-to-string friction coefficient", unit "", column "mu_ss", within(0.0, 2.0), usual(0.0, 0.5);
+    /// The string, from data/strings: sets mu and mu-ss where the TWU database gives them (default none)
+    STRING string: StringName = "string" at oblique.string,
+        what "string", unit "", column "string", choice;
     /// Ball radius, m (1e-3 ..= 1; default 0.033)
     BALL_RADIUS ball_radius: f64 = "ball-radius" at oblique.ball_radius,
         what "ball radius", unit "m", column "ball_radius_m", within(1.0e-3, 1.0), usual(0.015, 0.05);

@@ -30,6 +30,7 @@ pub mod oblique;
 pub mod overrides;
 pub mod physical;
 pub mod spec;
+pub mod strings;
 pub mod uncertainty;
 pub mod used;
 pub mod variants;
@@ -41,7 +42,7 @@ pub(crate) use overrides::{parse_toml, read_file};
 pub use physical::{
     ellipse_half_width, Ball, Impact, Profile, Racket, Strings, DEFAULT_FACE_LENGTH, STIFFNESS_REL, TILT_MAX,
 };
-pub use variants::{Frame, Grip, StringLaw, Variants};
+pub use variants::{Frame, Grip, StringLaw, StringName, TangentialLaw, Variants};
 
 /// Acceleration of gravity used for drop tests, m/s^2.
 pub const G: f64 = 9.81;

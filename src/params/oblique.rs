@@ -5,6 +5,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::keys;
+use super::{StringName, TangentialLaw};
 use crate::error::{Error, Result};
 
 /// How the ball arrives when it does not arrive along the string-plane normal, and the
@@ -38,6 +39,17 @@ pub struct Oblique {
     /// Ball moment of inertia over `m_b R^2` (`alpha`); 0 < alpha <= 1 (solid sphere 0.4,
     /// thin shell 2/3).
     pub ball_inertia_factor: f64,
+    /// The tangential contact law: `elastic` (the grip-slip law of `model::tangential` alone),
+    /// one mechanism of `model::grip` on top of it, or `physical` (all four). Default elastic.
+    pub tangential: TangentialLaw,
+    /// String-to-string friction coefficient (mechanism `bed`); 0..=2. Default 0.08: the
+    /// middle of the string-to-string COFs of the polyester strings in the TWU string database
+    /// (0.057-0.21, most 0.07-0.10; data/strings/README.md); `--string` sets the value of the
+    /// string in use.
+    pub mu_ss: f64,
+    /// The string in use (data/strings): where its database entry gives them, its friction
+    /// coefficients replace `mu` and `mu_ss` ([`Oblique::friction`]).
+    pub string: StringName,
 }
 
 impl Default for Oblique {
@@ -50,6 +62,9 @@ impl Default for Oblique {
             kt: 2.0e4,
             ball_radius: 0.033,
             ball_inertia_factor: 0.55,
+            tangential: TangentialLaw::Elastic,
+            mu_ss: 0.08,
+            string: StringName::None,
         }
     }
 }
@@ -59,6 +74,13 @@ impl Oblique {
     /// carries no force and is not computed).
     pub fn is_normal(&self) -> bool {
         self.angle_deg == 0.0 && self.spin_rpm == 0.0
+    }
+
+    /// The ball/string and string/string friction coefficients in use: the named string's
+    /// where the string table gives them, else `mu` and `mu_ss`.
+    pub fn friction(&self) -> (f64, f64) {
+        let entry = super::strings::entry(self.string);
+        (entry.and_then(|e| e.mu).unwrap_or(self.mu), entry.and_then(|e| e.mu_ss).unwrap_or(self.mu_ss))
     }
 
     /// Whether every field has its default value.
@@ -75,6 +97,7 @@ impl Oblique {
             (keys::MU, self.mu),
             (keys::KT, self.kt),
             (keys::BALL_RADIUS, self.ball_radius),
+            (keys::MU_SS, self.mu_ss),
         ] {
             spec.check(v)?;
         }

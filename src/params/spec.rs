@@ -192,7 +192,15 @@ macro_rules! show_by_name {
         }
     )*};
 }
-show_by_name!(super::LoadRule, super::SolverKind, super::Frame, super::Grip, super::StringLaw);
+show_by_name!(
+    super::LoadRule,
+    super::SolverKind,
+    super::Frame,
+    super::Grip,
+    super::StringLaw,
+    super::TangentialLaw,
+    super::StringName
+);
 
 impl ShowValue for Option<f64> {
     fn show(&self) -> String {

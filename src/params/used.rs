@@ -3,15 +3,22 @@
 //! for the modal solver) is refused where it is a flag and named as unused where it comes from a
 //! shared config file, never silently ignored.
 
-use super::{Frame, Grip, Params, SolverKind, StringLaw};
+use super::{Frame, Grip, Params, SolverKind, StringLaw, TangentialLaw};
 
 /// Why the impact `params` does not use parameter `key`, or `None` if it does.
 pub fn unused_reason(key: &str, params: &Params) -> Option<&'static str> {
     let v = &params.variants;
     match key {
-        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" if params.oblique.is_normal() => Some(
-            "used only for an oblique or spinning ball (at normal incidence without spin no tangential force acts)",
-        ),
+        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string" | "mu-ss"
+            if params.oblique.is_normal() =>
+        {
+            Some(
+                "used only for an oblique or spinning ball (at normal incidence without spin no tangential force acts)",
+            )
+        }
+        "mu-ss" if !params.oblique.tangential.has(TangentialLaw::Bed) => {
+            Some("used only by the tangential laws bed and physical (strings sliding over each other)")
+        }
         "hand-stiffness" | "hand-damping" | "grip-length" if v.grip != Grip::Hand => Some("used only with grip = hand"),
         "string-stiffening" | "stiffening-deflection" if v.strings != StringLaw::Stiffening => {
             Some("used only with strings = stiffening")

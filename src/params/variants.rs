@@ -14,9 +14,8 @@ macro_rules! choice_enum {
     ($(#[doc = $doc:literal])+ $name:ident (default $default:ident) { $($variant:ident = $key:literal: $help:literal,)+ }) => {
         $(#[doc = $doc])+
         #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
-        #[serde(rename_all = "lowercase")]
         pub enum $name {
-            $(#[doc = $help] $variant,)+
+            $(#[doc = $help] #[serde(rename = $key)] $variant,)+
         }
 
         impl Default for $name {
@@ -60,6 +59,42 @@ choice_enum! {
     Grip (default Free) {
         Free = "free": "The paper's freely suspended racket",
         Hand = "hand": "A hand: springs and dampers spread over the grip length from the butt",
+    }
+}
+
+choice_enum! {
+    /// The tangential contact law of an oblique or spinning impact (SPEC.md section 6): the
+    /// elastic grip-slip law, one mechanism of [`crate::model::grip`] on top of it, or all four.
+    TangentialLaw (default Elastic) {
+        Elastic = "elastic": "The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the default)",
+        Loss = "loss": "Elastic plus a damper on the ball's tangential spring (tangential restitution = the ball's normal one)",
+        Offset = "offset": "Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin",
+        Bed = "bed": "Elastic plus strings that slide sideways over each other against string-to-string friction and snap back",
+        Radius = "radius": "Elastic plus the friction acting at R minus the ball's compression",
+        Physical = "physical": "All four mechanisms",
+    }
+}
+
+choice_enum! {
+    /// The string in the racket, from the string table (data/strings, [`super::strings`]): its
+    /// ball/string and string/string friction set `mu` and `mu-ss` where the TWU database gives
+    /// them.
+    StringName (default None) {
+        None = "none": "No string named: mu and mu-ss as given (the default)",
+        TonicGut16 = "tonic-gut-16": "Babolat Tonic Gut 16 (gut; no friction data: the defaults)",
+        AluPower16 = "alu-power-16": "Luxilon ALU Power 16 (polyester)",
+        AluRough16 = "alu-rough-16": "Luxilon ALU Rough 16 (polyester)",
+        Original16 = "original-16": "Luxilon Original 16 (polyester)",
+        Tcs16 = "tcs-16": "Polyfibre TCS 16 (polyester)",
+        Nrg2_16 = "nrg2-16": "Tecnifibre NRG2 16 (nylon; no friction data: the defaults)",
+        Nxt16 = "nxt-16": "Wilson NXT 16 (nylon; no friction data: the defaults)",
+    }
+}
+
+impl TangentialLaw {
+    /// Whether the law includes the mechanism `m` (one of the single-mechanism choices).
+    pub fn has(self, m: TangentialLaw) -> bool {
+        self == m || (self == TangentialLaw::Physical && m != TangentialLaw::Elastic)
     }
 }
 

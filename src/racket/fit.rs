@@ -24,6 +24,8 @@ pub struct Fitted {
     pub ball: Ball,
     /// The friction of a ball on these strings, if the file gives it.
     pub mu: Option<f64>,
+    /// The string the file names (`string`), if any.
+    pub string: params::StringName,
     /// Targets beside what the discrete model has.
     pub report: FitReport,
 }
@@ -36,6 +38,9 @@ impl Fitted {
         if let Some(mu) = self.mu {
             oblique.mu = mu;
         }
+        oblique.string = self.string;
+        // (the file's own mu beside a string that sets it was refused when it was read)
+        let _ = params::strings::apply(&mut oblique, false, false);
         params::Params {
             ball: self.ball,
             strings: self.strings,
@@ -80,8 +85,14 @@ impl RacketSpec {
         if let Some(mu) = self.mu {
             params::keys::MU.check(mu)?;
         }
+        let string = match &self.string {
+            Some(text) => params::strings::parse(text)?,
+            None => params::StringName::None,
+        };
+        let mut probe = params::Oblique { string, ..Default::default() };
+        params::strings::apply(&mut probe, self.mu.is_some(), false)?;
         let report = self.report(&r, &racket, segments);
-        Ok(Fitted { racket, strings, ball: r.ball, mu: self.mu, report })
+        Ok(Fitted { racket, strings, ball: r.ball, mu: self.mu, string, report })
     }
 }
 
@@ -257,12 +268,15 @@ pub fn resolve(spec: Option<&RacketSpec>, overrides: &params::Overrides) -> Resu
             if let Some(mu) = f.mu {
                 p.oblique.mu = mu;
             }
+            p.oblique.string = f.string;
             Some(f)
         }
         None => None,
     };
     params::keys::face_centre_impact(&mut p);
     overrides.apply(&mut p);
+    let file_mu = fitted.as_ref().is_some_and(|f| f.mu.is_some());
+    params::strings::apply(&mut p.oblique, overrides.mu.is_some() || file_mu, overrides.mu_ss.is_some())?;
     p.validate()?;
     Ok((p, fitted))
 }

@@ -91,6 +91,9 @@ pub struct RacketSpec {
     /// Coefficient of friction of a ball on these strings, for oblique impacts (0..=2); absent =
     /// the default of `--mu` (SPEC.md section 6).
     pub mu: Option<f64>,
+    /// The string, by its name in data/strings (`--string`): sets the friction coefficients
+    /// the string table gives; absent = none.
+    pub string: Option<String>,
     /// The ball; absent = the paper's ball.
     pub ball: Option<BallSpec>,
 }

@@ -45,6 +45,14 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
             fmt_sig(o.ball_radius, 6),
             fmt_sig(o.ball_inertia_factor, 6)
         ));
+        if o.tangential != crate::params::TangentialLaw::Elastic {
+            s.push_str(&format!(
+                "tangential: {} (mu-ss {}{})\n",
+                o.tangential.name(),
+                fmt_sig(o.mu_ss, 6),
+                crate::params::strings::entry(o.string).map_or(String::new(), |e| format!(", string {}", e.name))
+            ));
+        }
     }
     let held = p.variants.grip == crate::params::Grip::Hand;
     for field in TEXT_ORDER {

@@ -255,6 +255,15 @@ impact_result! {
     /// the normal of the string plane; fraction of the whole incoming kinetic energy).
     f_racket_inplane: f64 [""] checked: false, sweep: true,
         text: text_oblique("f_racket_inplane", "racket in-plane KE (of the whole incoming KE)");
+    /// Energy dissipated in the ball's tangential damper (mechanism `loss`; fraction of the
+    /// whole incoming kinetic energy). NaN (left out) under the elastic law.
+    f_tangential_damping: f64 [""] checked: false, sweep: false, text: None;
+    /// Energy dissipated by the strings sliding over each other (mechanism `bed`; fraction of
+    /// the whole incoming kinetic energy). NaN (left out) under the elastic law.
+    f_string_sliding: f64 [""] checked: false, sweep: false, text: None;
+    /// Energy dissipated by the offset torque against the spin (mechanism `offset`; fraction
+    /// of the whole incoming kinetic energy). NaN (left out) under the elastic law.
+    f_rolling: f64 [""] checked: false, sweep: false, text: None;
 }
 
 /// The text output's lines, in its order.
@@ -377,6 +386,9 @@ mod tests {
             f_friction: 25.0,
             f_ball_spin: 26.0,
             f_racket_inplane: 27.0,
+            f_tangential_damping: 28.0,
+            f_string_sliding: 29.0,
+            f_rolling: 30.0,
         };
         let text = serde_json::to_string(&r).unwrap();
         let json = serde_json::to_value(r).unwrap();
