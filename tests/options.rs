@@ -265,6 +265,12 @@ const PROBES: &[(&str, &str, &[&str], &[&str])] = &[
     ("uncertainty", "claims", &["--claims", "--samples", "8"], &["--vary", "v1=uniform:6:8", "--samples", "8"]),
     (
         "uncertainty",
+        "dt",
+        &["--vary", "v1=uniform:6:8", "--samples", "8", "--solver", "fd", "--dt", "1e-6"],
+        &["--vary", "v1=uniform:6:8", "--samples", "8", "--solver", "fd"],
+    ),
+    (
+        "uncertainty",
         "v1",
         &["--vary", "ks=uniform:3e4:5e4", "--samples", "8", "--v1", "10"],
         &["--vary", "ks=uniform:3e4:5e4", "--samples", "8"],

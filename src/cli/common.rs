@@ -91,7 +91,12 @@ pub fn warn_params_except<'a>(params: impl IntoIterator<Item = &'a Params>, skip
             )
         });
         let density = racket_impact::racket::density_warning(&p.racket);
-        for line in keys::unusual(p).into_iter().chain(frequency).chain(density) {
+        for line in keys::unusual(p)
+            .into_iter()
+            .chain(frequency)
+            .chain(density)
+            .chain(racket_impact::params::strings::missing_data_note(&p.oblique))
+        {
             // one line per parameter, the first unusual value it takes
             let key = line.split(' ').next().unwrap_or_default().to_string();
             if !said.contains(&key) {

@@ -55,6 +55,29 @@ pub fn all() -> &'static [StringEntry] {
     })
 }
 
+/// A one-line note when the named string of an oblique or spinning ball lacks a friction
+/// coefficient in the table (gut and nylon have none in the TWU database): which value is used
+/// instead. `None` when no string is named, the ball arrives along the normal, or the entry has
+/// both.
+pub fn missing_data_note(o: &Oblique) -> Option<String> {
+    let e = entry(o.string)?;
+    let mut missing = Vec::new();
+    if e.mu.is_none() {
+        missing.push(format!("mu {} (ball/string)", o.mu));
+    }
+    if e.mu_ss.is_none() && o.tangential.has(super::TangentialLaw::Bed) {
+        missing.push(format!("mu-ss {} (string/string)", o.mu_ss));
+    }
+    (!o.is_normal() && !missing.is_empty()).then(|| {
+        format!(
+            "string {}: no friction data in the TWU database ({}), so {} as given or by default",
+            e.id,
+            e.material,
+            missing.join(" and ")
+        )
+    })
+}
+
 /// The table's entry of a named string (`None` for [`StringName::None`]).
 pub fn entry(name: StringName) -> Option<&'static StringEntry> {
     (name != StringName::None).then(|| all().iter().find(|e| e.id == name.name())).flatten()
