@@ -81,6 +81,7 @@
 mod compression;
 mod pair;
 mod run;
+mod shared;
 mod steps;
 
 use crate::error::{Error, Result};
@@ -95,6 +96,8 @@ use crate::solve::Solver;
 use compression::Compression;
 use pair::Pair;
 use run::{End, Run};
+use shared::{Key, Shared};
+use std::sync::Arc;
 use steps::Grid;
 
 /// How finely the modal solver resolves an impact.
@@ -129,17 +132,17 @@ pub struct ModalModel {
     /// The contact law (the paper's: validation leaves the modal solver no other).
     law: Cross,
     /// Per coordinate (rigid first, then the retained flexible modes): `w^2`, `w`, `g`.
-    lam: Vec<f64>,
-    omega: Vec<f64>,
-    g: Vec<f64>,
+    lam: Arc<[f64]>,
+    omega: Arc<[f64]>,
+    g: Arc<[f64]>,
     /// Static flexibility of the truncated modes at the load point, m/N.
     residual: f64,
     /// Largest impulse error allowed per step, N s.
     impulse_tolerance: f64,
     /// Step tables of each level (built when first needed).
-    grids: [std::sync::OnceLock<Grid>; LEVELS],
+    grids: Arc<[std::sync::OnceLock<Grid>; LEVELS]>,
     /// The compression phase in closed form.
-    compression: Compression,
+    compression: Arc<Compression>,
 }
 
 impl ModalModel {
@@ -148,18 +151,55 @@ impl ModalModel {
         Self::with_resolution(params, DEFAULT_RESOLUTION)
     }
 
-    /// As [`ModalModel::new`] with a chosen resolution (for convergence studies).
+    /// As [`ModalModel::new`] with a chosen resolution (for convergence studies). The set-up
+    /// that does not depend on the incident speed, angle, azimuth, spin or friction (the
+    /// retained modes, the coupled modes, the step tables) comes from this thread's cache when
+    /// an impact of the same racket, point, strings and ball built it ([`shared`]).
     pub fn with_resolution(params: &Params, res: Resolution) -> Result<Self> {
+        Self::build(params, res, true)
+    }
+
+    /// As [`ModalModel::with_resolution`], the set-up from the cache (and kept there) if
+    /// `cached`, else built afresh.
+    fn build(params: &Params, res: Resolution, cached: bool) -> Result<Self> {
         let base = Model::for_modal(params)?;
         let law = Cross::new(&params.ball, &params.strings);
+        let key = Key::of(&base.basis, &base.coupling, params, res);
+        let hit = if cached { Shared::cached(&key) } else { None };
+        let built = hit.is_none();
+        let shared = match hit {
+            Some(shared) => shared,
+            None => Self::set_up(&base, &law, params, res),
+        };
+        let impulse_tolerance = res.impulse_tolerance * params.ball.mass * base.params.impact.v1;
+        let m = ModalModel {
+            base,
+            law,
+            lam: shared.lam.clone(),
+            omega: shared.omega.clone(),
+            g: shared.g.clone(),
+            residual: shared.residual,
+            impulse_tolerance,
+            grids: shared.grids.clone(),
+            compression: shared.compression.clone(),
+        };
+        if built && cached {
+            shared.keep(key);
+        }
+        Ok(m)
+    }
+
+    /// The set-up shared by every impact of the same racket, point, strings and ball: the
+    /// retained modes, their amplitudes at the load point, the static flexibility of the others
+    /// the compression phase's coupled modes and the step table at maximum compression.
+    fn set_up(base: &Model, law: &Cross, params: &Params, res: Resolution) -> Shared {
         let beam = base.beam();
-        let basis = std::sync::Arc::clone(&base.basis);
+        let basis = &base.basis;
         let cp = base.coupling;
         let mb = params.ball.mass;
         let [g_b, g_t, g_r, g_tw] = cp.rigid_amplitudes(mb, beam, params.racket.ix);
         let k_c = law.max_stiffness();
         let omega_contact = (k_c * (1.0 / mb + g_t * g_t + g_r * g_r + g_tw * g_tw)).sqrt();
-        let h = res.phase_per_step / omega_contact;
         let cutoff = res.mode_cutoff * omega_contact;
         // (modes are ascending: the retained ones are a prefix)
         let kept = basis.lam.iter().take_while(|l| l.sqrt() <= cutoff).count();
@@ -177,30 +217,15 @@ impl ModalModel {
                 residual += gk * gk / l;
             }
         }
-        let omega: Vec<f64> = lam.iter().map(|l| l.sqrt()).collect();
-        let impulse_tolerance = res.impulse_tolerance * mb * base.params.impact.v1;
         let compression = Compression::new(&lam, &g, law.compression_stiffness(), residual, mb);
-        let m = ModalModel {
-            base,
-            law,
-            lam,
-            omega,
-            g,
-            residual,
-            impulse_tolerance,
-            grids: Default::default(),
-            compression,
-        };
-        let grid = Grid::new(&m, h);
-        let _ = m.grids[START].set(grid);
-        Ok(m)
+        Shared::new(lam, g, residual, compression, basis, res.phase_per_step / omega_contact)
     }
 
     /// The step tables of a refinement level.
     fn grid(&self, level: usize) -> &Grid {
         self.grids[level].get_or_init(|| {
             let h = self.grids[START].get().expect("start grid").h * 2f64.powi(START as i32 - level as i32);
-            Grid::new(self, h)
+            Grid::new(&self.lam, &self.omega, &self.g, self.residual, h)
         })
     }
 

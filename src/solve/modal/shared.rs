@@ -1,0 +1,170 @@
+//! The set-up of a prepared modal model that one impact shares with every other impact of the
+//! same racket, impact point, strings and ball: the retained coordinates (`w^2`, `w`, `g`), the
+//! truncated modes' static flexibility, the coupled modes of the compression phase (per unit
+//! incident speed) and the step tables (per step length). None of them depends on the incident
+//! speed, angle, azimuth, spin or friction, so a sweep, map or uncertainty run over those builds
+//! them once per impact point (the beam's own modes are shared more widely still,
+//! [`crate::model::basis`]).
+//!
+//! Each thread keeps the set-ups it built last, keyed by the exact bits of everything they are
+//! computed from, so a model built from the cache is the one built afresh, bit for bit; the
+//! cache is emptied when it holds [`CAPACITY`] set-ups (a sweep over impact points, where no
+//! two points share one, pays a key comparison and an insertion a point).
+
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::sync::{Arc, OnceLock};
+
+use crate::model::basis::Basis;
+use crate::model::coupling::Coupling;
+use crate::params::Params;
+use crate::solve::modal::compression::Compression;
+use crate::solve::modal::steps::Grid;
+use crate::solve::modal::{Resolution, LEVELS, START};
+
+/// The shared set-up (each part behind its own reference count: cloning it into a model costs
+/// a few increments).
+#[derive(Debug, Clone)]
+pub(super) struct Shared {
+    /// Per coordinate (rigid first, then the retained flexible modes): `w^2`, `w`, `g`.
+    pub lam: Arc<[f64]>,
+    pub omega: Arc<[f64]>,
+    pub g: Arc<[f64]>,
+    /// Static flexibility of the truncated modes at the load point, m/N.
+    pub residual: f64,
+    /// Step tables of each level (the coarsest built with the set-up, the others when first
+    /// needed by any impact that shares them).
+    pub grids: Arc<[OnceLock<Grid>; LEVELS]>,
+    /// The compression phase in closed form.
+    pub compression: Arc<Compression>,
+    /// The beam the set-up was built on (held so that its address, part of the key, is not
+    /// reused by another beam while the set-up is cached).
+    _basis: Arc<Basis>,
+}
+
+/// Everything a [`Shared`] set-up is computed from: the beam (by address), the load nodes and
+/// the bits of their weights, the offset `r`, the roll inertia, the ball's mass, `k1` and `p`,
+/// the string-plane stiffness and the resolution's mode cut-off and step phase.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub(super) struct Key {
+    basis: usize,
+    nodes: [usize; 2],
+    bits: [u64; 10],
+}
+
+impl Key {
+    /// The key of the set-up for `params` (the given ones: ball and strings) on the normal
+    /// model's beam `basis` and `coupling`.
+    pub fn of(basis: &Arc<Basis>, coupling: &Coupling, params: &Params, res: Resolution) -> Key {
+        let l = &coupling.load;
+        Key {
+            basis: Arc::as_ptr(basis) as usize,
+            nodes: l.nodes,
+            bits: [
+                l.weights[0].to_bits(),
+                l.weights[1].to_bits(),
+                coupling.r.to_bits(),
+                params.racket.ix.to_bits(),
+                params.ball.mass.to_bits(),
+                params.ball.k1.to_bits(),
+                params.ball.p.to_bits(),
+                params.strings.ks.to_bits(),
+                res.mode_cutoff.to_bits(),
+                res.phase_per_step.to_bits(),
+            ],
+        }
+    }
+}
+
+/// The most set-ups a thread keeps (each some 20 kB with all its step tables).
+pub(super) const CAPACITY: usize = 64;
+
+thread_local! {
+    static CACHE: RefCell<HashMap<Key, Shared>> = RefCell::new(HashMap::new());
+}
+
+impl Shared {
+    /// A new set-up, not yet cached, with the step table of the coarsest level (step `h`, s).
+    pub fn new(
+        lam: Vec<f64>,
+        g: Vec<f64>,
+        residual: f64,
+        compression: Compression,
+        basis: &Arc<Basis>,
+        h: f64,
+    ) -> Shared {
+        let omega: Vec<f64> = lam.iter().map(|l| l.sqrt()).collect();
+        let grids: [OnceLock<Grid>; LEVELS] = Default::default();
+        let _ = grids[START].set(Grid::new(&lam, &omega, &g, residual, h));
+        Shared {
+            lam: lam.into(),
+            omega: omega.into(),
+            g: g.into(),
+            residual,
+            grids: Arc::new(grids),
+            compression: Arc::new(compression),
+            _basis: Arc::clone(basis),
+        }
+    }
+
+    /// This thread's cached set-up of `key`, if any.
+    pub fn cached(key: &Key) -> Option<Shared> {
+        CACHE.with(|c| c.borrow().get(key).cloned())
+    }
+
+    /// Keep `self` as this thread's set-up of `key`.
+    pub fn keep(&self, key: Key) {
+        CACHE.with(|c| {
+            let mut map = c.borrow_mut();
+            if map.len() >= CAPACITY {
+                map.clear();
+            }
+            map.insert(key, self.clone());
+        });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::params::{Params, SolverKind};
+    use crate::solve::modal::{ModalModel, DEFAULT_RESOLUTION};
+
+    /// The paper's impact at `x`, `r`, `ks` with the modal solver.
+    fn at(x: f64, r: f64, ks: f64) -> Params {
+        let mut p = Params::paper();
+        p.numerics.solver = SolverKind::Modal;
+        (p.impact.x, p.impact.r, p.strings.ks) = (x, r, ks);
+        p
+    }
+
+    /// Every result a model built from the cache gives is the fresh model's, bit for bit (the
+    /// `Debug` text of an `f64` is its shortest exact form): over speeds, angles, azimuths,
+    /// spins and friction that share a set-up, and over impact points and strings that do not.
+    #[test]
+    fn a_cached_set_up_gives_the_fresh_models_results_bit_for_bit() {
+        for (x, r, ks) in [(0.16, 0.05, 2.74e4), (0.30, 0.0, 1.5e4), (0.45, 0.08, 4e4), (0.16, 0.05, 2.74e4)] {
+            for (v1, angle, azimuth, spin, mu) in [
+                (7.0, 0.0, 0.0, 0.0, 0.4),
+                (25.0, 0.0, 0.0, 0.0, 0.4),
+                (15.0, 30.0, 0.0, 2000.0, 0.4),
+                (15.0, 45.0, 90.0, -1500.0, 0.2),
+                (3.0, 10.0, 180.0, 500.0, 0.6),
+            ] {
+                let mut p = at(x, r, ks);
+                p.impact.v1 = v1;
+                (p.oblique.angle_deg, p.oblique.azimuth_deg, p.oblique.spin_rpm, p.oblique.mu) =
+                    (angle, azimuth, spin, mu);
+                let cached = ModalModel::new(&p).unwrap();
+                let fresh = ModalModel::build(&p, DEFAULT_RESOLUTION, false).unwrap();
+                assert_eq!(format!("{:?}", cached.run().unwrap()), format!("{:?}", fresh.run().unwrap()), "{p:?}");
+            }
+        }
+        let a = ModalModel::new(&at(0.2, 0.03, 3e4)).unwrap();
+        let mut faster = at(0.2, 0.03, 3e4);
+        faster.impact.v1 = 30.0;
+        let b = ModalModel::new(&faster).unwrap();
+        assert!(std::sync::Arc::ptr_eq(&a.compression, &b.compression), "a speed shares the set-up");
+        let c = ModalModel::new(&at(0.2, 0.03, 3.1e4)).unwrap();
+        assert!(!std::sync::Arc::ptr_eq(&a.compression, &c.compression), "other strings do not");
+    }
+}
