@@ -131,18 +131,11 @@ pub struct ModalModel {
     base: Model,
     /// The contact law (the paper's: validation leaves the modal solver no other).
     law: Cross,
-    /// Per coordinate (rigid first, then the retained flexible modes): `w^2`, `w`, `g`.
-    lam: Arc<[f64]>,
-    omega: Arc<[f64]>,
-    g: Arc<[f64]>,
-    /// Static flexibility of the truncated modes at the load point, m/N.
-    residual: f64,
     /// Largest impulse error allowed per step, N s.
     impulse_tolerance: f64,
-    /// Step tables of each level (built when first needed).
-    grids: Arc<[std::sync::OnceLock<Grid>; LEVELS]>,
-    /// The compression phase in closed form.
-    compression: Arc<Compression>,
+    /// The set-up shared with every impact of the same racket, point, strings and ball: the
+    /// retained coordinates, the compression phase, the step tables ([`shared`]).
+    set: Arc<Shared>,
 }
 
 impl ModalModel {
@@ -172,27 +165,17 @@ impl ModalModel {
             None => Self::set_up(&base, &law, params, res),
         };
         let impulse_tolerance = res.impulse_tolerance * params.ball.mass * base.params.impact.v1;
-        let m = ModalModel {
-            base,
-            law,
-            lam: shared.lam.clone(),
-            omega: shared.omega.clone(),
-            g: shared.g.clone(),
-            residual: shared.residual,
-            impulse_tolerance,
-            grids: shared.grids.clone(),
-            compression: shared.compression.clone(),
-        };
         if built && cached {
-            shared.keep(key);
+            Shared::keep(&shared, key);
         }
+        let m = ModalModel { base, law, impulse_tolerance, set: shared };
         Ok(m)
     }
 
     /// The set-up shared by every impact of the same racket, point, strings and ball: the
     /// retained modes, their amplitudes at the load point, the static flexibility of the others
     /// the compression phase's coupled modes and the step table at maximum compression.
-    fn set_up(base: &Model, law: &Cross, params: &Params, res: Resolution) -> Shared {
+    fn set_up(base: &Model, law: &Cross, params: &Params, res: Resolution) -> Arc<Shared> {
         let beam = base.beam();
         let basis = &base.basis;
         let cp = base.coupling;
@@ -223,15 +206,15 @@ impl ModalModel {
 
     /// The step tables of a refinement level.
     fn grid(&self, level: usize) -> &Grid {
-        self.grids[level].get_or_init(|| {
-            let h = self.grids[START].get().expect("start grid").h * 2f64.powi(START as i32 - level as i32);
-            Grid::new(&self.lam, &self.omega, &self.g, self.residual, h)
+        self.set.grids[level].get_or_init(|| {
+            let h = self.set.grids[START].get().expect("start grid").h * 2f64.powi(START as i32 - level as i32);
+            Grid::new(&self.set.lam, &self.set.omega, &self.set.g, self.set.residual, h)
         })
     }
 
     /// Number of retained flexible modes.
     pub fn retained_modes(&self) -> usize {
-        self.lam.len() - RIGID
+        self.set.lam.len() - RIGID
     }
 
     /// The step at maximum compression, where the steps begin, s.
@@ -244,7 +227,7 @@ impl ModalModel {
     pub fn run(&self) -> Result<ImpactResult> {
         let p = &self.base.params;
         let v1 = p.impact.v1;
-        let n = self.lam.len();
+        let n = self.set.lam.len();
         let limit = self.base.time_limit_s;
         let mut s = State { x: vec![Pair::splat(0.0); n] };
         let mut tangential = Follower::new(self.base.oblique.as_ref());
@@ -252,9 +235,9 @@ impl ModalModel {
             let mut feed = |h: f64, a: (f64, f64), b: (f64, f64)| {
                 tangential.advance(|| ForcePiece::hermite(h, a, b));
             };
-            self.compression.at_max(v1, limit, &mut s, Some((self.step(), &mut feed)))
+            self.set.compression.at_max(v1, limit, &mut s, Some((self.step(), &mut feed)))
         } else {
-            self.compression.at_max(v1, limit, &mut s, None)
+            self.set.compression.at_max(v1, limit, &mut s, None)
         };
         let max = max.ok_or(Error::ImpactDidNotEnd { limit_s: limit })?;
         let y0 = self.law.ball_compression_at_max(max.yt);
@@ -315,8 +298,8 @@ impl ModalModel {
         let e0 = 0.5 * p.ball.mass * p.impact.v1 * p.impact.v1;
         let e_a = -s.v(0) / (p.ball.mass.sqrt() * p.impact.v1);
         // (a fold from +0: an empty sum of f64 is -0)
-        let vib = (RIGID..self.lam.len())
-            .map(|k| 0.5 * (s.v(k) * s.v(k) + self.lam[k] * s.q(k) * s.q(k)))
+        let vib = (RIGID..self.set.lam.len())
+            .map(|k| 0.5 * (s.v(k) * s.v(k) + self.set.lam[k] * s.q(k) * s.q(k)))
             .fold(0.0, |a, b| a + b);
         let (peak_pe, recontact) = self.after_impact(s, since_separation);
         let result = ImpactResult {
@@ -347,14 +330,14 @@ impl ModalModel {
     /// whether the frame meets the ball again within that window, in closed form
     /// ([`FreeVibration`]). `s` is the state `lag` seconds after separation.
     fn after_impact(&self, s: &State, lag: f64) -> (f64, bool) {
-        let flex = RIGID..self.lam.len();
+        let flex = RIGID..self.set.lam.len();
         let (q, v): (Vec<f64>, Vec<f64>) = flex.clone().map(|j| (s.q(j), s.v(j))).unzip();
-        let free = FreeVibration::new(&self.omega[flex.clone()], &q, &v, &self.g[flex]);
+        let free = FreeVibration::new(&self.set.omega[flex.clone()], &q, &v, &self.set.g[flex]);
         let window = 2.0 / self.base.f1_hz;
         let peak = free.peak_pe(-lag, window - lag);
         // the gap Y_T without the flexible modes: the ball and the rigid racket
-        let gap0 = -(0..RIGID).map(|i| self.g[i] * s.q(i)).sum::<f64>();
-        let rate = -(0..RIGID).map(|i| self.g[i] * s.v(i)).sum::<f64>();
+        let gap0 = -(0..RIGID).map(|i| self.set.g[i] * s.q(i)).sum::<f64>();
+        let rate = -(0..RIGID).map(|i| self.set.g[i] * s.v(i)).sum::<f64>();
         (peak, free.meets_ball(gap0, rate, window - lag))
     }
 }

@@ -6,13 +6,13 @@
 //! them once per impact point (the beam's own modes are shared more widely still,
 //! [`crate::model::basis`]).
 //!
-//! Each thread keeps the set-ups it built last, keyed by the exact bits of everything they are
-//! computed from, so a model built from the cache is the one built afresh, bit for bit; the
-//! cache is emptied when it holds [`CAPACITY`] set-ups (a sweep over impact points, where no
-//! two points share one, pays a key comparison and an insertion a point).
+//! Each thread keeps the last [`CAPACITY`] set-ups it built, keyed by the exact bits of
+//! everything they are computed from, so a model built from the cache is the one built afresh,
+//! bit for bit. A sweep whose inner axes are the speed, angle, spin (or an impact point axis of
+//! at most [`CAPACITY`] values) finds them there; a sweep over impact points and strings, where
+//! no two points share one, pays a few key comparisons a point.
 
 use std::cell::RefCell;
-use std::collections::HashMap;
 use std::sync::{Arc, OnceLock};
 
 use crate::model::basis::Basis;
@@ -22,21 +22,20 @@ use crate::solve::modal::compression::Compression;
 use crate::solve::modal::steps::Grid;
 use crate::solve::modal::{Resolution, LEVELS, START};
 
-/// The shared set-up (each part behind its own reference count: cloning it into a model costs
-/// a few increments).
-#[derive(Debug, Clone)]
+/// The shared set-up (a model holds it behind a reference count).
+#[derive(Debug)]
 pub(super) struct Shared {
     /// Per coordinate (rigid first, then the retained flexible modes): `w^2`, `w`, `g`.
-    pub lam: Arc<[f64]>,
-    pub omega: Arc<[f64]>,
-    pub g: Arc<[f64]>,
+    pub lam: Vec<f64>,
+    pub omega: Vec<f64>,
+    pub g: Vec<f64>,
     /// Static flexibility of the truncated modes at the load point, m/N.
     pub residual: f64,
     /// Step tables of each level (the coarsest built with the set-up, the others when first
     /// needed by any impact that shares them).
-    pub grids: Arc<[OnceLock<Grid>; LEVELS]>,
+    pub grids: [OnceLock<Grid>; LEVELS],
     /// The compression phase in closed form.
-    pub compression: Arc<Compression>,
+    pub compression: Compression,
     /// The beam the set-up was built on (held so that its address, part of the key, is not
     /// reused by another beam while the set-up is cached).
     _basis: Arc<Basis>,
@@ -77,10 +76,16 @@ impl Key {
 }
 
 /// The most set-ups a thread keeps (each some 20 kB with all its step tables).
-pub(super) const CAPACITY: usize = 64;
+pub(super) const CAPACITY: usize = 16;
+
+/// A thread's cached set-ups: a ring of slots, the oldest replaced first.
+struct Ring {
+    slots: [Option<(Key, Arc<Shared>)>; CAPACITY],
+    next: usize,
+}
 
 thread_local! {
-    static CACHE: RefCell<HashMap<Key, Shared>> = RefCell::new(HashMap::new());
+    static CACHE: RefCell<Ring> = const { RefCell::new(Ring { slots: [const { None }; CAPACITY], next: 0 }) };
 }
 
 impl Shared {
@@ -92,34 +97,25 @@ impl Shared {
         compression: Compression,
         basis: &Arc<Basis>,
         h: f64,
-    ) -> Shared {
+    ) -> Arc<Shared> {
         let omega: Vec<f64> = lam.iter().map(|l| l.sqrt()).collect();
         let grids: [OnceLock<Grid>; LEVELS] = Default::default();
         let _ = grids[START].set(Grid::new(&lam, &omega, &g, residual, h));
-        Shared {
-            lam: lam.into(),
-            omega: omega.into(),
-            g: g.into(),
-            residual,
-            grids: Arc::new(grids),
-            compression: Arc::new(compression),
-            _basis: Arc::clone(basis),
-        }
+        Arc::new(Shared { lam, omega, g, residual, grids, compression, _basis: Arc::clone(basis) })
     }
 
     /// This thread's cached set-up of `key`, if any.
-    pub fn cached(key: &Key) -> Option<Shared> {
-        CACHE.with(|c| c.borrow().get(key).cloned())
+    pub fn cached(key: &Key) -> Option<Arc<Shared>> {
+        CACHE.with(|c| c.borrow().slots.iter().flatten().find(|(k, _)| k == key).map(|(_, s)| Arc::clone(s)))
     }
 
-    /// Keep `self` as this thread's set-up of `key`.
-    pub fn keep(&self, key: Key) {
+    /// Keep `shared` as this thread's set-up of `key` (in place of the oldest when full).
+    pub fn keep(shared: &Arc<Shared>, key: Key) {
         CACHE.with(|c| {
-            let mut map = c.borrow_mut();
-            if map.len() >= CAPACITY {
-                map.clear();
-            }
-            map.insert(key, self.clone());
+            let mut ring = c.borrow_mut();
+            let i = ring.next;
+            ring.slots[i] = Some((key, Arc::clone(shared)));
+            ring.next = (i + 1) % CAPACITY;
         });
     }
 }
@@ -163,8 +159,8 @@ mod tests {
         let mut faster = at(0.2, 0.03, 3e4);
         faster.impact.v1 = 30.0;
         let b = ModalModel::new(&faster).unwrap();
-        assert!(std::sync::Arc::ptr_eq(&a.compression, &b.compression), "a speed shares the set-up");
+        assert!(std::sync::Arc::ptr_eq(&a.set, &b.set), "a speed shares the set-up");
         let c = ModalModel::new(&at(0.2, 0.03, 3.1e4)).unwrap();
-        assert!(!std::sync::Arc::ptr_eq(&a.compression, &c.compression), "other strings do not");
+        assert!(!std::sync::Arc::ptr_eq(&a.set, &c.set), "other strings do not");
     }
 }
