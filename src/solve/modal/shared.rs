@@ -2,19 +2,18 @@
 //! same racket, impact point, strings and ball: the retained coordinates (`w^2`, `w`, `g`), the
 //! truncated modes' static flexibility, the coupled modes of the compression phase (per unit
 //! incident speed) and the step tables (per step length). None of them depends on the incident
-//! speed, angle, azimuth, spin or friction, so a sweep, map or uncertainty run over those builds
-//! them once per impact point (the beam's own modes are shared more widely still,
+//! speed, angle, azimuth, spin or friction, so a sweep or an uncertainty run over those builds
+//! them once per impact point (the beam's own modes are shared more widely still, by racket,
 //! [`crate::model::basis`]).
 //!
-//! Each thread keeps the last [`CAPACITY`] set-ups it built, keyed by the exact bits of
-//! everything they are computed from, so a model built from the cache is the one built afresh,
-//! bit for bit. A sweep whose inner axes are the speed, angle, azimuth, spin or friction finds
-//! its set-up there (a sweep of 1000 points over x, r and v1: 135,000 instructions a point
-//! against 204,000 without); a sweep over impact points and strings, where no two points share
-//! one, pays a key comparison a point and frees each set-up one point later. Keeping more set-ups
-//! (16 were tried) would serve an inner impact-point axis too, but on a million-point sweep over
-//! x, r and ks the held set-ups cost more in the allocator and the caches than the comparisons
-//! save (about 4 % of the CPU time), so one is kept.
+//! Each thread keeps the last set-up it built, keyed by the exact bits of everything it is
+//! computed from, so a model built from it is the one built afresh, bit for bit. A sweep whose
+//! inner axes are the speed, angle, azimuth, spin or friction finds its set-up there (a sweep of
+//! 1000 points over x, r and v1: 135,000 instructions a point against 204,000 without); a sweep
+//! over impact points and strings, where no two points share one, pays a key comparison a point
+//! and frees each set-up one point later. Keeping more set-ups (16 were tried) would serve an
+//! inner impact-point axis too, but on a million-point sweep over x, r and ks the held set-ups
+//! cost more in the allocator and the caches than they save (a few per cent of the CPU time).
 
 use std::cell::RefCell;
 use std::sync::{Arc, OnceLock};
@@ -79,17 +78,9 @@ impl Key {
     }
 }
 
-/// The most set-ups a thread keeps (each some 20 kB with all its step tables).
-pub(super) const CAPACITY: usize = 1;
-
-/// A thread's cached set-ups: a ring of slots, the oldest replaced first.
-struct Ring {
-    slots: [Option<(Key, Arc<Shared>)>; CAPACITY],
-    next: usize,
-}
-
 thread_local! {
-    static CACHE: RefCell<Ring> = const { RefCell::new(Ring { slots: [const { None }; CAPACITY], next: 0 }) };
+    /// This thread's last set-up and its key.
+    static LAST: RefCell<Option<(Key, Arc<Shared>)>> = const { RefCell::new(None) };
 }
 
 impl Shared {
@@ -110,17 +101,12 @@ impl Shared {
 
     /// This thread's cached set-up of `key`, if any.
     pub fn cached(key: &Key) -> Option<Arc<Shared>> {
-        CACHE.with(|c| c.borrow().slots.iter().flatten().find(|(k, _)| k == key).map(|(_, s)| Arc::clone(s)))
+        LAST.with(|c| c.borrow().as_ref().filter(|(k, _)| k == key).map(|(_, s)| Arc::clone(s)))
     }
 
-    /// Keep `shared` as this thread's set-up of `key` (in place of the oldest when full).
+    /// Keep `shared` as this thread's set-up of `key` (in place of the one kept before).
     pub fn keep(shared: &Arc<Shared>, key: Key) {
-        CACHE.with(|c| {
-            let mut ring = c.borrow_mut();
-            let i = ring.next;
-            ring.slots[i] = Some((key, Arc::clone(shared)));
-            ring.next = (i + 1) % CAPACITY;
-        });
+        LAST.with(|c| *c.borrow_mut() = Some((key, Arc::clone(shared))));
     }
 }
 
