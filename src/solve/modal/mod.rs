@@ -70,9 +70,15 @@
 //! the law's own variable `u`, in which the force is smooth), and fewer coordinates (the modes
 //! above ten times the contact frequency condensed with a dynamic, not only static, correction;
 //! a plain lower cut-off fails the 1e-4 agreement). With set-up, as a sweep runs it (the model
-//! prepared per point: coupled modes 20-25k, step tables 8k a level, three levels built during
-//! the run), an impact costs about 190,000 instructions (231,000 before). The same impact at 30
-//! deg with 2000 rpm costs 142,000 (198,000): the tangential law follows 40-odd force pieces.
+//! prepared per point: coupled modes 20-25k, step tables 8-11k a level, three levels built
+//! during the run), an impact costs about 190,000 instructions (231,000 before). The same impact
+//! at 30 deg with 2000 rpm costs 142,000 (198,000): the tangential law follows 40-odd force
+//! pieces. The set-up does not depend on the incident speed, angle, azimuth, spin or friction,
+//! so an impact that differs from the one before on its thread only in those takes it as it is
+//! (`shared`, bit for bit the same model): a 1000-point sweep over x, r and v1 costs 135,000
+//! instructions a point (set-up 9k, from 47k), one over x, r and ks still 194,000 (every point
+//! its own set-up: 46k, and 25k of step tables built during the run; the sweep's own parsing,
+//! validation and CSV rows 23k, from 27k).
 //!
 //! Design note: a quintic force history (carrying `F''` too, 6th order) was tried. Its steps can
 //! be twice as long for the same accuracy, but each costs about 1.5 times as much, its set-up
@@ -134,7 +140,7 @@ pub struct ModalModel {
     /// Largest impulse error allowed per step, N s.
     impulse_tolerance: f64,
     /// The set-up shared with every impact of the same racket, point, strings and ball: the
-    /// retained coordinates, the compression phase, the step tables ([`shared`]).
+    /// retained coordinates, the compression phase, the step tables (`shared`).
     set: Arc<Shared>,
 }
 
@@ -147,7 +153,7 @@ impl ModalModel {
     /// As [`ModalModel::new`] with a chosen resolution (for convergence studies). The set-up
     /// that does not depend on the incident speed, angle, azimuth, spin or friction (the
     /// retained modes, the coupled modes, the step tables) comes from this thread's cache when
-    /// an impact of the same racket, point, strings and ball built it ([`shared`]).
+    /// an impact of the same racket, point, strings and ball built it (`shared`).
     pub fn with_resolution(params: &Params, res: Resolution) -> Result<Self> {
         Self::build(params, res, true)
     }
