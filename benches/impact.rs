@@ -1,9 +1,10 @@
 //! Criterion benchmarks (`make bench`): one impact at the paper's settings (and, on the modal
 //! solver, the same impact oblique and spinning), a fine `hat` beam,
-//! a 100-point Fig 5-style sweep, every experiment's table without PNG encoding, and the PNG
-//! rendering alone.
+//! a 100-point Fig 5-style sweep, sweeps of 1000 points with their set-up as the `sweep` command
+//! runs them (per-point cost: the reciprocal of the throughput), every experiment's table
+//! without PNG encoding, and the PNG rendering alone.
 
-use criterion::{criterion_group, criterion_main, Criterion};
+use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use racket_impact::experiments;
 use racket_impact::params::{LoadRule, Params};
 use racket_impact::solve::{simulate, Model};
@@ -101,5 +102,41 @@ fn png(c: &mut Criterion) {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-criterion_group!(benches, paper_impact, sweeps, png);
+/// Sweeps of 10 x 10 x 10 impacts through the code path of the `sweep` command (parameters of
+/// each point from its flags, a model prepared per point, the CSV rows formatted; nothing
+/// written): over the impact point and the string stiffness, where every point needs its own
+/// set-up, and over the impact point and the ball speed, where the set-up of one point serves
+/// the ten speeds. Criterion's throughput is points per second.
+fn sweep_points(c: &mut Criterion) {
+    use racket_impact::study::sweep::Sweep;
+    let mut group = c.benchmark_group("sweep_per_point");
+    group.sample_size(10);
+    let cases: [(&str, [&str; 6]); 2] = [
+        ("x_r_ks_10x10x10", ["--x", "0.02:0.30:10", "--r", "0:0.08:10", "--ks", "1e4:5e4:10"]),
+        ("x_r_v1_10x10x10", ["--x", "0.02:0.30:10", "--r", "0:0.08:10", "--v1", "5:40:10"]),
+    ];
+    for (name, pairs) in cases {
+        let pairs: Vec<String> = pairs.iter().map(|s| s.to_string()).collect();
+        let sweep = Sweep::from_pairs(None, None, &pairs).unwrap();
+        group.throughput(Throughput::Elements(sweep.len()));
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                let mut rows = 0;
+                sweep
+                    .run(
+                        |chunk| {
+                            rows += chunk.len();
+                            Ok(())
+                        },
+                        |_| {},
+                    )
+                    .unwrap();
+                rows
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, paper_impact, sweep_points, sweeps, png);
 criterion_main!(benches);

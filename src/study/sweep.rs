@@ -314,7 +314,8 @@ impl Sweep {
     pub fn validate_all(&self) -> Result<()> {
         let total = self.len();
         limits::check_count("sweep", total as f64, MAX_POINTS, "the impacts of a sweep (the product of the counts)")?;
-        (0..total).into_par_iter().try_for_each(|i| self.point(i).map(|_| ()))
+        let points = Points::of(self)?;
+        (0..total).into_par_iter().try_for_each(|i| points.at(i).0.validate())
     }
 
     /// Run every impact in parallel chunks and hand each finished chunk's CSV rows, in order,
@@ -325,13 +326,15 @@ impl Sweep {
         let oblique = self.is_oblique();
         let fixed = self.fixed_keys(oblique);
         let solver_swept = self.solver_swept();
+        let points = Points::of(self)?;
         let mut start = 0u64;
         while start < total {
             let end = (start + CHUNK as u64).min(total);
             let rows: Vec<Vec<String>> = (start..end)
                 .into_par_iter()
                 .map(|i| {
-                    let (p, vals) = self.point(i)?;
+                    let (p, vals) = points.at(i);
+                    // (`simulate` validates the parameters, as `point` would)
                     let r = simulate(&p)?;
                     let fixed = fixed.iter().map(|k| number_text(keys::value_number(k, &p).unwrap_or(f64::NAN)));
                     Ok(vals
@@ -347,6 +350,52 @@ impl Sweep {
             start = end;
         }
         Ok(())
+    }
+}
+
+/// The points of a sweep with every value parsed once: the defaults with the fixed overrides
+/// applied, and each axis value as an override of its one field. Applying an axis's override
+/// after the fixed ones is what [`Sweep::point`] does by setting it on them (each key has its
+/// own field), without parsing text or validating per point.
+struct Points<'a> {
+    sweep: &'a Sweep,
+    start: Params,
+    values: Vec<Vec<Overrides>>,
+}
+
+impl<'a> Points<'a> {
+    fn of(sweep: &'a Sweep) -> Result<Self> {
+        let mut start = sweep.defaults;
+        sweep.base.apply(&mut start);
+        let values = sweep
+            .axes
+            .iter()
+            .map(|axis| {
+                axis.values
+                    .iter()
+                    .map(|v| {
+                        let mut o = Overrides::default();
+                        o.set(&axis.key, v)?;
+                        Ok(o)
+                    })
+                    .collect::<Result<Vec<_>>>()
+            })
+            .collect::<Result<_>>()?;
+        Ok(Points { sweep, start, values })
+    }
+
+    /// The parameters of impact `i` (not validated) and its axis values, as [`Sweep::point`].
+    fn at(&self, mut i: u64) -> (Params, Vec<&'a str>) {
+        let mut p = self.start;
+        let mut vals = vec![""; self.values.len()];
+        for (k, (axis, values)) in self.sweep.axes.iter().zip(&self.values).enumerate().rev() {
+            let n = values.len() as u64;
+            let j = (i % n) as usize;
+            i /= n;
+            values[j].apply(&mut p);
+            vals[k] = &axis.values[j];
+        }
+        (p, vals)
     }
 }
 
@@ -380,7 +429,8 @@ mod tests {
     fn points_are_row_major_and_match_single_runs() {
         let sweep = Sweep {
             defaults: Params::default(),
-            base: Overrides { load: Some(crate::params::LoadRule::Node), ..Default::default() },
+            // (a fixed value of a swept key is overridden by the axis)
+            base: Overrides { load: Some(crate::params::LoadRule::Node), ks: Some(9e4), ..Default::default() },
             axes: vec![parse_spec("ks", "2e4,4e4").unwrap(), parse_spec("x", "0.1:0.2:3").unwrap()],
         };
         assert_eq!(sweep.len(), 6);
@@ -398,6 +448,12 @@ mod tests {
             )
             .unwrap();
         assert_eq!(rows.len(), 6);
+        // the parsed points are the points
+        let points = Points::of(&sweep).unwrap();
+        for i in 0..sweep.len() {
+            let (a, b) = (sweep.point(i).unwrap(), points.at(i));
+            assert_eq!(format!("{a:?}"), format!("{b:?}"));
+        }
         // swept ks, x; then the recorded r and v1; then the results
         assert_eq!(sweep.header()[..5], ["ks_n_per_m", "x_m", "r_m", "v1_m_per_s", "e_a"]);
         assert_eq!(rows[4][2], "0.05", "r of the default (Fig 4) parameters is recorded");

@@ -70,9 +70,15 @@
 //! the law's own variable `u`, in which the force is smooth), and fewer coordinates (the modes
 //! above ten times the contact frequency condensed with a dynamic, not only static, correction;
 //! a plain lower cut-off fails the 1e-4 agreement). With set-up, as a sweep runs it (the model
-//! prepared per point: coupled modes 20-25k, step tables 8k a level, three levels built during
-//! the run), an impact costs about 190,000 instructions (231,000 before). The same impact at 30
-//! deg with 2000 rpm costs 142,000 (198,000): the tangential law follows 40-odd force pieces.
+//! prepared per point: coupled modes 20-25k, step tables 8-11k a level, three levels built
+//! during the run), an impact costs about 190,000 instructions (231,000 before). The same impact
+//! at 30 deg with 2000 rpm costs 142,000 (198,000): the tangential law follows 40-odd force
+//! pieces. The set-up does not depend on the incident speed, angle, azimuth, spin or friction,
+//! so an impact that differs from the one before on its thread only in those takes it as it is
+//! (`shared`, bit for bit the same model): a 1000-point sweep over x, r and v1 costs 135,000
+//! instructions a point (set-up 9k, from 47k), one over x, r and ks still 194,000 (every point
+//! its own set-up: 46k, and 25k of step tables built during the run; the sweep's own parsing,
+//! validation and CSV rows 23k, from 27k).
 //!
 //! Design note: a quintic force history (carrying `F''` too, 6th order) was tried. Its steps can
 //! be twice as long for the same accuracy, but each costs about 1.5 times as much, its set-up
@@ -81,6 +87,7 @@
 mod compression;
 mod pair;
 mod run;
+mod shared;
 mod steps;
 
 use crate::error::{Error, Result};
@@ -95,6 +102,8 @@ use crate::solve::Solver;
 use compression::Compression;
 use pair::Pair;
 use run::{End, Run};
+use shared::{Key, Shared};
+use std::sync::Arc;
 use steps::Grid;
 
 /// How finely the modal solver resolves an impact.
@@ -128,18 +137,11 @@ pub struct ModalModel {
     base: Model,
     /// The contact law (the paper's: validation leaves the modal solver no other).
     law: Cross,
-    /// Per coordinate (rigid first, then the retained flexible modes): `w^2`, `w`, `g`.
-    lam: Vec<f64>,
-    omega: Vec<f64>,
-    g: Vec<f64>,
-    /// Static flexibility of the truncated modes at the load point, m/N.
-    residual: f64,
     /// Largest impulse error allowed per step, N s.
     impulse_tolerance: f64,
-    /// Step tables of each level (built when first needed).
-    grids: [std::sync::OnceLock<Grid>; LEVELS],
-    /// The compression phase in closed form.
-    compression: Compression,
+    /// The set-up shared with every impact of the same racket, point, strings and ball: the
+    /// retained coordinates, the compression phase, the step tables (`shared`).
+    set: Arc<Shared>,
 }
 
 impl ModalModel {
@@ -148,18 +150,45 @@ impl ModalModel {
         Self::with_resolution(params, DEFAULT_RESOLUTION)
     }
 
-    /// As [`ModalModel::new`] with a chosen resolution (for convergence studies).
+    /// As [`ModalModel::new`] with a chosen resolution (for convergence studies). The set-up
+    /// that does not depend on the incident speed, angle, azimuth, spin or friction (the
+    /// retained modes, the coupled modes, the step tables) comes from this thread's cache when
+    /// an impact of the same racket, point, strings and ball built it (`shared`).
     pub fn with_resolution(params: &Params, res: Resolution) -> Result<Self> {
+        Self::build(params, res, true)
+    }
+
+    /// As [`ModalModel::with_resolution`], the set-up from the cache (and kept there) if
+    /// `cached`, else built afresh.
+    fn build(params: &Params, res: Resolution, cached: bool) -> Result<Self> {
         let base = Model::for_modal(params)?;
         let law = Cross::new(&params.ball, &params.strings);
+        let key = Key::of(&base.basis, &base.coupling, params, res);
+        let hit = if cached { Shared::cached(&key) } else { None };
+        let built = hit.is_none();
+        let shared = match hit {
+            Some(shared) => shared,
+            None => Self::set_up(&base, &law, params, res),
+        };
+        let impulse_tolerance = res.impulse_tolerance * params.ball.mass * base.params.impact.v1;
+        if built && cached {
+            Shared::keep(&shared, key);
+        }
+        let m = ModalModel { base, law, impulse_tolerance, set: shared };
+        Ok(m)
+    }
+
+    /// The set-up shared by every impact of the same racket, point, strings and ball: the
+    /// retained modes, their amplitudes at the load point, the static flexibility of the others
+    /// the compression phase's coupled modes and the step table at maximum compression.
+    fn set_up(base: &Model, law: &Cross, params: &Params, res: Resolution) -> Arc<Shared> {
         let beam = base.beam();
-        let basis = std::sync::Arc::clone(&base.basis);
+        let basis = &base.basis;
         let cp = base.coupling;
         let mb = params.ball.mass;
         let [g_b, g_t, g_r, g_tw] = cp.rigid_amplitudes(mb, beam, params.racket.ix);
         let k_c = law.max_stiffness();
         let omega_contact = (k_c * (1.0 / mb + g_t * g_t + g_r * g_r + g_tw * g_tw)).sqrt();
-        let h = res.phase_per_step / omega_contact;
         let cutoff = res.mode_cutoff * omega_contact;
         // (modes are ascending: the retained ones are a prefix)
         let kept = basis.lam.iter().take_while(|l| l.sqrt() <= cutoff).count();
@@ -177,36 +206,21 @@ impl ModalModel {
                 residual += gk * gk / l;
             }
         }
-        let omega: Vec<f64> = lam.iter().map(|l| l.sqrt()).collect();
-        let impulse_tolerance = res.impulse_tolerance * mb * base.params.impact.v1;
         let compression = Compression::new(&lam, &g, law.compression_stiffness(), residual, mb);
-        let m = ModalModel {
-            base,
-            law,
-            lam,
-            omega,
-            g,
-            residual,
-            impulse_tolerance,
-            grids: Default::default(),
-            compression,
-        };
-        let grid = Grid::new(&m, h);
-        let _ = m.grids[START].set(grid);
-        Ok(m)
+        Shared::new(lam, g, residual, compression, basis, res.phase_per_step / omega_contact)
     }
 
     /// The step tables of a refinement level.
     fn grid(&self, level: usize) -> &Grid {
-        self.grids[level].get_or_init(|| {
-            let h = self.grids[START].get().expect("start grid").h * 2f64.powi(START as i32 - level as i32);
-            Grid::new(self, h)
+        self.set.grids[level].get_or_init(|| {
+            let h = self.set.grids[START].get().expect("start grid").h * 2f64.powi(START as i32 - level as i32);
+            Grid::new(&self.set.lam, &self.set.omega, &self.set.g, self.set.residual, h)
         })
     }
 
     /// Number of retained flexible modes.
     pub fn retained_modes(&self) -> usize {
-        self.lam.len() - RIGID
+        self.set.lam.len() - RIGID
     }
 
     /// The step at maximum compression, where the steps begin, s.
@@ -219,7 +233,7 @@ impl ModalModel {
     pub fn run(&self) -> Result<ImpactResult> {
         let p = &self.base.params;
         let v1 = p.impact.v1;
-        let n = self.lam.len();
+        let n = self.set.lam.len();
         let limit = self.base.time_limit_s;
         let mut s = State { x: vec![Pair::splat(0.0); n] };
         let mut tangential = Follower::new(self.base.oblique.as_ref());
@@ -227,9 +241,9 @@ impl ModalModel {
             let mut feed = |h: f64, a: (f64, f64), b: (f64, f64)| {
                 tangential.advance(|| ForcePiece::hermite(h, a, b));
             };
-            self.compression.at_max(v1, limit, &mut s, Some((self.step(), &mut feed)))
+            self.set.compression.at_max(v1, limit, &mut s, Some((self.step(), &mut feed)))
         } else {
-            self.compression.at_max(v1, limit, &mut s, None)
+            self.set.compression.at_max(v1, limit, &mut s, None)
         };
         let max = max.ok_or(Error::ImpactDidNotEnd { limit_s: limit })?;
         let y0 = self.law.ball_compression_at_max(max.yt);
@@ -290,8 +304,8 @@ impl ModalModel {
         let e0 = 0.5 * p.ball.mass * p.impact.v1 * p.impact.v1;
         let e_a = -s.v(0) / (p.ball.mass.sqrt() * p.impact.v1);
         // (a fold from +0: an empty sum of f64 is -0)
-        let vib = (RIGID..self.lam.len())
-            .map(|k| 0.5 * (s.v(k) * s.v(k) + self.lam[k] * s.q(k) * s.q(k)))
+        let vib = (RIGID..self.set.lam.len())
+            .map(|k| 0.5 * (s.v(k) * s.v(k) + self.set.lam[k] * s.q(k) * s.q(k)))
             .fold(0.0, |a, b| a + b);
         let (peak_pe, recontact) = self.after_impact(s, since_separation);
         let result = ImpactResult {
@@ -322,14 +336,14 @@ impl ModalModel {
     /// whether the frame meets the ball again within that window, in closed form
     /// ([`FreeVibration`]). `s` is the state `lag` seconds after separation.
     fn after_impact(&self, s: &State, lag: f64) -> (f64, bool) {
-        let flex = RIGID..self.lam.len();
+        let flex = RIGID..self.set.lam.len();
         let (q, v): (Vec<f64>, Vec<f64>) = flex.clone().map(|j| (s.q(j), s.v(j))).unzip();
-        let free = FreeVibration::new(&self.omega[flex.clone()], &q, &v, &self.g[flex]);
+        let free = FreeVibration::new(&self.set.omega[flex.clone()], &q, &v, &self.set.g[flex]);
         let window = 2.0 / self.base.f1_hz;
         let peak = free.peak_pe(-lag, window - lag);
         // the gap Y_T without the flexible modes: the ball and the rigid racket
-        let gap0 = -(0..RIGID).map(|i| self.g[i] * s.q(i)).sum::<f64>();
-        let rate = -(0..RIGID).map(|i| self.g[i] * s.v(i)).sum::<f64>();
+        let gap0 = -(0..RIGID).map(|i| self.set.g[i] * s.q(i)).sum::<f64>();
+        let rate = -(0..RIGID).map(|i| self.set.g[i] * s.v(i)).sum::<f64>();
         (peak, free.meets_ball(gap0, rate, window - lag))
     }
 }

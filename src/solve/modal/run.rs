@@ -148,9 +148,9 @@ impl Run<'_> {
         let e = modal_energy
             + c.ball_energy_with_loss(end.phase, &st)
             + c.string_energy(&st)
-            + 0.5 * m.residual * end.f * end.f;
+            + 0.5 * m.set.residual * end.f * end.f;
         self.energy_err = self.energy_err.max((e - e0).abs() / e0);
-        let pm = mb.sqrt() * self.s.v(0) + self.s.v(1) / m.g[1];
+        let pm = mb.sqrt() * self.s.v(0) + self.s.v(1) / m.set.g[1];
         self.momentum_err = self.momentum_err.max((pm - mb * v1).abs() / (mb * v1));
     }
 }
@@ -196,6 +196,6 @@ impl ModalModel {
 
     /// The coordinates' energy, kinetic plus potential, J.
     pub(super) fn energy(&self, s: &State) -> f64 {
-        0.5 * (0..s.x.len()).map(|j| s.v(j) * s.v(j) + self.lam[j] * s.q(j) * s.q(j)).sum::<f64>()
+        0.5 * (0..s.x.len()).map(|j| s.v(j) * s.v(j) + self.set.lam[j] * s.q(j) * s.q(j)).sum::<f64>()
     }
 }

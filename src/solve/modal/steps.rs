@@ -4,7 +4,6 @@
 
 use crate::model::contact::StepCoupling;
 use crate::solve::modal::pair::Pair;
-use crate::solve::modal::ModalModel;
 
 /// The exact step of one coordinate under the cubic force history, each coefficient a pair
 /// acting on the coordinate's `[q, q']` at once (so that a step is a few two-wide operations a
@@ -36,12 +35,13 @@ pub(super) struct Grid {
 }
 
 impl Grid {
-    pub fn new(m: &ModalModel, h: f64) -> Grid {
-        let coef: Vec<Coef> = m
-            .lam
+    /// The tables for coordinates with `w^2 = lam`, `w = omega` and load-point amplitudes `g`,
+    /// the truncated modes' static flexibility `residual` (m/N) and the step `h`, s.
+    pub fn new(lam: &[f64], omega: &[f64], g: &[f64], residual: f64, h: f64) -> Grid {
+        let coef: Vec<Coef> = lam
             .iter()
-            .zip(&m.omega)
-            .zip(&m.g)
+            .zip(omega)
+            .zip(g)
             .map(|((&lam, &w), &g)| {
                 let (s, c) = (w * h).sin_cos();
                 let (rq, rv) = responses(lam, h, (s, c));
@@ -60,11 +60,11 @@ impl Grid {
             })
             .collect();
         let n = coef.len();
-        let g = |j: usize| m.g[j];
-        let bf = sum4(n, |j| g(j) * coef[j].f1.get()[0]) + m.residual;
+        let g = |j: usize| g[j];
+        let bf = sum4(n, |j| g(j) * coef[j].f1.get()[0]) + residual;
         let bd = sum4(n, |j| g(j) * coef[j].d1.get()[0]);
         let cf = sum4(n, |j| g(j) * coef[j].f1.get()[1]);
-        let cd = sum4(n, |j| g(j) * coef[j].d1.get()[1]) + m.residual;
+        let cd = sum4(n, |j| g(j) * coef[j].d1.get()[1]) + residual;
         Grid { h, coef, coupling: StepCoupling { bf, bd, cf, cd } }
     }
 }
