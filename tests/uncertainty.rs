@@ -50,6 +50,8 @@ fn json_has_the_documented_shape_and_a_seed_fixes_it() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!((v["samples"].as_u64(), v["seed"].as_u64()), (Some(32), Some(7)));
+    // the fixed parameters are recorded beside the varied ones
+    assert!(v["params"]["strings"]["ks"].is_number() && v["params"]["impact"]["x"].is_number(), "{v}");
     assert_eq!(v["inputs"][0]["key"], "ks");
     assert_eq!(v["inputs"][1]["dist"], "normal:2.55:0.05");
     let e_a = &v["outputs"]["e_a"];
@@ -112,7 +114,7 @@ fn claims_give_every_claim_a_verdict() {
 fn bad_specs_are_refused_in_one_line_and_nothing_is_written() {
     let s = Scratch::new("bad");
     let path = s.path("never.json");
-    let cases: [(&[&str], &str); 12] = [
+    let cases: [(&[&str], &str); 16] = [
         (&["--vary", "kz=uniform:1:2"], "unknown parameter 'kz'"),
         (&["--vary", "ks=uniform:5e4:2e4"], "invalid ks = uniform:5e4:2e4: the range needs LO < HI"),
         (&["--vary", "ks=normal:4e4:-5"], "a normal needs SD > 0"),
@@ -127,6 +129,15 @@ fn bad_specs_are_refused_in_one_line_and_nothing_is_written() {
         (&["--vary", "ks=uniform:2e4:3e4", "--ks", "3e4"], "ks is both fixed (--ks) and varied"),
         (&["--vary", "load=uniform:1:2"], "only real-valued parameters"),
         (&["--claims", "--vary", "ks=uniform:2e4:3e4"], "invalid claims"),
+        // an input the model does not read is refused as the same fixed flag is
+        (&["--vary", "mu=uniform:0.2:0.5"], "mu is used only for an oblique or spinning ball"),
+        (&["--vary", "dt=uniform:1e-7:1e-6"], "dt is used only by the fd solver"),
+        (&["--vary", "hand-damping=uniform:1:20"], "hand-damping is used only with grip = hand"),
+        // and a friction the named string sets from its database entry
+        (
+            &["--string", "alu-rough-16", "--angle-deg", "30", "--vary", "mu=uniform:0.2:0.5"],
+            "mu is set by string = alu-rough-16",
+        ),
         (&[], "give at least one --vary KEY=DIST"),
     ];
     for (args, want) in cases {

@@ -231,7 +231,34 @@ impl Sweep {
         base.solver = default_solver(&base, &axes);
         let sweep = Sweep { defaults, base, axes };
         sweep.validate_all()?; // a bad value anywhere fails before anything is written
+        sweep.check_friction_not_set_by_string()?;
         Ok(sweep)
+    }
+
+    /// A swept or configured `mu` / `mu-ss` beside a named string whose database entry sets it
+    /// would be ignored at every point (the string's value is used): refused, as `simulate`
+    /// refuses it ([`crate::params::strings::apply`]).
+    fn check_friction_not_set_by_string(&self) -> Result<()> {
+        let given = |key: &str| {
+            self.axes.iter().any(|a| a.key == key)
+                || match key {
+                    "mu" => self.base.mu.is_some(),
+                    _ => self.base.mu_ss.is_some(),
+                }
+        };
+        for p in self.representatives()? {
+            let Some(e) = crate::params::strings::entry(p.oblique.string) else { continue };
+            for (key, set) in [("mu", e.mu.is_some()), ("mu-ss", e.mu_ss.is_some())] {
+                if set && given(key) {
+                    return Err(Error::invalid(
+                        key,
+                        "given",
+                        format!("is set by string = {} (its TWU database value); give one or the other", e.id),
+                    ));
+                }
+            }
+        }
+        Ok(())
     }
 
     /// One impact's parameters per bounding value of each axis ([`Axis::extremes`]; the other

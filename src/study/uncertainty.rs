@@ -136,7 +136,41 @@ impl Study {
             }
             inputs.push(input);
         }
-        Ok(Study { base, inputs, design })
+        let study = Study { base, inputs, design };
+        study.check_each_input_is_read(varies)?;
+        Ok(study)
+    }
+
+    /// Refuse an input the model does not read (as the same fixed flag is refused,
+    /// [`crate::params::used`]), judged at the runs' upper draws (so that varying the angle
+    /// makes the friction count), and a friction that the named string sets from its database
+    /// entry (every run would use the string's value whatever was drawn).
+    fn check_each_input_is_read(&self, varies: &[String]) -> Result<()> {
+        let upper: Vec<f64> = self.inputs.iter().map(|i| i.dist.quantile(0.95)).collect();
+        let probe = self.params_at(&upper)?;
+        for (input, text) in self.inputs.iter().zip(varies) {
+            if let Some(why) = crate::params::used::unused_reason(input.key, &probe) {
+                return Err(Error::invalid("vary", text, format!("{} is {why}", input.key)));
+            }
+            if let Some(e) = crate::params::strings::entry(self.base.oblique.string) {
+                let set = match input.key {
+                    "mu" => e.mu.is_some(),
+                    "mu-ss" => e.mu_ss.is_some(),
+                    _ => false,
+                };
+                if set {
+                    return Err(Error::invalid(
+                        "vary",
+                        text,
+                        format!(
+                            "{} is set by string = {} (its TWU database value); vary one or the other",
+                            input.key, e.id
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(())
     }
 
     /// Whether the runs are oblique or spinning (their oblique result fields are then outputs).
@@ -207,6 +241,7 @@ impl Study {
             "seed": self.design.seed(),
             "runs": self.design.runs(),
             "solver": self.base.numerics.solver.name(),
+            "params": serde_json::to_value(self.base).unwrap_or_default(),
             "confidence": sensitivity::CONFIDENCE,
             "inputs": inputs,
             "outputs": out,
