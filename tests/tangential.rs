@@ -77,6 +77,25 @@ fn the_twu_shot_under_each_law() {
     }
 }
 
+/// Each mechanism acts in its stated direction on a gripping ball: the tangential damper and
+/// the offset normal force take spin off (they oppose the tangential spring's give-back and
+/// the spin), the sliding bed adds it (its snap-back), and a bed whose strings cannot slide
+/// (string/string friction far above any normal load share) is the elastic law itself.
+#[test]
+fn each_mechanism_moves_the_spin_its_way_and_a_locked_bed_is_the_elastic_law() {
+    let spin = |law, f: &dyn Fn(&mut racket_impact::params::Params)| {
+        let mut p = twu(law, SolverKind::Fd);
+        f(&mut p);
+        simulate(&p).unwrap().spin_out_rpm
+    };
+    let elastic = spin(TangentialLaw::Elastic, &|_| {});
+    assert!(spin(TangentialLaw::Loss, &|_| {}) < elastic - 50.0);
+    assert!(spin(TangentialLaw::Offset, &|_| {}) < elastic - 50.0);
+    assert!(spin(TangentialLaw::Bed, &|_| {}) > elastic + 50.0);
+    let locked = spin(TangentialLaw::Bed, &|p| p.oblique.mu_ss = 2.0);
+    assert!((locked - elastic).abs() < 1e-6 * elastic.abs(), "{locked} vs {elastic}");
+}
+
 /// Without friction no law changes the ball's tangential speed or its spin.
 #[test]
 fn without_friction_no_law_changes_the_spin() {
@@ -269,5 +288,11 @@ fn the_string_option_is_used_or_refused() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("mu-ss") && err.contains("bed and physical"), "{err}");
     let (code, _, err) = cli(&["simulate", "--angle-deg", "30", "--mu-ss", "0.1", "--tangential", "bed"]);
+    assert_eq!(code, Some(0), "{err}");
+    // a sweep over mu beside a string that sets it would be the string's value at every point
+    let (code, out, err) = cli(&["sweep", "--string", "alu-rough-16", "--angle-deg", "30", "--mu", "0.2,0.4"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(out.is_empty() && err.contains("mu") && err.contains("set by string = alu-rough-16"), "{err}");
+    let (code, _, err) = cli(&["sweep", "--string", "tcs-16,nxt-16", "--angle-deg", "30"]);
     assert_eq!(code, Some(0), "{err}");
 }

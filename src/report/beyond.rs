@@ -95,7 +95,10 @@ fn against_measurement() -> Result<String> {
          (`p`), the lateral bed from the string-plane stiffness and the string/string friction, the \
          shorter lever from the ball's compression; there is no calibrated constant, so no \
          leave-one-out to show. Head-clamped racket (a frame too heavy to move), 25.03 m/s at 40 deg \
-         from the normal with 3820 rpm of backspin, at the centre; outgoing spin in rpm.\n\n",
+         from the normal with 3820 rpm of backspin, at the centre; outgoing spin in rpm. The angle is \
+         an assumption: the TWU page says '40 degrees to the stringbed', which could mean 50 deg from \
+         the normal; the companion Cross and Lindsey (2011) study states 40 deg from the normal \
+         (data/measured, row M001).\n\n",
     );
     s.push_str(&format!("| string | lb | measured | {} |\n|---|---|---|{rule}\n", head.join(" | ")));
     let at = |name: &str| t.columns.iter().position(|c| c == name).unwrap_or(0);
@@ -148,9 +151,10 @@ fn against_measurement() -> Result<String> {
          arm, about 2.5 mm at peak) each take off a few per cent (RMS {lo} and {of} rpm): right in \
          direction, an order of magnitude too small. The sliding strings (`bed`) add spin (RMS {bd} \
          rpm): they store energy sideways and snap back, the more the less string-on-string friction \
-         holds them, so they are what separates the strings, and they bring the polyester/nylon \
-         ratio nearest the measured 1.20 ({br}); but the gut and nylon strings carry the default \
-         friction for want of data, so that ratio is no real test yet. The shorter lever (`radius`, \
+         holds them; the string/string friction of the four polyesters spans only 0.077-0.088, so the \
+         bed amplifies the spread their ball/string friction makes rather than making one of its own. \
+         It brings the polyester/nylon ratio nearest the measured 1.20 ({br}), but the gut and nylon \
+         strings carry the default friction for want of data, so that ratio is no real test yet. The shorter lever (`radius`, \
          R minus the ball's compression) is the large one: the paper's ball (k1 = 3e4 N/m) \
          compresses by about 19 mm of its 33 mm radius in this shot, the friction spins it far \
          less, the ball slides (on most strings throughout), and the spin falls to {ra0} to {ra1} rpm, far below the \
