@@ -145,6 +145,12 @@ fn oblique_maps_name_angle_azimuth_spin_and_mu_in_title_and_table() {
     let meta = map.metadata("paper racket", Quantity::Spin, (9, 5)).unwrap();
     assert!(meta["spin_convention"].as_str().unwrap().contains("relative to the ball's incoming motion"), "{meta}");
     assert!(Quantity::Spin.symbol().contains("> 0: topspin"));
+    assert!(!title.contains("tangential"), "{title}");
+    // a tangential law other than the default is named
+    let mut physical = p;
+    physical.oblique.tangential = racket_impact::params::TangentialLaw::Physical;
+    let title = FaceMap::compute(&physical, 9, 5, &mut |_| {}).unwrap().heatmap(Quantity::Spin, "paper racket").title;
+    assert!(title.contains("tangential physical"), "{title}");
     // a normal map has none of them
     let normal = FaceMap::compute(&Params::paper(), 9, 5, &mut |_| {}).unwrap();
     assert!(normal.table().column("angle_deg").is_none());

@@ -157,6 +157,8 @@ fn bad_specs_are_refused_in_one_line_and_nothing_is_written() {
 #[test]
 fn help_lists_exactly_what_the_command_accepts() {
     let help = String::from_utf8(bin(&["uncertainty", "--help"]).stdout).unwrap();
+    // the solver default it states is the one it runs
+    assert!(help.contains("[default: modal; fd where a hand grip or stiffening strings need it]"), "{help}");
     for option in
         ["--vary", "--samples", "--seed", "--format", "--out", "--claims", "--racket", "--config", "--ks", "--mb"]
     {

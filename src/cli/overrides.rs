@@ -47,6 +47,8 @@ key_set! {
     /// step (a map runs the modal solver wherever the variants allow it, else fd with its
     /// automatic step).
     MapKeys = "map": |key| !["x", "r", "solver", "dt"].contains(&key);
+    /// `uncertainty`: every parameter, as `simulate` (its solver default is the modal one).
+    UncertaintyKeys = "uncertainty": |_key| true;
 }
 
 /// The parameter flags (`--x`, `--ks`, ...) a command takes ([`KeySet`]), in the order of
@@ -62,12 +64,12 @@ impl<K: KeySet> Default for OverrideArgs<K> {
 
 /// The clap argument of one parameter: `--KEY <KEY>` with its help; numbers may be negative
 /// (the validation names the range), choices list their names.
-fn arg(spec: &ParamSpec, defaults: &Params) -> Arg {
+fn arg(spec: &ParamSpec, defaults: &Params, command: &str) -> Arg {
     let arg = Arg::new(spec.key)
         .long(spec.key)
         .value_name(spec.key.to_uppercase().replace('-', "_"))
         .action(ArgAction::Set)
-        .help(help(spec, defaults));
+        .help(help(spec, defaults, command));
     match spec.values {
         Values::Number => arg.value_parser(value_parser!(f64)).allow_hyphen_values(true),
         Values::Count => arg.value_parser(value_parser!(usize)).allow_hyphen_values(true),
@@ -83,7 +85,11 @@ fn arg(spec: &ParamSpec, defaults: &Params) -> Arg {
 
 /// The help line with the default the commands use, read from the parameters the commands
 /// start from (the paper's racket hit at its face centre).
-fn help(spec: &ParamSpec, defaults: &Params) -> String {
+fn help(spec: &ParamSpec, defaults: &Params, command: &str) -> String {
+    if spec.key == "solver" && command == "uncertainty" {
+        // its runs default to the fast solver, as a sweep's do (study::sweep::default_solver)
+        return format!("{} [default: modal; fd where a hand grip or stiffening strings need it]", spec.help());
+    }
     let value = keys::value_text(spec.key, defaults).unwrap_or_default();
     let unit = if spec.unit.is_empty() || value.parse::<f64>().is_err() || matches!(spec.values, Values::Choice(_)) {
         String::new()
@@ -108,7 +114,7 @@ impl<K: KeySet> clap::Args for OverrideArgs<K> {
             Ok((p, _)) => p,
             Err(_) => Params::default(),
         };
-        keys::ALL.iter().filter(|s| K::takes(s.key)).fold(cmd, |cmd, spec| cmd.arg(arg(spec, &defaults)))
+        keys::ALL.iter().filter(|s| K::takes(s.key)).fold(cmd, |cmd, spec| cmd.arg(arg(spec, &defaults, K::COMMAND)))
     }
 
     fn augment_args_for_update(cmd: Command) -> Command {

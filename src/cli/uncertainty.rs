@@ -12,12 +12,12 @@ use racket_impact::study::uncertainty::{summary_json, Study, DEFAULT_SAMPLES};
 use racket_impact::{Error, Result};
 
 use super::common::{given_keys, out, warn, warn_params, Common, Format, Progress};
-use super::overrides::SimulateKeys;
+use super::overrides::UncertaintyKeys;
 
 #[derive(Args, Debug)]
 pub struct UncertaintyArgs {
     #[command(flatten)]
-    pub common: Common<SimulateKeys>,
+    pub common: Common<UncertaintyKeys>,
     /// An uncertain input, KEY=DIST (repeatable): KEY any real-valued parameter, DIST
     /// uniform:LO:HI, normal:MEAN:SD or loguniform:LO:HI; every sample must be a valid value
     #[arg(long = "vary", value_name = "KEY=DIST")]

@@ -95,7 +95,13 @@ fn oblique_text(p: &Params) -> String {
         return String::new();
     }
     let o = &p.oblique;
-    format!(", angle {} deg, azimuth {} deg, spin {} rpm, mu {}", o.angle_deg, o.azimuth_deg, o.spin_rpm, o.mu)
+    // a tangential law other than the default elastic one is named (it changes every value)
+    let law = if o.tangential == crate::params::TangentialLaw::default() {
+        String::new()
+    } else {
+        format!(", tangential {}", o.tangential.name())
+    };
+    format!(", angle {} deg, azimuth {} deg, spin {} rpm, mu {}{law}", o.angle_deg, o.azimuth_deg, o.spin_rpm, o.mu)
 }
 
 /// "power potential 100 e_A (%)".
