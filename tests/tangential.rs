@@ -20,13 +20,8 @@ const LAWS: [TangentialLaw; 6] = [
 /// across the face with 3820 rpm of backspin, 52 lb (ks = 4e4 x 52/60 N/m), at the centre.
 fn twu(law: TangentialLaw, solver: SolverKind) -> Params {
     let mut p = cli_defaults();
-    p.racket.mass = 1.0e6;
-    p.racket.ix = 1.0e4;
+    racket_impact::experiments::validation_spin::set_twu_shot(&mut p);
     p.strings.ks = 34667.0;
-    p.impact.v1 = 25.03;
-    p.oblique.angle_deg = 40.0;
-    p.oblique.azimuth_deg = 90.0;
-    p.oblique.spin_rpm = -3820.0;
     p.oblique.tangential = law;
     p.numerics.solver = solver;
     p

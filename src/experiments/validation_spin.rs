@@ -90,17 +90,24 @@ pub fn string_of(row: &Measured) -> Result<StringName> {
     strings::parse(&entry.id)
 }
 
-/// The TWU shot: a head-clamped racket (a frame too heavy to move stands for the clamp), 56 mph
-/// (25.03 m/s) at 40 deg from the normal across the face with 3820 rpm of backspin, at the
-/// centre, strung at `tension_lb` with `string` (its friction where the database gives it).
-pub fn twu_shot(ctx: &Context, law: TangentialLaw, string: StringName, tension_lb: f64) -> Params {
-    let mut p = ctx.paper_params(CENTRE_X, ks_from_tension_lb(tension_lb));
+/// The TWU shot's racket support and incoming ball on any parameters: the clamp (a frame too
+/// heavy to move or twist), 56 mph (25.03 m/s) at 40 deg from the normal across the face with
+/// 3820 rpm of backspin (data/measured, rows M001-M014).
+pub fn set_twu_shot(p: &mut Params) {
     p.racket.mass = 1.0e6;
     p.racket.ix = 1.0e4;
     p.impact.v1 = 25.03;
     p.oblique.angle_deg = 40.0;
     p.oblique.azimuth_deg = 90.0;
     p.oblique.spin_rpm = -3820.0;
+}
+
+/// The TWU shot: a head-clamped racket (a frame too heavy to move stands for the clamp), 56 mph
+/// (25.03 m/s) at 40 deg from the normal across the face with 3820 rpm of backspin, at the
+/// centre, strung at `tension_lb` with `string` (its friction where the database gives it).
+pub fn twu_shot(ctx: &Context, law: TangentialLaw, string: StringName, tension_lb: f64) -> Params {
+    let mut p = ctx.paper_params(CENTRE_X, ks_from_tension_lb(tension_lb));
+    set_twu_shot(&mut p);
     p.oblique.tangential = law;
     p.oblique.string = string;
     (p.oblique.mu, p.oblique.mu_ss) = p.oblique.friction();
