@@ -118,12 +118,6 @@ pub fn warn_twist(theta_end_deg: f64) {
     }
 }
 
-/// The parameter keys given as flags, in declaration order.
-pub fn given_keys(overrides: &racket_impact::params::Overrides) -> Vec<&'static str> {
-    let value = serde_json::to_value(overrides).unwrap_or_default();
-    racket_impact::params::Overrides::KEYS.into_iter().filter(|k| value.get(k).is_some_and(|v| !v.is_null())).collect()
-}
-
 /// Output format.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Format {

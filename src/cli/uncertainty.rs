@@ -11,7 +11,7 @@ use racket_impact::study::sensitivity::Design;
 use racket_impact::study::uncertainty::{summary_json, Study, DEFAULT_SAMPLES};
 use racket_impact::{Error, Result};
 
-use super::common::{given_keys, out, warn, warn_params, Common, Format, Progress};
+use super::common::{out, warn, warn_params, Common, Format, Progress};
 use super::overrides::UncertaintyKeys;
 
 #[derive(Args, Debug)]
@@ -71,10 +71,10 @@ pub fn run(a: UncertaintyArgs) -> Result<()> {
     let mut unused_in_config = Vec::new();
     for text in &a.vary {
         let key = text.split_once('=').map_or(text.as_str(), |(k, _)| k).trim();
-        if given_keys(&sources.flags).contains(&key) {
+        if sources.flags.given().contains(&key) {
             return Err(Error::invalid("vary", text, format!("{key} is both fixed (--{key}) and varied; give one")));
         }
-        if given_keys(&from_config).contains(&key) {
+        if from_config.given().contains(&key) {
             unused_in_config.push(key);
         }
     }
@@ -117,7 +117,7 @@ fn run_claims(a: UncertaintyArgs) -> Result<()> {
     if let Some(v) = a.vary.first() {
         return refuse(format!("--vary {v}"));
     }
-    if let Some(k) = given_keys(&a.common.overrides.0).first() {
+    if let Some(k) = a.common.overrides.0.given().first() {
         return refuse(format!("--{k}"));
     }
     if a.common.racket.is_some() || a.common.config.is_some() {
