@@ -91,18 +91,38 @@ pub fn parse(text: &str) -> Result<StringName> {
 /// Write the named string's friction coefficients into `o` (so that what is shown is what is
 /// used), refusing a `mu` or `mu-ss` given beside a string whose table entry sets it.
 pub fn apply(o: &mut Oblique, mu_given: bool, mu_ss_given: bool) -> Result<()> {
-    let Some(e) = entry(o.string) else { return Ok(()) };
-    for (key, value, given) in [("mu", e.mu, mu_given), ("mu-ss", e.mu_ss, mu_ss_given)] {
-        if given && value.is_some() {
-            return Err(Error::invalid(
-                key,
-                "given",
-                format!("is set by string = {} (its TWU database value); give one or the other", e.id),
-            ));
+    for (key, given) in [("mu", mu_given), ("mu-ss", mu_ss_given)] {
+        if given {
+            refuse_if_set(o.string, key)?;
         }
     }
     (o.mu, o.mu_ss) = o.friction();
     Ok(())
+}
+
+/// The id of the string `name` when its database entry sets the friction `key` (`mu` or
+/// `mu-ss`): a value given for that key beside it would never be used.
+pub fn sets(name: StringName, key: &str) -> Option<&'static str> {
+    let e = entry(name)?;
+    let set = match key {
+        "mu" => e.mu.is_some(),
+        "mu-ss" => e.mu_ss.is_some(),
+        _ => false,
+    };
+    set.then_some(e.id.as_str())
+}
+
+/// Refuse a friction `key` given (as a flag, a config key or a swept axis) beside a string
+/// whose entry sets it.
+pub fn refuse_if_set(name: StringName, key: &'static str) -> Result<()> {
+    match sets(name, key) {
+        Some(id) => Err(Error::invalid(
+            key,
+            "given",
+            format!("is set by string = {id} (its TWU database value); give one or the other"),
+        )),
+        None => Ok(()),
+    }
 }
 
 #[cfg(test)]

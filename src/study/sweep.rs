@@ -247,14 +247,9 @@ impl Sweep {
                 }
         };
         for p in self.representatives()? {
-            let Some(e) = crate::params::strings::entry(p.oblique.string) else { continue };
-            for (key, set) in [("mu", e.mu.is_some()), ("mu-ss", e.mu_ss.is_some())] {
-                if set && given(key) {
-                    return Err(Error::invalid(
-                        key,
-                        "given",
-                        format!("is set by string = {} (its TWU database value); give one or the other", e.id),
-                    ));
+            for key in ["mu", "mu-ss"] {
+                if given(key) {
+                    crate::params::strings::refuse_if_set(p.oblique.string, key)?;
                 }
             }
         }

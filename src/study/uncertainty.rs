@@ -152,22 +152,12 @@ impl Study {
             if let Some(why) = crate::params::used::unused_reason(input.key, &probe) {
                 return Err(Error::invalid("vary", text, format!("{} is {why}", input.key)));
             }
-            if let Some(e) = crate::params::strings::entry(self.base.oblique.string) {
-                let set = match input.key {
-                    "mu" => e.mu.is_some(),
-                    "mu-ss" => e.mu_ss.is_some(),
-                    _ => false,
-                };
-                if set {
-                    return Err(Error::invalid(
-                        "vary",
-                        text,
-                        format!(
-                            "{} is set by string = {} (its TWU database value); vary one or the other",
-                            input.key, e.id
-                        ),
-                    ));
-                }
+            if let Some(id) = crate::params::strings::sets(self.base.oblique.string, input.key) {
+                return Err(Error::invalid(
+                    "vary",
+                    text,
+                    format!("{} is set by string = {id} (its TWU database value); vary one or the other", input.key),
+                ));
             }
         }
         Ok(())
