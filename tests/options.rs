@@ -213,62 +213,15 @@ const PROBES: &[(&str, &str, &[&str], &[&str])] = &[
     ("sweep", "out", &["--out", "s.csv", "--x", "0.1,0.2"], &["--x", "0.1,0.2"]),
     ("sweep", "quiet", &["--quiet", "--ks", "1e3,2e3"], &["--ks", "1e3,2e3"]),
     ("sweep", "specs", &["--x", "0.1,0.3"], &["--x", "0.1,0.2"]),
-    // uncertainty's runs draw v1 (8 base samples), so its own probe of --v1 varies ks instead
-    (
-        "uncertainty",
-        "quiet",
-        &["--vary", "v1=uniform:6:8", "--samples", "8", "--quiet", "--ks", "1e3"],
-        &["--vary", "v1=uniform:6:8", "--samples", "8", "--ks", "1e3"],
-    ),
-    (
-        "uncertainty",
-        "racket",
-        &["--vary", "v1=uniform:6:8", "--samples", "8", "--racket", "tweener"],
-        &["--vary", "v1=uniform:6:8", "--samples", "8"],
-    ),
-    (
-        "uncertainty",
-        "config",
-        &["--vary", "v1=uniform:6:8", "--samples", "8", "--config", "cfg.toml"],
-        &["--vary", "v1=uniform:6:8", "--samples", "8"],
-    ),
-    (
-        "uncertainty",
-        "format",
-        &["--vary", "v1=uniform:6:8", "--samples", "8", "--format", "json"],
-        &["--vary", "v1=uniform:6:8", "--samples", "8"],
-    ),
-    (
-        "uncertainty",
-        "vary",
-        &["--vary", "v1=uniform:6:8", "--samples", "8", "--vary", "ks=uniform:3e4:5e4"],
-        &["--vary", "v1=uniform:6:8", "--samples", "8"],
-    ),
+    // uncertainty's other probes run over UNCERTAINTY_STUDY (see [`probes`]); its own probe of
+    // --v1 varies ks instead
     (
         "uncertainty",
         "samples",
         &["--vary", "v1=uniform:6:8", "--samples", "16"],
         &["--vary", "v1=uniform:6:8", "--samples", "8"],
     ),
-    (
-        "uncertainty",
-        "seed",
-        &["--vary", "v1=uniform:6:8", "--samples", "8", "--seed", "3"],
-        &["--vary", "v1=uniform:6:8", "--samples", "8"],
-    ),
-    (
-        "uncertainty",
-        "out",
-        &["--vary", "v1=uniform:6:8", "--samples", "8", "--out", "u.json"],
-        &["--vary", "v1=uniform:6:8", "--samples", "8"],
-    ),
     ("uncertainty", "claims", &["--claims", "--samples", "8"], &["--vary", "v1=uniform:6:8", "--samples", "8"]),
-    (
-        "uncertainty",
-        "dt",
-        &["--vary", "v1=uniform:6:8", "--samples", "8", "--solver", "fd", "--dt", "1e-6"],
-        &["--vary", "v1=uniform:6:8", "--samples", "8", "--solver", "fd"],
-    ),
     (
         "uncertainty",
         "v1",
@@ -289,6 +242,33 @@ const PROBES: &[(&str, &str, &[&str], &[&str])] = &[
     ("racket", "format", &["players", "--format", "json"], &["players"]),
     ("racket", "quiet", &["--quiet", "--list"], &["--list"]),
 ];
+
+/// The small study most `uncertainty` probes run over: v1 drawn, 8 base samples.
+const UNCERTAINTY_STUDY: &[&str] = &["--vary", "v1=uniform:6:8", "--samples", "8"];
+
+/// The `uncertainty` probes over [`UNCERTAINTY_STUDY`]: option id, the arguments after the
+/// study with the option, the same without it.
+const UNCERTAINTY_PROBES: &[(&str, &[&str], &[&str])] = &[
+    ("quiet", &["--quiet", "--ks", "1e3"], &["--ks", "1e3"]),
+    ("racket", &["--racket", "tweener"], &[]),
+    ("config", &["--config", "cfg.toml"], &[]),
+    ("format", &["--format", "json"], &[]),
+    ("vary", &["--vary", "ks=uniform:3e4:5e4"], &[]),
+    ("seed", &["--seed", "3"], &[]),
+    ("out", &["--out", "u.json"], &[]),
+    ("dt", &["--solver", "fd", "--dt", "1e-6"], &["--solver", "fd"]),
+];
+
+/// Every probe: [`PROBES`] and the `uncertainty` ones with their study in front.
+type Probe = (&'static str, &'static str, Vec<&'static str>, Vec<&'static str>);
+fn probes() -> Vec<Probe> {
+    let study = |args: &[&'static str]| UNCERTAINTY_STUDY.iter().chain(args).copied().collect::<Vec<_>>();
+    PROBES
+        .iter()
+        .map(|(c, o, with, without)| (*c, *o, with.to_vec(), without.to_vec()))
+        .chain(UNCERTAINTY_PROBES.iter().map(|(o, with, without)| ("uncertainty", *o, study(with), study(without))))
+        .collect()
+}
 
 /// Options that print nothing different for any input of the command (`--quiet` where the
 /// command never warns): pinned here, so a command that starts to warn must show its
@@ -362,11 +342,12 @@ fn differs(a: &Seen, b: &Seen) -> bool {
 fn every_option_of_every_command_changes_the_output_or_is_refused() {
     let mut failures = Vec::new();
     let mut probed = 0;
+    let probes = probes();
     for (command, options) in option_table() {
         let config = config_for(&command);
         for (id, long) in options {
-            let table = PROBES.iter().find(|(c, o, _, _)| *c == command && *o == id).or_else(|| {
-                PROBES.iter().find(|(c, o, _, _)| {
+            let table = probes.iter().find(|(c, o, _, _)| *c == command && *o == id).or_else(|| {
+                probes.iter().find(|(c, o, _, _)| {
                     *c == "*" && *o == id && !["speed", "map", "sweep", "uncertainty"].contains(&&*command)
                 })
             });
@@ -416,7 +397,7 @@ fn every_option_of_every_command_changes_the_output_or_is_refused() {
     }
     // every probe is for an option that exists (a stale entry would hide a removed option)
     let table = option_table();
-    for (c, o, _, _) in PROBES {
+    for (c, o, _, _) in &probes {
         let exists = table.iter().any(|(name, opts)| (*c == "*" || name == c) && opts.iter().any(|(id, _)| id == o));
         if !exists {
             failures.push(format!("PROBES names {c} {o}, which is no option"));
