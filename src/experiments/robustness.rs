@@ -10,6 +10,7 @@
 //! `numerical` column is the converged value (`hat` load, N = 320) less it, where the claim
 //! has one: the paper's numerics beside the physical uncertainty.
 
+use super::claims::{Claim, ToleranceKind};
 use super::{Context, Experiment, PaperClaim};
 use crate::error::{Error, Result};
 use crate::params::spec::ParamSpec;
@@ -17,7 +18,6 @@ use crate::params::uncertainty::Dist;
 use crate::params::{keys, Overrides, SolverKind};
 use crate::render::plot::{Chart, Curve, LineStyle};
 use crate::render::table::{Table, Value};
-use crate::report::{Claim, ToleranceKind};
 use crate::study::sensitivity::{self, Design, Summary};
 
 /// Base samples of the design: 128 x (9 inputs + 2) = 1408 evaluations of every claim, about
@@ -159,7 +159,7 @@ pub fn study(
     let specs = inputs();
     Design::new(samples, specs.len(), seed)?;
     let design = Design::new(if doubled { 2 * samples } else { samples }, specs.len(), seed)?;
-    let claims = crate::report::claims()?;
+    let claims = super::claims::claims()?;
     let fns = computations(&claims)?;
     let dists: Vec<Dist> = specs.iter().filter_map(|s| s.uncertainty.map(|u| u.dist)).collect();
     let mut sampled = base.clone();
