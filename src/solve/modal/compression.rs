@@ -11,11 +11,12 @@
 //! a rigid motion of frequency 0) and the compression rate is
 //! `Y_T'(t) = v1 sum_k a_k cos(s_k t)`.
 //!
-//! The run finds the first zero of `Y_T'` (the time of maximum compression): none can come
+//! The set-up finds the first zero of `Y_T'` (the time of maximum compression; per unit incident
+//! speed, so once for every speed): none can come
 //! before the dominant mode's share stops exceeding the sum of the others' amplitudes; from
 //! there it samples every half radian of the fastest mode with a share of the rate (of either
 //! sign; each coupled mode's phasor rotated, no trigonometric call per sample), then Newton's
-//! method inside the bracket; and evaluates every coordinate and rate there exactly. No step of the compression phase is
+//! method inside the bracket. A run evaluates every coordinate and rate there exactly. No step of the compression phase is
 //! taken, so no error is made in it: the stepping starts at maximum compression, where the
 //! force's rate is zero on both sides and the expansion law takes over.
 
@@ -53,6 +54,23 @@ pub(super) struct Compression {
     /// The sample spacing, s, and each mode's rotation over it.
     spacing: f64,
     rotation: Vec<(f64, f64)>,
+    /// The first maximum of the compression, found once (it does not depend on the incident
+    /// speed: the phase is linear), if it comes within [`SEARCH_LIMITS`] time limits.
+    turn: Option<Turn>,
+}
+
+/// How many of the model's time limits the set-up's search for maximum compression looks
+/// ahead (a run compares the turn it found with its own limit).
+const SEARCH_LIMITS: f64 = 100.0;
+
+/// The first zero of the compression rate: the lower end of the sampling bracket that held it
+/// (a run whose time limit is below it gives up there), the time, s, and each coupled mode's
+/// phasor `(sin, cos)(s_k t)` there.
+#[derive(Debug, Clone)]
+struct Turn {
+    bracket: f64,
+    t: f64,
+    phasors: Vec<(f64, f64)>,
 }
 
 /// Where the force history goes, piece by piece: `(h, (F0, F0'), (F1, F1'))`.
@@ -72,7 +90,9 @@ impl Compression {
     /// The coupled modes of coordinates with `w^2 = lam`, load-point amplitudes `g`, the ball
     /// first (`g[0] = -1/sqrt(m_b)`), a contact of stiffness `k` in compression and the truncated
     /// modes' static flexibility `residual` in series.
-    pub fn new(lam: &[f64], g: &[f64], k: f64, residual: f64, ball_mass: f64) -> Self {
+    /// `limit` is the model's time limit, s (the first maximum is looked for within
+    /// [`SEARCH_LIMITS`] of them).
+    pub fn new(lam: &[f64], g: &[f64], k: f64, residual: f64, ball_mass: f64, limit: f64) -> Self {
         let n = lam.len();
         let kappa = k / (1.0 + k * residual);
         let modes = coupled_modes(lam, g, kappa);
@@ -116,7 +136,9 @@ impl Compression {
         } else {
             0.0
         };
-        Compression { n, sigma, z, c, a, k, t_safe, spacing, rotation }
+        let mut compression = Compression { n, sigma, z, c, a, k, t_safe, spacing, rotation, turn: None };
+        compression.turn = compression.find_turn(SEARCH_LIMITS * limit);
+        compression
     }
 
     /// `(Y_T', Y_T'')` per unit incident speed from each mode's phasor `(sin, cos)(s_k t)`.
@@ -144,6 +166,19 @@ impl Compression {
     /// `pieces = (h, sink)`: the force history is handed to `sink(h, (F0, F0'), (F1, F1'))` in
     /// pieces of at most `h` seconds (the tangential law follows it).
     pub fn at_max(&self, v1: f64, limit: f64, state: &mut State, pieces: Option<(f64, ForceSink)>) -> Option<AtMax> {
+        let turn = self.turn.as_ref().filter(|turn| turn.bracket <= limit)?;
+        let (t, ph) = (turn.t, &turn.phasors);
+        if let Some((h, piece)) = pieces {
+            self.pieces(v1, t, h, piece);
+        }
+        self.state_at(v1, t, ph, state);
+        let yt = v1 * self.displacement(t, ph);
+        Some(AtMax { t, yt, f: self.k * yt })
+    }
+
+    /// The first zero of the compression rate within `limit` seconds (per unit incident speed,
+    /// so for every speed).
+    fn find_turn(&self, limit: f64) -> Option<Turn> {
         let m = self.sigma.len();
         // no zero of the rate before `t_safe`: there the dominant mode's share still exceeds the
         // sum of all the others' amplitudes (`a_d cos(s_d t) > sum_(k != d) |a_k|`)
@@ -169,6 +204,7 @@ impl Compression {
             }
             (lo, d_lo) = (lo + self.spacing, d);
         };
+        let bracket = lo;
         let mut hi = lo + self.spacing;
         // Newton inside [lo, hi] from the secant estimate (bisection where it would leave), the
         // phasors carried along by short rotations
@@ -189,12 +225,7 @@ impl Compression {
             }
             next = if t + step >= lo && t + step <= hi { t + step } else { 0.5 * (lo + hi) };
         }
-        if let Some((h, piece)) = pieces {
-            self.pieces(v1, t, h, piece);
-        }
-        self.state_at(v1, t, &ph, state);
-        let yt = v1 * self.displacement(t, &ph);
-        Some(AtMax { t, yt, f: self.k * yt })
+        Some(Turn { bracket, t, phasors: ph })
     }
 
     /// `Y_T` per unit incident speed from the phasors at time `t`.

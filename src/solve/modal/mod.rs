@@ -206,7 +206,7 @@ impl ModalModel {
                 residual += gk * gk / l;
             }
         }
-        let compression = Compression::new(&lam, &g, law.compression_stiffness(), residual, mb);
+        let compression = Compression::new(&lam, &g, law.compression_stiffness(), residual, mb, base.time_limit_s);
         Shared::new(lam, g, residual, compression, basis, res.phase_per_step / omega_contact)
     }
 
