@@ -20,6 +20,8 @@
 //! bounded by that tail.
 
 use crate::model::short_turn::{series_terms, small_sin_cos};
+use crate::model::spare::Buf;
+use std::cell::RefCell;
 
 /// Highest modes whose summed energy is below this fraction of the total are not sampled.
 pub const ENERGY_TAIL: f64 = 1.0e-10;
@@ -34,11 +36,20 @@ pub const PHASE_PER_SAMPLE: f64 = 0.25;
 /// 200,000 random vibrations the pruning moved no result by more than 3e-14).
 const QUADRATIC_MARGIN: f64 = 1e-6;
 
+/// A sampled peak after the parabola step: time, value, sample spacing, the peak of the local
+/// quadratic, and the phasors there.
+type Candidate = (f64, f64, f64, f64, Phasors);
+
+thread_local! {
+    /// The storage of the candidate list, reused from peak to peak on a thread.
+    static CANDIDATES: RefCell<Vec<Candidate>> = const { RefCell::new(Vec::new()) };
+}
+
 /// Each mode's phasor at one time: `q_k` and `q_k'/w_k`.
 #[derive(Debug, Clone)]
 struct Phasors {
-    q: Vec<f64>,
-    p: Vec<f64>,
+    q: Buf<f64>,
+    p: Buf<f64>,
 }
 
 impl Phasors {
@@ -70,13 +81,13 @@ impl Phasors {
 #[derive(Debug, Clone)]
 pub struct FreeVibration {
     /// `w_k`, rad/s, ascending.
-    omega: Vec<f64>,
+    omega: Buf<f64>,
     /// `q_k(0)`.
-    a: Vec<f64>,
+    a: Buf<f64>,
     /// `q_k'(0) / w_k`.
-    b: Vec<f64>,
+    b: Buf<f64>,
     /// Mode amplitude at the load point.
-    g: Vec<f64>,
+    g: Buf<f64>,
 }
 
 impl FreeVibration {
@@ -84,7 +95,12 @@ impl FreeVibration {
     /// mode's amplitude at the load point `g`.
     pub fn new(omega: &[f64], q: &[f64], qdot: &[f64], g: &[f64]) -> Self {
         let b = qdot.iter().zip(omega).map(|(v, w)| v / w).collect();
-        FreeVibration { omega: omega.to_vec(), a: q.to_vec(), b, g: g.to_vec() }
+        FreeVibration {
+            omega: omega.iter().copied().collect(),
+            a: q.iter().copied().collect(),
+            b,
+            g: g.iter().copied().collect(),
+        }
     }
 
     /// Energy of mode `k`, J (for mass-normalised modes).
@@ -132,10 +148,11 @@ impl FreeVibration {
 
     /// Samples of `sum_k weight_k(q_k)` over the first `k` modes at `m + 1` equally spaced times
     /// from `lo` to `hi`, by rotating each mode's phasor (no trigonometric call per sample).
-    fn sample(&self, k: usize, lo: f64, hi: f64, m: usize, f: impl Fn(usize, f64) -> f64) -> Vec<f64> {
+    fn sample(&self, k: usize, lo: f64, hi: f64, m: usize, f: impl Fn(usize, f64) -> f64) -> Buf<f64> {
         let mut ph = self.phasors(k, lo);
         let rot = self.rotation(k, (hi - lo) / m as f64);
-        let mut out = Vec::with_capacity(m + 1);
+        let mut out = Buf::new();
+        out.reserve(m + 1);
         out.push((0..k).map(|i| f(i, ph.q[i])).sum());
         for _ in 0..m {
             ph.rotate(&rot);
@@ -152,7 +169,7 @@ impl FreeVibration {
 
     /// `(sin, cos)(w_k dt)` of the first `k` modes.
     /// (Short turns by the Taylor series, [`small_sin_cos`], as accurate and a few times cheaper.)
-    fn rotation(&self, k: usize, dt: f64) -> Vec<(f64, f64)> {
+    fn rotation(&self, k: usize, dt: f64) -> Buf<(f64, f64)> {
         self.omega[..k]
             .iter()
             .map(|w| {
@@ -184,7 +201,7 @@ impl FreeVibration {
         let half_period = std::f64::consts::PI / w_d;
         let j_lo = ((w_d * t0 - phi) / std::f64::consts::PI).floor() as i64;
         let j_hi = ((w_d * t1 - phi) / std::f64::consts::PI).ceil() as i64;
-        let peaks: Vec<f64> = (j_lo..=j_hi).map(|j| (phi + j as f64 * std::f64::consts::PI) / w_d).collect();
+        let peaks: Buf<f64> = (j_lo..=j_hi).map(|j| (phi + j as f64 * std::f64::consts::PI) / w_d).collect();
         // (the phasors at the j-th maximum are those at the first rotated j times: once here and
         // again, the same way, window by window below)
         let turn = self.rotation(k, half_period);
@@ -207,12 +224,12 @@ impl FreeVibration {
         let (mut back, mut whole_step) = (None, None);
         // (time, value, sample spacing, the peak of the local quadratic, phasors) of each
         // sampled peak after the parabola step
-        let mut candidates: Vec<(f64, f64, f64, f64, Phasors)> = Vec::new();
+        let mut candidates = CANDIDATES.with(|c| std::mem::take(&mut *c.borrow_mut()));
         // one window over [t0, t1] when the dominant mode does not bound the peak, else one
         // around each maximum; the buffers are reused from window to window
         let windows = if half.is_infinite() { 1 } else { peaks.len() };
         at.copy_from(&first);
-        let (mut ph, mut start, mut v) = (first.clone(), first, Vec::new());
+        let (mut ph, mut start, mut v) = (first.clone(), first, Buf::new());
         for (j, &peak) in peaks.iter().enumerate().take(windows) {
             if j > 0 {
                 at.rotate(&turn);
@@ -292,11 +309,13 @@ impl FreeVibration {
         // quadratic first: a candidate whose quadratic peaks below the best found so far (by
         // more than its error, of the order of the cube of the parabola's miss) cannot hold it
         candidates.sort_by(|a, b| b.3.total_cmp(&a.3));
-        for (t, value, dt, quadratic, ph) in candidates {
+        for (t, value, dt, quadratic, ph) in candidates.drain(..) {
             if value >= best * (1.0 - 1e-2) && quadratic >= best * (1.0 - QUADRATIC_MARGIN) {
                 best = best.max(self.newton_peak(t, ph, (t - 2.0 * dt).max(t0), (t + 2.0 * dt).min(t1)));
             }
         }
+        // (the list's storage kept for the next peak on this thread)
+        CANDIDATES.with(|c| *c.borrow_mut() = candidates);
         best
     }
 

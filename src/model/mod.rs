@@ -11,4 +11,5 @@ pub mod grip;
 pub mod rank_one;
 pub mod reduced;
 pub mod short_turn;
+pub mod spare;
 pub mod tangential;

@@ -22,6 +22,7 @@
 
 use crate::model::rank_one::coupled_modes;
 use crate::model::short_turn::{series_terms, small_sin_cos};
+use crate::model::spare::Buf;
 use crate::solve::modal::pair::Pair;
 use crate::solve::modal::State;
 
@@ -253,8 +254,8 @@ impl Compression {
         let count = (t_max / h).ceil().max(1.0) as usize;
         let dt = t_max / count as f64;
         let m = self.sigma.len();
-        let rot: Vec<(f64, f64)> = self.sigma.iter().map(|s| (s * dt).sin_cos()).collect();
-        let mut ph = vec![(0.0, 1.0); m];
+        let rot: Buf<(f64, f64)> = self.sigma.iter().map(|s| (s * dt).sin_cos()).collect();
+        let mut ph = Buf::filled((0.0, 1.0), m);
         let force = |t: f64, ph: &[(f64, f64)]| {
             let k = self.k * v1;
             (k * self.displacement(t, ph), k * self.rate(ph).0)

@@ -93,6 +93,7 @@ mod steps;
 use crate::error::{Error, Result};
 use crate::model::contact::{ContactLaw, Cross, Phase};
 use crate::model::free::FreeVibration;
+use crate::model::spare::{pooled, Buf, Pooled};
 use crate::model::tangential::ForcePiece;
 use crate::params::Params;
 use crate::solve::fd::Model;
@@ -235,7 +236,7 @@ impl ModalModel {
         let v1 = p.impact.v1;
         let n = self.set.lam.len();
         let limit = self.base.time_limit_s;
-        let mut s = State { x: vec![Pair::splat(0.0); n] };
+        let mut s = State { x: Buf::filled(Pair::splat(0.0), n) };
         let mut tangential = Follower::new(self.base.oblique.as_ref());
         let max = if tangential.is_active() {
             let mut feed = |h: f64, a: (f64, f64), b: (f64, f64)| {
@@ -337,7 +338,7 @@ impl ModalModel {
     /// ([`FreeVibration`]). `s` is the state `lag` seconds after separation.
     fn after_impact(&self, s: &State, lag: f64) -> (f64, bool) {
         let flex = RIGID..self.set.lam.len();
-        let (q, v): (Vec<f64>, Vec<f64>) = flex.clone().map(|j| (s.q(j), s.v(j))).unzip();
+        let (q, v): (Buf<f64>, Buf<f64>) = flex.clone().map(|j| (s.q(j), s.v(j))).unzip();
         let free = FreeVibration::new(&self.set.omega[flex.clone()], &q, &v, &self.set.g[flex]);
         let window = 2.0 / self.base.f1_hz;
         let peak = free.peak_pe(-lag, window - lag);
@@ -348,11 +349,14 @@ impl ModalModel {
     }
 }
 
-/// The coordinates (mass-normalised, rigid first) and their rates, `[q, q']` each.
+/// The coordinates (mass-normalised, rigid first) and their rates, `[q, q']` each (storage
+/// reused from impact to impact, [`crate::model::spare`]).
 #[derive(Debug, Clone)]
 struct State {
-    x: Vec<Pair>,
+    x: Buf<Pair>,
 }
+
+pooled!(Pair);
 
 impl State {
     fn q(&self, j: usize) -> f64 {
