@@ -58,6 +58,10 @@ pub(crate) fn hermite_root(p0: f64, m0: f64, p1: f64, m1: f64, h: f64) -> f64 {
         }
         let slope = hermite_slope(p0, m0, p1, m1, h, s) * h;
         let newton = s - v / slope;
+        if newton == s {
+            // the Newton step is below rounding: `s` is the root
+            return s;
+        }
         let next = if newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
         if (next - s).abs() <= 2.0 * f64::EPSILON || hi - lo <= 2.0 * f64::EPSILON {
             return next;
