@@ -207,12 +207,20 @@ impl FreeVibration {
         let turn = self.rotation(k, half_period);
         let first = self.phasors(k, peaks[0]);
         let mut at = first.clone();
-        let mut best = self.pe_first(k, t0).max(self.pe_first(k, t1));
+        let mut best: f64 = 0.0;
         for t in &peaks {
             if (t0..=t1).contains(t) {
                 best = best.max(self.pe_of(&at));
             }
             at.rotate(&turn);
+        }
+        // the window's ends, where the dominant mode's bound `E_d cos^2 + rest` does not rule
+        // them out (the bound's rounding is far inside the margin)
+        for end in [t0, t1] {
+            let bound = e_d * (w_d * end - phi).cos().powi(2) + rest;
+            if bound * (1.0 + 1e-9) >= best {
+                best = best.max(self.pe_first(k, end));
+            }
         }
         // where the peak can be: windows of half-width `half` around the dominant maxima
         let floor = (best - rest) / e_d;
