@@ -272,3 +272,35 @@ impl Compression {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::error::Error;
+    use crate::params::{Params, SolverKind};
+    use crate::solve::modal::ModalModel;
+
+    /// The time of maximum compression is found once in the set-up, but each run holds it to
+    /// its own time limit: a limit before the turn (or before the end of the contact) is an
+    /// error, not a hang and not a result.
+    #[test]
+    fn a_run_holds_the_turn_found_in_the_set_up_to_its_own_time_limit() {
+        let mut p = Params::paper();
+        p.numerics.solver = SolverKind::Modal;
+        let m = ModalModel::new(&p).unwrap();
+        let r = m.run().unwrap();
+        let t_max = r.t_max_compression_s;
+        assert!(t_max > 0.0 && t_max < r.tau_s, "{t_max} {}", r.tau_s);
+        for (limit, fails) in [(0.2 * t_max, true), (0.5 * (t_max + r.tau_s), true), (2.0 * r.tau_s, false)] {
+            let mut short = m.clone();
+            short.base.time_limit_s = limit;
+            match short.run() {
+                Err(Error::ImpactDidNotEnd { limit_s }) => assert!(fails && limit_s == limit, "limit {limit}"),
+                Ok(again) => {
+                    assert!(!fails, "limit {limit} gave a result");
+                    assert_eq!(format!("{again:?}"), format!("{r:?}"));
+                }
+                Err(e) => panic!("limit {limit}: {e}"),
+            }
+        }
+    }
+}
