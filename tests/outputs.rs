@@ -226,3 +226,33 @@ fn a_failed_standard_output_publishes_no_file() {
         assert!(left.is_empty(), "{args:?} left {left:?} (expected none of {files:?})");
     }
 }
+
+/// A failing output device (`--series /dev/full`) fails the command (exit 2, one line) before
+/// its result is printed: the device is written before the standard output, the files after.
+#[test]
+fn a_failing_output_device_fails_before_the_result_is_printed() {
+    let s = Scratch::new("device-first");
+    let full = device(&s, "full");
+    let mut cases = writers(&full);
+    cases.retain(|a| a[0] != "sweep"); // (a sweep to a file prints nothing)
+    for format in ["text", "json", "csv"] {
+        cases.push(vec![
+            "simulate".into(),
+            "--series".into(),
+            full.to_str().unwrap().into(),
+            "--format".into(),
+            format.into(),
+        ]);
+    }
+    for args in cases {
+        let o = bin().args(&args).output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert_eq!(stderr(&o).lines().count(), 1, "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains("No space left"), "{args:?}: {}", stderr(&o));
+        assert!(
+            o.stdout.is_empty(),
+            "{args:?} printed its result before failing: {}",
+            String::from_utf8_lossy(&o.stdout)
+        );
+    }
+}

@@ -87,23 +87,26 @@ pub fn run(a: MapArgs) -> Result<()> {
     let map = computed?;
     let json = map.json()?;
     let csv = map.table.to_csv();
-    // the files are published only once the printing has succeeded (nothing left otherwise)
+    // the files are published only once the printing has succeeded (nothing left otherwise);
+    // a device among them is written before the printing
     let staged = outputs.stage(&csv, &map.heatmap, &json)?;
-    match a.common.format {
-        Format::Text => {
-            out!("{}", map.summary);
-            outln!(
-                "wrote {}, {}, {} ({:.2} s)",
-                outputs.csv.display(),
-                outputs.png.display(),
-                outputs.json.display(),
-                started.elapsed().as_secs_f64()
-            );
+    staged.publish(|| {
+        match a.common.format {
+            Format::Text => {
+                out!("{}", map.summary);
+                outln!(
+                    "wrote {}, {}, {} ({:.2} s)",
+                    outputs.csv.display(),
+                    outputs.png.display(),
+                    outputs.json.display(),
+                    started.elapsed().as_secs_f64()
+                );
+            }
+            Format::Json => out!("{json}"),
+            Format::Csv => out!("{csv}"),
         }
-        Format::Json => out!("{json}"),
-        Format::Csv => out!("{csv}"),
-    }
-    staged.commit()?;
+        Ok(())
+    })?;
     warn_params(configs.iter().map(|(_, p)| p));
     let theta = ["theta_end_deg", "theta_end_deg_a", "theta_end_deg_b"]
         .iter()

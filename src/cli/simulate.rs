@@ -97,13 +97,15 @@ pub fn run(a: SimulateArgs) -> Result<()> {
         Format::Csv => racket_impact::render::impact::result_csv(&params, &result),
         Format::Text => racket_impact::render::impact::result_text(&params, &result),
     };
-    // the series file is published only once the result has been printed
+    // a series device is written before the result is printed, a series file renamed after
     let mut staged = racket_impact::render::io::Staged::new();
     if let (Some(path), Some(rows)) = (&a.series, &series) {
         racket_impact::render::impact::stage_series(&mut staged, path, &params, rows)?;
     }
-    out!("{text}");
-    staged.commit()?;
+    staged.publish(|| {
+        out!("{text}");
+        Ok(())
+    })?;
     warn_params([&params]);
     warn_twist(result.theta_end_deg);
     if result.recontact {

@@ -45,8 +45,8 @@ impl Outputs {
     }
 
     /// Stage all three (see [`crate::render::io::Staged`]): each is complete in a temporary
-    /// file, and the caller commits them together once everything else (the printed summary)
-    /// has succeeded; dropped instead, nothing is written.
+    /// file, and the caller publishes them together around the printed summary
+    /// ([`Staged::publish`]); dropped instead, nothing is written.
     pub fn stage(&self, csv: &str, map: &HeatMap, json: &str) -> Result<Staged> {
         let mut staged = Staged::new();
         staged.bytes(&self.csv, csv.as_bytes())?;
