@@ -256,3 +256,32 @@ fn a_failing_output_device_fails_before_the_result_is_printed() {
         );
     }
 }
+
+/// `map --out LINK.csv`: the link's target is written and the link kept, and the PNG and JSON
+/// go beside the target with its stem (the three files of a map stay together); the summary
+/// names where they went. A plain path keeps its siblings beside it.
+#[test]
+fn a_map_through_a_symlink_keeps_its_three_files_beside_the_target() {
+    let s = Scratch::new("map-link");
+    std::fs::create_dir(s.path("data")).unwrap();
+    std::fs::create_dir(s.path("out")).unwrap();
+    std::fs::write(s.path("data/t.csv"), "old\n").unwrap();
+    std::fs::write(s.path("data/t.png"), "old png\n").unwrap();
+    let link = s.path("out/link.csv");
+    std::os::unix::fs::symlink("../data/t.csv", &link).unwrap();
+    let grid = ["map", "--nx", "3", "--nr", "2", "--out"];
+    let o = bin().args(grid).arg(&link).output().unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink(), "the link was replaced");
+    assert_eq!(names_in(&s.path("out")), vec!["link.csv"], "siblings left beside the link");
+    assert_eq!(names_in(&s.path("data")), vec!["t.csv", "t.json", "t.png"]);
+    let o2 = bin().args(grid).arg(s.path("plain.csv")).output().unwrap();
+    assert!(o2.status.success(), "{}", stderr(&o2));
+    for ext in ["csv", "png", "json"] {
+        let (through, plain) = (s.path(&format!("data/t.{ext}")), s.path(&format!("plain.{ext}")));
+        assert!(std::fs::read(through).unwrap() == std::fs::read(plain).unwrap(), "{ext} differs from a plain run");
+    }
+    let printed = String::from_utf8_lossy(&o.stdout);
+    let wrote = printed.lines().last().unwrap();
+    assert!(wrote.contains("link.csv (a link to ") && wrote.contains("t.png") && wrote.contains("t.json"), "{wrote}");
+}

@@ -44,7 +44,8 @@ pub struct MapArgs {
     /// Grid points across the face, from -half-width to +half-width (2..=401)
     #[arg(long, default_value_t = 21, allow_hyphen_values = true)]
     pub nr: usize,
-    /// Output CSV; the PNG and JSON go next to it with the same stem
+    /// Output CSV; the PNG and JSON go next to it with the same stem (a symbolic link: its
+    /// target is written, the link kept, and the PNG and JSON go next to the target, with its stem)
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Difference map against this racket (file or preset): B - A with A = --racket
@@ -94,9 +95,12 @@ pub fn run(a: MapArgs) -> Result<()> {
         match a.common.format {
             Format::Text => {
                 out!("{}", map.summary);
+                let csv = match &outputs.csv_target {
+                    Some(target) => format!("{} (a link to {})", outputs.csv.display(), target.display()),
+                    None => outputs.csv.display().to_string(),
+                };
                 outln!(
-                    "wrote {}, {}, {} ({:.2} s)",
-                    outputs.csv.display(),
+                    "wrote {csv}, {}, {} ({:.2} s)",
                     outputs.png.display(),
                     outputs.json.display(),
                     started.elapsed().as_secs_f64()
