@@ -86,7 +86,7 @@ pub fn run(a: SimulateArgs) -> Result<()> {
         / (2.0 * std::f64::consts::PI);
     let text = match a.common.format {
         Format::Json => {
-            let mut v = serde_json::to_value(result).map_err(|e| Error::io("<json>", e))?;
+            let mut v = racket_impact::render::impact::result_json(&params, &result);
             v["params"] = serde_json::to_value(params).map_err(|e| Error::io("<json>", e))?;
             if !params.oblique.is_normal() {
                 v["spin_convention"] = racket_impact::render::impact::SIMULATE_SPIN_CONVENTION.into();

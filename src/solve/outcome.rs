@@ -241,7 +241,9 @@ impact_result! {
     rebound_angle_deg: f64 ["deg"] checked: false, sweep: true, text: text_oblique("rebound_angle", "deg, outgoing velocity from the outward normal");
     /// Tangential coefficient of restitution of the contact point, `-(w_out - u_out) / w_in`
     /// (`w` the slip velocity of the ball's contact point, `u_out` the frame's there); NaN
-    /// (left out of the JSON) when the contact point arrives without slip.
+    /// (undefined: null in the JSON of an oblique or spinning impact, an empty CSV field,
+    /// `undefined` in the text) when the contact point arrives with a slip below
+    /// [`crate::solve::oblique::E_T_MIN_SLIP_FRACTION`] of the incident speed.
     e_t: f64 [""] checked: false, sweep: true, text: text_oblique("e_t", "tangential COR of the contact point");
     /// Share of the contact time in which the ball slid on the strings.
     slip_fraction: f64 [""] checked: false, sweep: true, text: text_oblique("slip_fraction", "of the contact time sliding");

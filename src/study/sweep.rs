@@ -15,9 +15,11 @@ use crate::solve::outcome::{Field, Get, FIELDS};
 use crate::solve::{simulate, ImpactResult};
 
 /// A number in its shortest exact form (`ryu`), zero of either sign as "0" as in the other
-/// tables.
+/// tables; an undefined one (NaN: `e_t` at too little incoming slip) as an empty field.
 fn number_text(v: f64) -> String {
-    if v == 0.0 {
+    if v.is_nan() {
+        String::new()
+    } else if v == 0.0 {
         "0".to_string()
     } else {
         ryu::Buffer::new().format(v).to_string()
