@@ -202,3 +202,55 @@ fn e_t_is_undefined_when_the_ball_arrives_nearly_rolling() {
     let r = simulate(&rolling(0.02)).unwrap();
     assert!(r.e_t.is_finite(), "e_t = {} at 2 % slip", r.e_t);
 }
+
+/// The losses of the named tangential mechanisms are reported wherever an impact's results
+/// are: simulate's text, JSON and CSV, sweep's columns, uncertainty's outputs and speed's JSON
+/// (under a law that has them; under the elastic law, where they do not apply, none has them).
+#[test]
+fn tangential_losses_are_in_every_output_of_an_impact() {
+    let losses = ["f_tangential_damping", "f_string_sliding", "f_rolling"];
+    let run = |args: &[&str]| {
+        let o = bin().args(args).output().unwrap();
+        assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8(o.stdout).unwrap()
+    };
+    let oblique = ["--angle-deg", "30", "--solver", "modal"];
+    for law in ["physical", "elastic"] {
+        let with = |cmd: &[&str], extra: &[&str]| -> String {
+            let mut args: Vec<&str> = cmd.to_vec();
+            args.extend(oblique);
+            args.extend(["--tangential", law]);
+            args.extend(extra);
+            run(&args)
+        };
+        let outputs = [
+            (
+                "simulate text",
+                with(&["simulate"], &[])
+                    .lines()
+                    .map(|l| l.split_whitespace().next().unwrap_or("").to_string())
+                    .collect::<Vec<_>>()
+                    .join(" "),
+            ),
+            ("simulate json", with(&["simulate"], &["--format", "json"])),
+            ("simulate csv", with(&["simulate"], &["--format", "csv"]).lines().next().unwrap().to_string()),
+            ("sweep", with(&["sweep"], &["--mu", "0.3,0.4"]).lines().next().unwrap().to_string()),
+            (
+                "uncertainty",
+                with(&["uncertainty"], &["--vary", "mu=uniform:0.3:0.5", "--samples", "4", "--format", "csv"]),
+            ),
+        ];
+        for (what, out) in &outputs {
+            let names: Vec<&str> = out.split(|c: char| !(c.is_alphanumeric() || c == '_')).collect();
+            for key in losses {
+                assert_eq!(names.contains(&key), law == "physical", "{law}: {key} in the {what} output:\n{out}");
+            }
+        }
+    }
+    let speed =
+        run(&["speed", "--swing", "100", "--swing-path-deg", "20", "--tangential", "physical", "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_str(&speed).unwrap();
+    for key in losses {
+        assert!(v[0]["result"][key].is_number(), "speed json lacks {key}");
+    }
+}

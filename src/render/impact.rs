@@ -57,7 +57,8 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
     let held = p.variants.grip == crate::params::Grip::Hand;
     for field in TEXT_ORDER {
         let Some(text) = field.text else { continue };
-        if (text.hand_only && !held) || (text.oblique_only && p.oblique.is_normal()) {
+        let elastic = p.oblique.tangential == crate::params::TangentialLaw::Elastic;
+        if (text.hand_only && !held) || (text.oblique_only && p.oblique.is_normal()) || (text.law_only && elastic) {
             continue;
         }
         let value = field.number(r);
@@ -94,11 +95,12 @@ pub fn undefined_remark(key: &str) -> String {
 
 /// The result's fields as JSON for `params`: every field of an oblique or spinning impact is
 /// present, an undefined one (`e_t` at too little incoming slip) as null; at normal incidence
-/// without spin the oblique fields, which do not apply, are left out.
+/// without spin the oblique fields, and under the elastic law the losses of the named
+/// tangential mechanisms, which do not apply, are left out.
 pub fn result_json(params: &Params, r: &ImpactResult) -> serde_json::Value {
     let mut v = serde_json::to_value(r).unwrap_or_default();
     if let (false, serde_json::Value::Object(map)) = (params.oblique.is_normal(), &mut v) {
-        for f in crate::solve::outcome::FIELDS.iter().filter(|f| f.is_oblique()) {
+        for f in crate::solve::outcome::FIELDS.iter().filter(|f| f.is_oblique() && !f.is_law_only()) {
             map.entry(f.key).or_insert(serde_json::Value::Null);
         }
     }

@@ -169,12 +169,14 @@ impl Study {
             || self.inputs.iter().any(|i| i.key == keys::ANGLE_DEG.key || i.key == keys::SPIN_RPM.key)
     }
 
-    /// The result fields summarised: the numeric sweep columns.
+    /// The result fields summarised: the numeric sweep columns (the losses of the named
+    /// tangential mechanisms under a law that has them).
     pub fn output_fields(&self) -> Vec<OutputField> {
         let oblique = self.is_oblique();
+        let losses = oblique && self.base.oblique.tangential != crate::params::TangentialLaw::Elastic;
         FIELDS
             .iter()
-            .filter(|f| f.sweep && (oblique || !f.is_oblique()))
+            .filter(|f| f.sweep && (oblique || !f.is_oblique()) && (losses || !f.is_law_only()))
             .filter_map(|f| match f.get {
                 Get::Number(g) => Some((f.key, f.unit, g)),
                 Get::Flag(_) => None,
