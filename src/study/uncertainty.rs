@@ -8,7 +8,7 @@ use serde_json::{json, Map, Value};
 
 use super::sensitivity::{self, Design, Summary};
 use crate::error::{Error, Result};
-use crate::params::spec::{sig, Check, Values};
+use crate::params::spec::{readable, sig, Check, Values};
 use crate::params::uncertainty::Dist;
 use crate::params::{keys, Overrides, Params};
 use crate::solve::outcome::{Get, FIELDS};
@@ -53,11 +53,13 @@ pub fn parse_vary(text: &str, base: &Params) -> Result<Input> {
                 spec.key,
                 dist.text(),
                 format!(
-                    "samples reach {}..{}{unit}; {} must satisfy {min:e} <= {} <= {max:e}{unit}",
+                    "samples reach {}..{}{unit}; {} must satisfy {} <= {} <= {}{unit}",
                     sig(lo, 6),
                     sig(hi, 6),
                     spec.what,
-                    spec.key
+                    readable(min),
+                    spec.key,
+                    readable(max)
                 ),
             ));
         }
@@ -331,7 +333,7 @@ mod tests {
         assert_eq!(msg(&["ks=normal:4e4:-1"], 8), "invalid ks = normal:4e4:-1: a normal needs SD > 0");
         assert_eq!(
             msg(&["ks=uniform:0.5:2e4"], 8),
-            "invalid ks = uniform:0.5:20000: samples reach 0.5..20000 N/m; string-plane stiffness must satisfy 1e0 <= ks <= 1e12 N/m"
+            "invalid ks = uniform:0.5:20000: samples reach 0.5..20000 N/m; string-plane stiffness must satisfy 1 <= ks <= 1e12 N/m"
         );
         assert!(msg(&["x=uniform:0.1:0.9"], 8).starts_with("invalid x = uniform:0.1:0.9: samples reach 0.9 m, where"));
         assert!(msg(&["p=uniform:0.5:2"], 8).contains("1 < p <= 10"));
