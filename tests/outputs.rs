@@ -284,4 +284,12 @@ fn a_map_through_a_symlink_keeps_its_three_files_beside_the_target() {
     let printed = String::from_utf8_lossy(&o.stdout);
     let wrote = printed.lines().last().unwrap();
     assert!(wrote.contains("link.csv (a link to ") && wrote.contains("t.png") && wrote.contains("t.json"), "{wrote}");
+    // a link to a .png would have the CSV and the PNG in one file: refused, nothing written
+    let to_png = s.path("out/to_png.csv");
+    std::os::unix::fs::symlink("../data/t.png", &to_png).unwrap();
+    let before = std::fs::read(s.path("data/t.png")).unwrap();
+    let o = bin().args(grid).arg(&to_png).output().unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("invalid out"), "{}", stderr(&o));
+    assert!(std::fs::read(s.path("data/t.png")).unwrap() == before);
 }

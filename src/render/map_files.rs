@@ -26,16 +26,23 @@ pub struct Outputs {
 }
 
 impl Outputs {
-    /// The files for `--out path` (the PNG and JSON replace its extension); the directory must
-    /// exist and the path must not itself end in `.png` or `.json`.
+    /// The files for `--out path` (the PNG and JSON replace its extension, or its link
+    /// target's); the directory must exist and neither the path nor what it links to may end
+    /// in `.png` or `.json` (the CSV would be overwritten by a sibling).
     pub fn for_csv(path: &std::path::Path) -> Result<Outputs> {
-        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
-        if ext == "png" || ext == "json" || path.file_name().is_none() {
-            return Err(Error::invalid(
+        let sibling_named = |p: &std::path::Path| {
+            let ext = p.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
+            ext == "png" || ext == "json" || p.file_name().is_none()
+        };
+        let refuse = || {
+            Error::invalid(
                 "out",
                 path.display(),
                 "the CSV file of the map (the PNG and JSON go next to it with the same stem), e.g. map.csv",
-            ));
+            )
+        };
+        if sibling_named(path) {
+            return Err(refuse());
         }
         crate::render::io::check_output_dir("out", path)?;
         let target = match resolve(path)? {
@@ -46,6 +53,7 @@ impl Outputs {
                     "a map is three files (CSV, PNG and JSON with the same stem): give a file path, not a device or pipe (--format csv prints the table)",
                 ))
             }
+            Resolved::File(target) if sibling_named(&target) => return Err(refuse()),
             Resolved::File(target) => target,
         };
         let is_link = std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink());
