@@ -201,6 +201,20 @@ fn e_t_is_undefined_when_the_ball_arrives_nearly_rolling() {
     assert!(e_t[1].parse::<f64>().unwrap().is_finite(), "{out}");
     let r = simulate(&rolling(0.02)).unwrap();
     assert!(r.e_t.is_finite(), "e_t = {} at 2 % slip", r.e_t);
+    // drawn across the rolling spin, its summary is undefined and says why
+    let o = bin()
+        .args(["uncertainty", "--solver", "modal", "--v1", "10", "--angle-deg", "10", "--tangential", "physical"])
+        .args([
+            "--samples",
+            "8",
+            "--vary",
+            &format!("spin-rpm=uniform:{}:{}", p.oblique.spin_rpm - 10.0, p.oblique.spin_rpm + 10.0),
+        ])
+        .output()
+        .unwrap();
+    let out = String::from_utf8(o.stdout).unwrap();
+    let l = line(&out, "e_t");
+    assert!(l.contains("undefined in some draws") && l.contains("below 1 %"), "{l}");
 }
 
 /// The losses of the named tangential mechanisms are reported wherever an impact's results

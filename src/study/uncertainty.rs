@@ -288,14 +288,22 @@ impl Study {
         for o in outputs {
             let m = &o.summary;
             s.push_str(&format!(
-                "{:<22} mean {} sd {}  q05 {} q50 {} q95 {} {}\n",
+                "{:<22} mean {} sd {}  q05 {} q50 {} q95 {} {}{}\n",
                 o.key,
                 f(m.mean),
                 f(m.sd),
                 f(m.q05),
                 f(m.q50),
                 f(m.q95),
-                o.unit
+                o.unit,
+                // (an output undefined in some draws, e_t, says why)
+                if m.mean.is_nan() {
+                    format!(" undefined in some draws {}", crate::render::impact::undefined_remark(o.key))
+                        .trim_end()
+                        .to_string()
+                } else {
+                    String::new()
+                }
             ));
             for (k, i) in self.inputs.iter().enumerate() {
                 let (a, b) = (m.first[k], m.total[k]);
