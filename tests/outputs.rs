@@ -293,3 +293,21 @@ fn a_map_through_a_symlink_keeps_its_three_files_beside_the_target() {
     assert!(stderr(&o).contains("invalid out"), "{}", stderr(&o));
     assert!(std::fs::read(s.path("data/t.png")).unwrap() == before);
 }
+
+/// A standard error that cannot be written (`2> /dev/full`) changes neither the result nor the
+/// exit code: a warning is dropped (exit 0, the result printed), an error still exits 2, and
+/// nothing panics (exit 101).
+#[test]
+fn a_full_standard_error_changes_no_result_or_exit_code() {
+    let s = Scratch::new("stderr");
+    let full = device(&s, "full");
+    let err = || std::fs::OpenOptions::new().write(true).open(&full).unwrap();
+    let o = bin().args(["simulate", "--solver", "modal", "--ks", "3e5"]).stderr(err()).output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "a warning on a full stderr");
+    let quiet = bin().args(["simulate", "--solver", "modal", "--ks", "3e5", "--quiet"]).output().unwrap();
+    assert!(!o.stdout.is_empty() && o.stdout == quiet.stdout);
+    for args in [&["simulate", "--ks", "-1"][..], &["simulate", "--no-such-flag"][..]] {
+        let o = bin().args(args).stderr(err()).output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+    }
+}
