@@ -125,8 +125,21 @@ pub type Result<T> = std::result::Result<T, Error>;
 
 impl Error {
     /// Build an [`Error::InvalidParameter`].
+    /// A value that is a number is shown readably: to [`MESSAGE_DIGITS`] significant digits,
+    /// with an exponent where it is very large or small (`1e30`, not 31 digits;
+    /// `2.1`, not `2.0999999999999996`); any other text as it is.
+    ///
+    /// [`MESSAGE_DIGITS`]: crate::params::spec::MESSAGE_DIGITS
     pub fn invalid(field: &'static str, value: impl std::fmt::Display, allowed: impl Into<String>) -> Self {
-        Error::InvalidParameter { field, value: value.to_string(), allowed: allowed.into() }
+        let text = value.to_string();
+        let value = match text.parse::<f64>() {
+            // (an integer of up to 15 digits, a count, is shown exactly as it is)
+            Ok(v) if v.is_finite() && (text.contains('.') || text.len() > 15) => {
+                crate::params::spec::sig(v, crate::params::spec::MESSAGE_DIGITS)
+            }
+            _ => text,
+        };
+        Error::InvalidParameter { field, value, allowed: allowed.into() }
     }
 
     /// Build an [`Error::Io`] from a path and an `std::io::Error`.

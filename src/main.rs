@@ -30,7 +30,11 @@ fn main() -> ExitCode {
                 .map(str::trim)
                 .filter(|l| !l.is_empty() && !l.starts_with("Usage:") && !l.starts_with("For more information"))
                 .collect();
-            eprintln!("{}", if parts.is_empty() { "error: bad arguments".to_string() } else { parts.join(" ") });
+            cli::common::stderr_line(&if parts.is_empty() {
+                "error: bad arguments".to_string()
+            } else {
+                parts.join(" ")
+            });
             return ExitCode::from(2);
         }
     };
@@ -39,7 +43,7 @@ fn main() -> ExitCode {
     match outcome {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e}");
+            cli::common::stderr_line(&format!("error: {e}"));
             ExitCode::from(2)
         }
     }

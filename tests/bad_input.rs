@@ -246,3 +246,28 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
     assert_eq!(std::fs::read_to_string(&series).unwrap(), SENTINEL);
     assert!(!s.dir.join("figs").exists(), "figures created its output directory for an unknown id");
 }
+
+/// Numbers in messages read as numbers: a huge value with an exponent, not 31 digits; a
+/// computed sweep value without its binary noise (`2.1`, not `2.0999999999999996`); the
+/// allowed range in plain bounds (`0 <= mu <= 2`, `1 <= ks <= 1e12`, not `0e0`, `1e0`).
+#[test]
+fn numbers_in_messages_are_short_and_readable() {
+    let stderr = |args: &[&str]| {
+        let o = Command::new(env!("CARGO_BIN_EXE_racket-impact")).args(args).output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        String::from_utf8(o.stderr).unwrap()
+    };
+    assert_eq!(
+        stderr(&["simulate", "--ks", "1e30"]),
+        "error: invalid ks = 1e30: string-plane stiffness must satisfy 1 <= ks <= 1e12 N/m\n"
+    );
+    assert_eq!(
+        stderr(&["sweep", "--mu", "0:3:11"]),
+        "error: invalid mu = 2.1: friction coefficient must satisfy 0 <= mu <= 2\n"
+    );
+    let far = stderr(&["sweep", "--x", "0:1e30:3"]);
+    assert!(far.starts_with("error: invalid x = 5e29: "), "{far}");
+    // a refused value keeps the digits that tell it from the bound beside it
+    let near = stderr(&["simulate", "--x", "0.7100001"]);
+    assert!(near.starts_with("error: invalid x = 0.7100001: ") && near.contains("L = 0.71 m"), "{near}");
+}

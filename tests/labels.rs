@@ -157,3 +157,114 @@ fn oblique_maps_name_angle_azimuth_spin_and_mu_in_title_and_table() {
     assert!(normal.metadata("paper", Quantity::Power, (9, 5)).unwrap().get("spin_convention").is_none());
     assert!(!normal.heatmap(Quantity::Power, "paper").title.contains("angle"));
 }
+
+/// `e_t` divides by the incoming slip of the contact point: a ball arriving nearly rolling
+/// (slip 1e-4 of the incident speed, under the physical law whose offset torque keeps the
+/// outgoing slip finite) has it undefined in every output (NaN; text `undefined` with the
+/// threshold, JSON null, an empty CSV field, in `simulate` and `sweep`), while at 2 % slip it
+/// is a number.
+#[test]
+fn e_t_is_undefined_when_the_ball_arrives_nearly_rolling() {
+    use racket_impact::params::TangentialLaw;
+    use racket_impact::render::impact::result_json;
+    use racket_impact::solve::oblique::E_T_MIN_SLIP_FRACTION;
+    let rolling = |slip: f64| {
+        let mut p = oblique(0.158, 0.0, 10.0, 0.0, 0.0);
+        p.oblique.tangential = TangentialLaw::Physical;
+        let v_t = p.impact.v1 * 10f64.to_radians().sin();
+        p.oblique.spin_rpm = (v_t - slip * p.impact.v1) / p.oblique.ball_radius / (std::f64::consts::PI / 30.0);
+        p
+    };
+    let p = rolling(1e-4);
+    let r = simulate(&p).unwrap();
+    assert!(r.e_t.is_nan(), "e_t = {} at a slip of 1e-4 of the incident speed", r.e_t);
+    let text = result_text(&p, &r);
+    let l = line(&text, "e_t");
+    assert!(l.contains("undefined") && l.contains(&format!("below {} %", 100.0 * E_T_MIN_SLIP_FRACTION)), "{l}");
+    assert!(result_json(&p, &r)["e_t"].is_null());
+    let csv = result_csv(&p, &r);
+    let (head, row) = csv.split_once('\n').unwrap();
+    let at = head.split(',').position(|c| c == "e_t").expect("an e_t column");
+    assert_eq!(row.trim_end().split(',').nth(at), Some(""), "{csv}");
+    let spin = p.oblique.spin_rpm.to_string();
+    let o = bin()
+        .args(["sweep", "--solver", "modal", "--v1", "10", "--angle-deg", "10", "--tangential", "physical"])
+        .args(["--spin-rpm", &format!("{spin},0")])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = String::from_utf8(o.stdout).unwrap();
+    let mut lines = out.lines();
+    let at = lines.next().unwrap().split(',').position(|c| c == "e_t").unwrap();
+    let e_t: Vec<&str> = lines.map(|l| l.split(',').nth(at).unwrap()).collect();
+    assert_eq!(e_t[0], "", "{out}");
+    assert!(e_t[1].parse::<f64>().unwrap().is_finite(), "{out}");
+    let r = simulate(&rolling(0.02)).unwrap();
+    assert!(r.e_t.is_finite(), "e_t = {} at 2 % slip", r.e_t);
+    // drawn across the rolling spin, its summary is undefined and says why
+    let o = bin()
+        .args(["uncertainty", "--solver", "modal", "--v1", "10", "--angle-deg", "10", "--tangential", "physical"])
+        .args([
+            "--samples",
+            "8",
+            "--vary",
+            &format!("spin-rpm=uniform:{}:{}", p.oblique.spin_rpm - 10.0, p.oblique.spin_rpm + 10.0),
+        ])
+        .output()
+        .unwrap();
+    let out = String::from_utf8(o.stdout).unwrap();
+    let l = line(&out, "e_t");
+    assert!(l.contains("undefined in some draws") && l.contains("below 1 %"), "{l}");
+}
+
+/// The losses of the named tangential mechanisms are reported wherever an impact's results
+/// are: simulate's text, JSON and CSV, sweep's columns, uncertainty's outputs and speed's JSON
+/// (under a law that has them; under the elastic law, where they do not apply, none has them).
+#[test]
+fn tangential_losses_are_in_every_output_of_an_impact() {
+    let losses = ["f_tangential_damping", "f_string_sliding", "f_rolling"];
+    let run = |args: &[&str]| {
+        let o = bin().args(args).output().unwrap();
+        assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8(o.stdout).unwrap()
+    };
+    let oblique = ["--angle-deg", "30", "--solver", "modal"];
+    for law in ["physical", "elastic"] {
+        let with = |cmd: &[&str], extra: &[&str]| -> String {
+            let mut args: Vec<&str> = cmd.to_vec();
+            args.extend(oblique);
+            args.extend(["--tangential", law]);
+            args.extend(extra);
+            run(&args)
+        };
+        let outputs = [
+            (
+                "simulate text",
+                with(&["simulate"], &[])
+                    .lines()
+                    .map(|l| l.split_whitespace().next().unwrap_or("").to_string())
+                    .collect::<Vec<_>>()
+                    .join(" "),
+            ),
+            ("simulate json", with(&["simulate"], &["--format", "json"])),
+            ("simulate csv", with(&["simulate"], &["--format", "csv"]).lines().next().unwrap().to_string()),
+            ("sweep", with(&["sweep"], &["--mu", "0.3,0.4"]).lines().next().unwrap().to_string()),
+            (
+                "uncertainty",
+                with(&["uncertainty"], &["--vary", "mu=uniform:0.3:0.5", "--samples", "4", "--format", "csv"]),
+            ),
+        ];
+        for (what, out) in &outputs {
+            let names: Vec<&str> = out.split(|c: char| !(c.is_alphanumeric() || c == '_')).collect();
+            for key in losses {
+                assert_eq!(names.contains(&key), law == "physical", "{law}: {key} in the {what} output:\n{out}");
+            }
+        }
+    }
+    let speed =
+        run(&["speed", "--swing", "100", "--swing-path-deg", "20", "--tangential", "physical", "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_str(&speed).unwrap();
+    for key in losses {
+        assert!(v[0]["result"][key].is_number(), "speed json lacks {key}");
+    }
+}

@@ -417,3 +417,32 @@ fn json_close(a: &serde_json::Value, b: &serde_json::Value) -> bool {
         _ => a == b,
     }
 }
+
+/// A face map of an oblique quantity (rebound angle, spin) greys the points where the ball does
+/// not rebound (v2_n < 0: a rebound angle over 90 degrees), as a power map greys them below
+/// its floor, and its colour bar says so; a power map has no such mask.
+#[test]
+fn oblique_maps_grey_the_points_without_rebound() {
+    let mut p = Params::paper();
+    p.oblique.angle_deg = 30.0;
+    p.numerics.solver = racket_impact::params::SolverKind::Modal;
+    let m = FaceMap::compute(&p, 21, 9, &mut |_| {}).unwrap();
+    let angles = m.values(Quantity::ReboundAngle);
+    assert!(angles.iter().any(|a| a.abs() > 90.0) && angles.iter().any(|a| a.abs() < 90.0), "{angles:?}");
+    for q in [Quantity::ReboundAngle, Quantity::Spin] {
+        let h = m.heatmap(q, "paper");
+        assert_eq!(h.grey_below_zero.len(), angles.len(), "{q:?}");
+        for (g, a) in h.grey_below_zero.iter().zip(&angles) {
+            assert_eq!(a.is_nan(), g.is_nan());
+            if a.is_finite() {
+                assert_eq!(*g < 0.0, a.abs() > 90.0, "{q:?}: angle {a} with v2_n {g}");
+            }
+        }
+        assert!(h.bar_label.contains("grey: ") && h.bar_label.contains("no rebound"), "{}", h.bar_label);
+        assert!(
+            h.shown_values().iter().filter(|v| v.is_finite()).count() < angles.iter().filter(|v| v.is_finite()).count()
+        );
+    }
+    assert!(m.heatmap(Quantity::ReboundAngle, "paper").shown_values().iter().all(|a| a.is_nan() || a.abs() <= 90.0));
+    assert!(m.heatmap(Quantity::Power, "paper").grey_below_zero.is_empty());
+}

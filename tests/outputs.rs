@@ -226,3 +226,88 @@ fn a_failed_standard_output_publishes_no_file() {
         assert!(left.is_empty(), "{args:?} left {left:?} (expected none of {files:?})");
     }
 }
+
+/// A failing output device (`--series /dev/full`) fails the command (exit 2, one line) before
+/// its result is printed: the device is written before the standard output, the files after.
+#[test]
+fn a_failing_output_device_fails_before_the_result_is_printed() {
+    let s = Scratch::new("device-first");
+    let full = device(&s, "full");
+    let mut cases = writers(&full);
+    cases.retain(|a| a[0] != "sweep"); // (a sweep to a file prints nothing)
+    for format in ["text", "json", "csv"] {
+        cases.push(vec![
+            "simulate".into(),
+            "--series".into(),
+            full.to_str().unwrap().into(),
+            "--format".into(),
+            format.into(),
+        ]);
+    }
+    for args in cases {
+        let o = bin().args(&args).output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert_eq!(stderr(&o).lines().count(), 1, "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains("No space left"), "{args:?}: {}", stderr(&o));
+        assert!(
+            o.stdout.is_empty(),
+            "{args:?} printed its result before failing: {}",
+            String::from_utf8_lossy(&o.stdout)
+        );
+    }
+}
+
+/// `map --out LINK.csv`: the link's target is written and the link kept, and the PNG and JSON
+/// go beside the target with its stem (the three files of a map stay together); the summary
+/// names where they went. A plain path keeps its siblings beside it.
+#[test]
+fn a_map_through_a_symlink_keeps_its_three_files_beside_the_target() {
+    let s = Scratch::new("map-link");
+    std::fs::create_dir(s.path("data")).unwrap();
+    std::fs::create_dir(s.path("out")).unwrap();
+    std::fs::write(s.path("data/t.csv"), "old\n").unwrap();
+    std::fs::write(s.path("data/t.png"), "old png\n").unwrap();
+    let link = s.path("out/link.csv");
+    std::os::unix::fs::symlink("../data/t.csv", &link).unwrap();
+    let grid = ["map", "--nx", "3", "--nr", "2", "--out"];
+    let o = bin().args(grid).arg(&link).output().unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink(), "the link was replaced");
+    assert_eq!(names_in(&s.path("out")), vec!["link.csv"], "siblings left beside the link");
+    assert_eq!(names_in(&s.path("data")), vec!["t.csv", "t.json", "t.png"]);
+    let o2 = bin().args(grid).arg(s.path("plain.csv")).output().unwrap();
+    assert!(o2.status.success(), "{}", stderr(&o2));
+    for ext in ["csv", "png", "json"] {
+        let (through, plain) = (s.path(&format!("data/t.{ext}")), s.path(&format!("plain.{ext}")));
+        assert!(std::fs::read(through).unwrap() == std::fs::read(plain).unwrap(), "{ext} differs from a plain run");
+    }
+    let printed = String::from_utf8_lossy(&o.stdout);
+    let wrote = printed.lines().last().unwrap();
+    assert!(wrote.contains("link.csv (a link to ") && wrote.contains("t.png") && wrote.contains("t.json"), "{wrote}");
+    // a link to a .png would have the CSV and the PNG in one file: refused, nothing written
+    let to_png = s.path("out/to_png.csv");
+    std::os::unix::fs::symlink("../data/t.png", &to_png).unwrap();
+    let before = std::fs::read(s.path("data/t.png")).unwrap();
+    let o = bin().args(grid).arg(&to_png).output().unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("invalid out"), "{}", stderr(&o));
+    assert!(std::fs::read(s.path("data/t.png")).unwrap() == before);
+}
+
+/// A standard error that cannot be written (`2> /dev/full`) changes neither the result nor the
+/// exit code: a warning is dropped (exit 0, the result printed), an error still exits 2, and
+/// nothing panics (exit 101).
+#[test]
+fn a_full_standard_error_changes_no_result_or_exit_code() {
+    let s = Scratch::new("stderr");
+    let full = device(&s, "full");
+    let err = || std::fs::OpenOptions::new().write(true).open(&full).unwrap();
+    let o = bin().args(["simulate", "--solver", "modal", "--ks", "3e5"]).stderr(err()).output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "a warning on a full stderr");
+    let quiet = bin().args(["simulate", "--solver", "modal", "--ks", "3e5", "--quiet"]).output().unwrap();
+    assert!(!o.stdout.is_empty() && o.stdout == quiet.stdout);
+    for args in [&["simulate", "--ks", "-1"][..], &["simulate", "--no-such-flag"][..]] {
+        let o = bin().args(args).stderr(err()).output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+    }
+}

@@ -118,7 +118,7 @@ fn bad_specs_are_refused_in_one_line_and_nothing_is_written() {
         (&["--vary", "kz=uniform:1:2"], "unknown parameter 'kz'"),
         (&["--vary", "ks=uniform:5e4:2e4"], "invalid ks = uniform:5e4:2e4: the range needs LO < HI"),
         (&["--vary", "ks=normal:4e4:-5"], "a normal needs SD > 0"),
-        (&["--vary", "ks=uniform:0.5:2e4"], "1e0 <= ks <= 1e12 N/m"),
+        (&["--vary", "ks=uniform:0.5:2e4"], "1 <= ks <= 1e12 N/m"),
         (&["--vary", "p=uniform:0.8:2"], "1 < p <= 10"),
         (&["--vary", "ks=uniform:2e4:3e4", "--vary", "ks=uniform:3e4:4e4"], "ks is varied twice"),
         (
@@ -167,4 +167,50 @@ fn help_lists_exactly_what_the_command_accepts() {
     for declared in ["ks ~ uniform:36000:44000", "p ~ uniform:2.44445:2.7737"] {
         assert!(help.contains(declared), "{declared} missing from --help");
     }
+}
+
+/// A drawn input whose draws reach outside the usual range `simulate` warns with earns one
+/// warning line per key, naming what was judged (a uniform's bounds, a normal's mean +- 3 sd)
+/// and the same usual range; draws inside it, none; the run's result is unchanged.
+#[test]
+fn draws_outside_the_usual_range_earn_one_warning_per_key() {
+    let stderr = |o: &Output| String::from_utf8_lossy(&o.stderr).into_owned();
+    let warns =
+        |o: &Output| stderr(o).lines().filter(|l| l.starts_with("warning:")).map(String::from).collect::<Vec<_>>();
+    let base = ["uncertainty", "--solver", "modal", "--samples", "4"];
+    let run = |vary: &[&str]| {
+        let mut args = base.to_vec();
+        for v in vary {
+            args.extend(["--vary", v]);
+        }
+        let o = bin(&args);
+        assert!(o.status.success(), "{vary:?}: {}", stderr(&o));
+        o
+    };
+    let quiet = run(&["ks=uniform:2e4:6e4", "mb=normal:0.057:0.001"]);
+    assert!(warns(&quiet).is_empty(), "{:?}", warns(&quiet));
+    // ks from 1e3 (below 5e3); mb 0.15 +- 3 x 0.025 reaches 0.225 (above 0.2); k1 inside
+    let o = run(&["ks=uniform:1e3:6e4", "mb=normal:0.15:0.025", "k1=loguniform:2e4:4e4"]);
+    let w = warns(&o);
+    assert_eq!(w.len(), 2, "{w:?}");
+    assert!(w[0].starts_with("warning: ks = uniform:1000:60000") && w[0].contains("(its bounds)"), "{}", w[0]);
+    assert!(
+        w[1].starts_with("warning: mb = normal:0.15:0.025") && w[1].contains("0.075..0.225 kg (mean +- 3 sd)"),
+        "{}",
+        w[1]
+    );
+    // the usual ranges are simulate's
+    let sim = bin(&["simulate", "--ks", "1000", "--mb", "0.24"]);
+    for (line, key) in w.iter().zip(["ks", "mb"]) {
+        let usual = line.split("outside the usual ").nth(1).unwrap().split(" of ").next().unwrap();
+        assert!(
+            stderr(&sim).lines().any(|l| l.starts_with(&format!("warning: {key} =")) && l.contains(usual)),
+            "{usual}: {}",
+            stderr(&sim)
+        );
+    }
+    // a normal judged at 3 sd: 0.15 +- 3 x 0.016 stays inside
+    assert!(warns(&run(&["mb=normal:0.15:0.016"])).is_empty());
+    let q = bin(&[&base[..], &["--quiet", "--vary", "ks=uniform:1e3:6e4"]].concat());
+    assert!(q.stderr.is_empty() && q.stdout == run(&["ks=uniform:1e3:6e4"]).stdout);
 }

@@ -54,6 +54,14 @@ pub fn stream_stdout(bytes: &[u8]) -> Result<()> {
     }
 }
 
+/// One line on stderr. A stderr that cannot be written (`2> /dev/full`, a closed pipe) is
+/// not an error of the command (nothing is left to report it on), and never the panic of
+/// `eprintln!`: the command's result and exit code stand.
+pub fn stderr_line(line: &str) {
+    use std::io::Write;
+    let _ = writeln!(std::io::stderr().lock(), "{line}");
+}
+
 /// Set by the global `--quiet`: no warnings.
 static QUIET: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
 
@@ -66,7 +74,7 @@ pub fn set_quiet(quiet: bool) {
 /// code.
 pub fn warn(message: &str) {
     if !QUIET.load(std::sync::atomic::Ordering::Relaxed) {
-        eprintln!("warning: {message}");
+        stderr_line(&format!("warning: {message}"));
     }
 }
 

@@ -65,14 +65,14 @@ pub fn run(a: FiguresArgs) -> Result<()> {
     for e in &selected {
         let start = std::time::Instant::now();
         let table = experiments::run_and_write(e, &ctx, &out)?;
-        eprintln!(
+        super::common::stderr_line(&format!(
             "{:<24} {:>4} rows  {:>6.2} s  -> {}/{}.{{csv,png}}",
             e.id,
             table.rows.len(),
             start.elapsed().as_secs_f64(),
             out.display(),
             e.id
-        );
+        ));
     }
     Ok(())
 }

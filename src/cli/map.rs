@@ -44,7 +44,8 @@ pub struct MapArgs {
     /// Grid points across the face, from -half-width to +half-width (2..=401)
     #[arg(long, default_value_t = 21, allow_hyphen_values = true)]
     pub nr: usize,
-    /// Output CSV; the PNG and JSON go next to it with the same stem
+    /// Output CSV; the PNG and JSON go next to it with the same stem (a symbolic link: its
+    /// target is written, the link kept, and the PNG and JSON go next to the target, with its stem)
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Difference map against this racket (file or preset): B - A with A = --racket
@@ -87,23 +88,29 @@ pub fn run(a: MapArgs) -> Result<()> {
     let map = computed?;
     let json = map.json()?;
     let csv = map.table.to_csv();
-    // the files are published only once the printing has succeeded (nothing left otherwise)
+    // the files are published only once the printing has succeeded (nothing left otherwise);
+    // a device among them is written before the printing
     let staged = outputs.stage(&csv, &map.heatmap, &json)?;
-    match a.common.format {
-        Format::Text => {
-            out!("{}", map.summary);
-            outln!(
-                "wrote {}, {}, {} ({:.2} s)",
-                outputs.csv.display(),
-                outputs.png.display(),
-                outputs.json.display(),
-                started.elapsed().as_secs_f64()
-            );
+    staged.publish(|| {
+        match a.common.format {
+            Format::Text => {
+                out!("{}", map.summary);
+                let csv = match &outputs.csv_target {
+                    Some(target) => format!("{} (a link to {})", outputs.csv.display(), target.display()),
+                    None => outputs.csv.display().to_string(),
+                };
+                outln!(
+                    "wrote {csv}, {}, {} ({:.2} s)",
+                    outputs.png.display(),
+                    outputs.json.display(),
+                    started.elapsed().as_secs_f64()
+                );
+            }
+            Format::Json => out!("{json}"),
+            Format::Csv => out!("{csv}"),
         }
-        Format::Json => out!("{json}"),
-        Format::Csv => out!("{csv}"),
-    }
-    staged.commit()?;
+        Ok(())
+    })?;
     warn_params(configs.iter().map(|(_, p)| p));
     let theta = ["theta_end_deg", "theta_end_deg_a", "theta_end_deg_b"]
         .iter()

@@ -43,7 +43,9 @@ pub enum Command {
     ///
     /// v_out = e_A v_in + (1 + e_A) v_racket (the paper's frame transformation), with e_A
     /// computed at the relative speed v_in + v_racket and the racket's swing speed taken at the
-    /// impact point. Example: racket-impact speed --racket tweener --swing 100 --incoming 60
+    /// impact point. Text and CSV give each variant's speeds with e_A, tau and theta (a
+    /// deliberate subset); --format json gives every result field of each impact, as simulate's
+    /// JSON does. Example: racket-impact speed --racket tweener --swing 100 --incoming 60
     /// --compare-tension-lb 50,60
     Speed(speed::SpeedArgs),
     /// Run the cartesian product of ranges or lists of any parameters, in parallel, as CSV
@@ -60,7 +62,8 @@ pub enum Command {
     /// point, the solver and its step are not options: the grid chooses the points, and a map
     /// runs the modal solver wherever the model variants allow it, else fd with its automatic
     /// step (a --config file's x, r, solver and dt are named as unused). --format selects what is printed: a text summary, the JSON
-    /// metadata or the CSV table. Example: racket-impact map --racket tweener --quantity power
+    /// metadata or the CSV table (the map quantities at every point, a deliberate subset of the
+    /// result fields: simulate --x X --r R gives all of one point). Example: racket-impact map --racket tweener --quantity power
     /// --compare-tension-lb 50,60
     Map(map::MapArgs),
     /// An impact's result fields under uncertain inputs, or every paper claim under the declared uncertainty

@@ -2,6 +2,7 @@
 
 use clap::Args;
 use racket_impact::model::beam::Beam;
+use racket_impact::params::spec::sig;
 use racket_impact::{Error, Result};
 
 use super::common::{out, warn_params, Common, Format};
@@ -48,7 +49,10 @@ pub fn run(a: ModesArgs) -> Result<()> {
         Format::Text => {
             let mut s = format!(
                 "free-free racket: L = {} m, M = {} kg, EI = {} N m^2, N = {}\n",
-                params.racket.length, params.racket.mass, params.racket.ei, n
+                sig(params.racket.length, 6),
+                sig(params.racket.mass, 6),
+                sig(params.racket.ei, 6),
+                n
             );
             for (k, f) in freqs.iter().enumerate() {
                 s.push_str(&format!("mode {}: {:9.2} Hz\n", k + 1, f));

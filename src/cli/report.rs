@@ -32,12 +32,13 @@ pub fn run(a: ReportArgs) -> Result<()> {
     }
     let rows = racket_impact::report::evaluate()?;
     let md = racket_impact::report::document(&rows)?;
-    // REPORT.md is published only once the report has been printed
+    // REPORT.md is published only once the report has been printed (a device before it)
     let mut staged = racket_impact::render::io::Staged::new();
     if !a.no_write {
         staged.bytes(&out, md.as_bytes())?;
     }
-    out!("{md}");
-    staged.commit()?;
-    Ok(())
+    staged.publish(|| {
+        out!("{md}");
+        Ok(())
+    })
 }

@@ -86,7 +86,7 @@ pub fn run(a: SimulateArgs) -> Result<()> {
         / (2.0 * std::f64::consts::PI);
     let text = match a.common.format {
         Format::Json => {
-            let mut v = serde_json::to_value(result).map_err(|e| Error::io("<json>", e))?;
+            let mut v = racket_impact::render::impact::result_json(&params, &result);
             v["params"] = serde_json::to_value(params).map_err(|e| Error::io("<json>", e))?;
             if !params.oblique.is_normal() {
                 v["spin_convention"] = racket_impact::render::impact::SIMULATE_SPIN_CONVENTION.into();
@@ -97,13 +97,15 @@ pub fn run(a: SimulateArgs) -> Result<()> {
         Format::Csv => racket_impact::render::impact::result_csv(&params, &result),
         Format::Text => racket_impact::render::impact::result_text(&params, &result),
     };
-    // the series file is published only once the result has been printed
+    // a series device is written before the result is printed, a series file renamed after
     let mut staged = racket_impact::render::io::Staged::new();
     if let (Some(path), Some(rows)) = (&a.series, &series) {
         racket_impact::render::impact::stage_series(&mut staged, path, &params, rows)?;
     }
-    out!("{text}");
-    staged.commit()?;
+    staged.publish(|| {
+        out!("{text}");
+        Ok(())
+    })?;
     warn_params([&params]);
     warn_twist(result.theta_end_deg);
     if result.recontact {

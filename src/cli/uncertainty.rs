@@ -7,11 +7,12 @@ use std::path::PathBuf;
 use clap::Args;
 use racket_impact::experiments::robustness;
 use racket_impact::params::keys;
+use racket_impact::params::uncertainty::unusual_draws;
 use racket_impact::study::sensitivity::Design;
 use racket_impact::study::uncertainty::{summary_json, Study, DEFAULT_SAMPLES};
 use racket_impact::{Error, Result};
 
-use super::common::{out, warn, warn_params, Common, Format, Progress};
+use super::common::{out, warn, warn_params_except, Common, Format, Progress};
 use super::overrides::UncertaintyKeys;
 
 #[derive(Args, Debug)]
@@ -50,7 +51,9 @@ pub fn long_about() -> String {
          fd. For every numeric result field: mean, sd, q05, q50, q95, and each input's first-order (Saltelli \
          2010) and total (Jansen) Sobol' index with 95 % bootstrap intervals. --format json gives \
          {{\"samples\", \"seed\", \"inputs\", \"outputs\": {{field: {{\"mean\", \"sd\", \"q05\", \"q50\", \"q95\", \
-         \"first_order\", \"total_order\", \"first_order_ci\", \"total_order_ci\"}}}}}}. Example: racket-impact \
+         \"first_order\", \"total_order\", \"first_order_ci\", \"total_order_ci\"}}}}}}. An input whose draws reach \
+         outside the usual range simulate warns with (a uniform's or log-uniform's bounds; a normal's mean +- 3 sd) \
+         earns one warning line. Example: racket-impact \
          uncertainty --x 0.06 --vary ks=uniform:2e4:6e4 --vary mb=normal:0.057:0.0005 --format json\n\n\
          With --claims: each paper claim (golden/paper_claims.csv) under the uncertainties declared with the \
          parameters, drawn as factors on the paper's values: {}",
@@ -105,7 +108,14 @@ pub fn run(a: UncertaintyArgs) -> Result<()> {
         Format::Text => study.text(&outputs),
     };
     emit(a.out.as_ref(), &text)?;
-    warn_params([&study.base]);
+    // the base value of a drawn parameter is not used: its draws are judged instead
+    let drawn: Vec<&str> = study.inputs.iter().map(|i| i.key).collect();
+    warn_params_except([&study.base], &drawn);
+    for input in &study.inputs {
+        if let Some(line) = keys::find(input.key).and_then(|spec| unusual_draws(spec, &input.dist)) {
+            warn(&line);
+        }
+    }
     Ok(())
 }
 

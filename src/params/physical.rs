@@ -275,10 +275,12 @@ impl Impact {
         keys::R.finite(self.r)?;
         if self.r.abs() > half {
             let msg = match racket.head_length {
-                None => format!("off-axis distance must lie on the string face, |r| <= half-width = {half} m"),
+                None => {
+                    format!("off-axis distance must lie on the string face, |r| <= half-width = {} m", sig(half, 6))
+                }
                 Some(_) => format!(
                     "off-axis distance must lie inside the head outline, |r| <= {half:.4} m at x = {} m",
-                    self.x
+                    sig(self.x, 6)
                 ),
             };
             return Err(Error::invalid(keys::R.key, self.r, msg));

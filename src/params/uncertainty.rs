@@ -87,6 +87,50 @@ impl Dist {
     }
 }
 
+/// How many standard deviations either side of its mean a normal input's plausibility is judged
+/// over ([`Dist::plausibility_range`]): 99.7 % of its draws (the draws themselves reach
+/// [`U_MIN`], 5.3 standard deviations, so rarely that a warning for those would be for almost
+/// no sample).
+pub const NORMAL_REACH_SD: f64 = 3.0;
+
+impl Dist {
+    /// The values whose plausibility is judged: a uniform's or log-uniform's bounds; a normal's
+    /// mean +- [`NORMAL_REACH_SD`] standard deviations. With the words saying which.
+    pub fn plausibility_range(&self) -> ((f64, f64), String) {
+        use super::spec::sig;
+        match *self {
+            Dist::Uniform { lo, hi } | Dist::LogUniform { lo, hi } => ((lo, hi), "its bounds".to_string()),
+            Dist::Normal { mean, sd } => (
+                (mean - NORMAL_REACH_SD * sd, mean + NORMAL_REACH_SD * sd),
+                format!("mean +- {} sd", sig(NORMAL_REACH_SD, 3)),
+            ),
+        }
+    }
+}
+
+/// One warning line when the draws of `dist` for the parameter `spec` reach outside its usual
+/// range (the range `simulate` warns with, declared with the parameter); `None` inside it or
+/// for a parameter without one.
+pub fn unusual_draws(spec: &super::spec::ParamSpec, dist: &Dist) -> Option<String> {
+    use super::spec::sig;
+    let (ulo, uhi) = spec.usual?;
+    let ((lo, hi), which) = dist.plausibility_range();
+    if lo >= ulo && hi <= uhi {
+        return None;
+    }
+    let unit = if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) };
+    Some(format!(
+        "{} = {} reaches {}..{}{unit} ({which}), outside the usual {}..{}{unit} of {} (drawn anyway)",
+        spec.key,
+        dist.text(),
+        sig(lo, 6),
+        sig(hi, 6),
+        sig(ulo, 3),
+        sig(uhi, 3),
+        spec.what
+    ))
+}
+
 /// A parameter's declared uncertainty: its distribution and the source of it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Uncertainty {

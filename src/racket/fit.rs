@@ -243,8 +243,10 @@ fn fit_ei(racket: &Racket, f_hz: f64, segments: usize) -> Result<f64> {
             "frequency_hz",
             f_hz,
             format!(
-                "this frequency needs EI = {} N m^2 for this mass and length, outside the model's {lo:e}..={hi:e} N m^2",
-                fmt_sig(trial.ei, 4)
+                "this frequency needs EI = {} N m^2 for this mass and length, outside the model's {}..={} N m^2",
+                fmt_sig(trial.ei, 4),
+                crate::params::spec::readable(lo),
+                crate::params::spec::readable(hi)
             ),
         ))
     }

@@ -57,16 +57,22 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
     let held = p.variants.grip == crate::params::Grip::Hand;
     for field in TEXT_ORDER {
         let Some(text) = field.text else { continue };
-        if (text.hand_only && !held) || (text.oblique_only && p.oblique.is_normal()) {
+        let elastic = p.oblique.tangential == crate::params::TangentialLaw::Elastic;
+        if (text.hand_only && !held) || (text.oblique_only && p.oblique.is_normal()) || (text.law_only && elastic) {
             continue;
         }
-        let line = format!(
-            "{:<18} {:>12} {}{}",
-            text.label,
-            fmt_sig(field.number(r) * text.scale, 6),
-            text.unit,
-            sign_remark(field.key, r)
-        );
+        let value = field.number(r);
+        let line = if value.is_nan() {
+            format!("{:<18} {:>12} {}", text.label, "undefined", undefined_remark(field.key))
+        } else {
+            format!(
+                "{:<18} {:>12} {}{}",
+                text.label,
+                fmt_sig(value * text.scale, 6),
+                text.unit,
+                sign_remark(field.key, r)
+            )
+        };
         s.push_str(line.trim_end());
         s.push('\n');
     }
@@ -74,6 +80,31 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
         s.push_str("recontact          yes: the frame meets the ball again after separation\n");
     }
     s
+}
+
+/// Why a field of an oblique or spinning impact is undefined (NaN), in its text line.
+pub fn undefined_remark(key: &str) -> String {
+    match key {
+        "e_t" => format!(
+            "(incoming slip of the contact point below {} % of the incident speed)",
+            100.0 * crate::solve::oblique::E_T_MIN_SLIP_FRACTION
+        ),
+        _ => String::new(),
+    }
+}
+
+/// The result's fields as JSON for `params`: every field of an oblique or spinning impact is
+/// present, an undefined one (`e_t` at too little incoming slip) as null; at normal incidence
+/// without spin the oblique fields, and under the elastic law the losses of the named
+/// tangential mechanisms, which do not apply, are left out.
+pub fn result_json(params: &Params, r: &ImpactResult) -> serde_json::Value {
+    let mut v = serde_json::to_value(r).unwrap_or_default();
+    if let (false, serde_json::Value::Object(map)) = (params.oblique.is_normal(), &mut v) {
+        for f in crate::solve::outcome::FIELDS.iter().filter(|f| f.is_oblique() && !f.is_law_only()) {
+            map.entry(f.key).or_insert(serde_json::Value::Null);
+        }
+    }
+    v
 }
 
 /// The sign convention of `--spin-rpm` and `spin_out_rpm`, as the JSON and CSV of an oblique
@@ -100,13 +131,14 @@ pub fn sign_remark(key: &str, r: &ImpactResult) -> &'static str {
 /// (full precision), then the impact it describes ([`recorded`], and [`recorded_oblique`] for
 /// an oblique or spinning ball).
 pub fn result_csv(params: &Params, r: &ImpactResult) -> String {
-    let v = serde_json::to_value(r).unwrap_or_default();
+    let v = result_json(params, r);
     let mut head = Vec::new();
     let mut row = Vec::new();
     if let serde_json::Value::Object(map) = v {
         for (k, v) in map {
             head.push(k);
-            row.push(v.to_string());
+            // (an undefined field, null in the JSON, is an empty field)
+            row.push(if v.is_null() { String::new() } else { v.to_string() });
         }
     }
     for (column, value) in recorded(params).into_iter().chain(recorded_oblique(params)) {

@@ -13,10 +13,12 @@
 //!   never replaced;
 //! - a directory: refused.
 //!
-//! A command that writes several files and prints stages them in one [`Staged`] and commits
-//! them only after its standard output was written: any error before the commit leaves no
-//! output anywhere. (A rename can still fail halfway through a commit; devices are written
-//! before any rename, so the usual failure, a full device, leaves nothing.)
+//! A command that writes several files and prints stages them in one [`Staged`] and publishes
+//! them around its standard output ([`Staged::publish`]): devices and FIFOs first (the writes
+//! that can fail and cannot be taken back), then the printing, then the renames of the files.
+//! So a failing output (`--series /dev/full`) fails the command before its result is printed,
+//! a failing standard output (`> /dev/full`) leaves no file, and any error before that leaves
+//! no output anywhere. (A rename can still fail halfway through, after the printing.)
 //!
 //! Why not `tempfile::NamedTempFile::persist` or `atomic-write-file` alone: both rename onto
 //! the path they are given, which replaces a symlink or a device by a regular file. They are
@@ -169,7 +171,16 @@ impl Staged {
 
     /// Publish every staged file: devices and FIFOs are written through first (the writes that
     /// can fail), then the files are renamed over their targets.
-    pub fn commit(mut self) -> Result<()> {
+    pub fn commit(self) -> Result<()> {
+        self.publish(|| Ok(()))
+    }
+
+    /// Publish every staged file around `print` (the command's standard output): the devices
+    /// and FIFOs are written through first, so a failing one (a full device) fails the command
+    /// before anything is printed; then `print` runs; only once it has succeeded are the files
+    /// renamed over their targets, so a failed print leaves no file (a device already written
+    /// cannot be taken back).
+    pub fn publish(mut self, print: impl FnOnce() -> Result<()>) -> Result<()> {
         let files = std::mem::take(&mut self.files);
         let (through, renamed): (Vec<Pending>, Vec<Pending>) = files.into_iter().partition(|p| p.target.is_through());
         for p in &through {
@@ -177,6 +188,7 @@ impl Staged {
                 write_through(p.tmp.path(), target, &p.shown)?;
             }
         }
+        print()?;
         for p in renamed {
             if let Resolved::File(target) = &p.target {
                 p.tmp.persist(target).map_err(|e| Error::io(&p.shown, e.error))?;

@@ -2,14 +2,23 @@
 
 use crate::error::{Error, Result};
 use crate::render::heatmap::HeatMap;
-use crate::render::io::{resolve, Staged};
+use crate::render::io::{resolve, Resolved, Staged};
 
 /// The three output files of a map: the CSV as given, the PNG and the JSON next to it (same
 /// stem).
+///
+/// Where the CSV path is a symbolic link, its target is written and the link kept (as for every
+/// output, see [`crate::render::io`]), and the PNG and JSON go beside that target with its stem:
+/// the three files of a map always sit together, so a link `latest.csv -> run7/map.csv` updates
+/// `run7/map.{csv,png,json}` and never leaves a new `run7/map.csv` beside an old `run7/map.png`
+/// with the new picture at `latest.png`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Outputs {
-    /// The table.
+    /// The table, as given.
     pub csv: std::path::PathBuf,
+    /// The file the table really is, where [`Outputs::csv`] is a symbolic link (the siblings
+    /// are named from it).
+    pub csv_target: Option<std::path::PathBuf>,
     /// The heat map.
     pub png: std::path::PathBuf,
     /// The metadata.
@@ -17,27 +26,53 @@ pub struct Outputs {
 }
 
 impl Outputs {
-    /// The files for `--out path` (the PNG and JSON replace its extension); the directory must
-    /// exist and the path must not itself end in `.png` or `.json`.
+    /// The files for `--out path` (the PNG and JSON replace its extension, or its link
+    /// target's); the directory must exist and neither the path nor what it links to may end
+    /// in `.png` or `.json` (the CSV would be overwritten by a sibling).
     pub fn for_csv(path: &std::path::Path) -> Result<Outputs> {
-        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
-        if ext == "png" || ext == "json" || path.file_name().is_none() {
-            return Err(Error::invalid(
+        let sibling_named = |p: &std::path::Path| {
+            let ext = p.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
+            ext == "png" || ext == "json" || p.file_name().is_none()
+        };
+        let refuse = || {
+            Error::invalid(
                 "out",
                 path.display(),
                 "the CSV file of the map (the PNG and JSON go next to it with the same stem), e.g. map.csv",
-            ));
+            )
+        };
+        if sibling_named(path) {
+            return Err(refuse());
         }
         crate::render::io::check_output_dir("out", path)?;
-        if resolve(path)?.is_through() {
-            return Err(Error::invalid(
-                "out",
-                path.display(),
-                "a map is three files (CSV, PNG and JSON with the same stem): give a file path, not a device or pipe (--format csv prints the table)",
-            ));
-        }
-        let out =
-            Outputs { csv: path.to_path_buf(), png: path.with_extension("png"), json: path.with_extension("json") };
+        let target = match resolve(path)? {
+            Resolved::Through(_) => {
+                return Err(Error::invalid(
+                    "out",
+                    path.display(),
+                    "a map is three files (CSV, PNG and JSON with the same stem): give a file path, not a device or pipe (--format csv prints the table)",
+                ))
+            }
+            Resolved::File(target) if sibling_named(&target) => return Err(refuse()),
+            Resolved::File(target) => target,
+        };
+        let is_link = std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink());
+        let csv_target = if is_link {
+            // the target's directory exists (resolve checked it): named without `dir/../`
+            let dir = target.parent().unwrap_or(std::path::Path::new("."));
+            let dir = if dir.as_os_str().is_empty() { std::path::Path::new(".") } else { dir };
+            let dir = std::fs::canonicalize(dir).map_err(|e| Error::io(path, e))?;
+            Some(dir.join(target.file_name().unwrap_or_default()))
+        } else {
+            None
+        };
+        let stem = csv_target.as_deref().unwrap_or(path);
+        let out = Outputs {
+            csv: path.to_path_buf(),
+            png: stem.with_extension("png"),
+            json: stem.with_extension("json"),
+            csv_target: csv_target.clone(),
+        };
         for p in [&out.png, &out.json] {
             crate::render::io::check_output_dir("out", p)?;
         }
@@ -45,8 +80,8 @@ impl Outputs {
     }
 
     /// Stage all three (see [`crate::render::io::Staged`]): each is complete in a temporary
-    /// file, and the caller commits them together once everything else (the printed summary)
-    /// has succeeded; dropped instead, nothing is written.
+    /// file, and the caller publishes them together around the printed summary
+    /// ([`Staged::publish`]); dropped instead, nothing is written.
     pub fn stage(&self, csv: &str, map: &HeatMap, json: &str) -> Result<Staged> {
         let mut staged = Staged::new();
         staged.bytes(&self.csv, csv.as_bytes())?;

@@ -13,6 +13,31 @@ use crate::solve::outcome::ImpactResult;
 /// Revolutions per minute in rad/s.
 pub const RPM: f64 = std::f64::consts::PI / 30.0;
 
+/// The least incoming slip of the ball's contact point, as a fraction of the incident speed
+/// `|(v_n, v_t)|`, for which the tangential coefficient of restitution `e_t` is reported.
+///
+/// Why: `e_t = -(w_out - u_out) / w_in` divides by the incoming slip `w_in`. Under the laws
+/// with a torque that does not vanish with the slip (`offset`, `radius`, `physical`) the
+/// outgoing slip stays of the order of the incident speed as `w_in -> 0`, so the quotient grows
+/// as `1 / w_in` without bound (a ball arriving at 10 degrees nearly rolling, 354.727 rpm,
+/// gave `e_t` = -6e5 under `physical`) and then describes how small `w_in` happened to be,
+/// not the contact. Below 1 % of the incident speed `e_t` is undefined (NaN: null in the JSON,
+/// an empty CSV field, `undefined` in the text); the outgoing slip itself is in `v2_t` and
+/// `spin_out_rpm`. A ball arriving without spin slips at its whole tangential speed,
+/// `v1 sin(angle)` (17 % of `v1` at 10 degrees), far above this.
+pub const E_T_MIN_SLIP_FRACTION: f64 = 0.01;
+
+/// The tangential coefficient of restitution for the incoming slip `w_in` and the outgoing
+/// slip relative to the frame `w_out`, at the incident speed `speed`: undefined (NaN) below
+/// [`E_T_MIN_SLIP_FRACTION`].
+fn tangential_cor(w_in: f64, w_out: f64, speed: f64) -> f64 {
+    if w_in.abs() < E_T_MIN_SLIP_FRACTION * speed || w_in == 0.0 {
+        f64::NAN
+    } else {
+        -w_out / w_in
+    }
+}
+
 /// The parameters of an impact's normal part: the same impact at the normal speed.
 pub(crate) fn normal_part(p: &Params) -> Params {
     let mut n = *p;
@@ -121,7 +146,7 @@ impl Follower {
     /// a contact of `tau` seconds; the tangential ledger's error joins `energy_error`.
     /// At normal incidence without spin they are NaN (they do not apply, and the JSON leaves
     /// them out); otherwise each is checked to be finite (but `e_t`, undefined for a contact
-    /// point that arrives without slip).
+    /// point that arrives with too little slip, [`E_T_MIN_SLIP_FRACTION`]).
     pub fn complete(&self, setup: Option<&Setup>, r: &mut ImpactResult, v_n: f64) -> Result<()> {
         let nan = f64::NAN;
         (r.f_tangential_damping, r.f_string_sliding, r.f_rolling) = (nan, nan, nan);
@@ -149,7 +174,7 @@ impl Follower {
         r.v2_t = v2_t;
         r.spin_out_rpm = omega / RPM;
         r.rebound_angle_deg = v2_t.atan2(r.v2_n).to_degrees();
-        r.e_t = if w_in == 0.0 { f64::NAN } else { -t.slip() / w_in };
+        r.e_t = tangential_cor(w_in, t.slip(), s.v_n.hypot(s.v_t));
         // (the pieces' lengths add up to the contact time only to rounding)
         r.slip_fraction = (t.slide_time / r.tau_s).min(1.0);
         r.f_friction = t.friction_loss / e_in;
@@ -177,7 +202,7 @@ fn complete_physical(s: &Setup, c: &Contact, r: &mut ImpactResult, v_n: f64) -> 
     r.v2_t = v2_t;
     r.spin_out_rpm = omega / RPM;
     r.rebound_angle_deg = v2_t.atan2(r.v2_n).to_degrees();
-    r.e_t = if w_in == 0.0 { f64::NAN } else { -(v2_t - radius * omega - u) / w_in };
+    r.e_t = tangential_cor(w_in, v2_t - radius * omega - u, s.v_n.hypot(s.v_t));
     r.slip_fraction = (c.slide_time / r.tau_s).min(1.0);
     r.f_friction = c.friction_loss() / e_in;
     r.f_ball_spin = 0.5 * inertia * omega * omega / e_in;

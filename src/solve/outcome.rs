@@ -28,6 +28,9 @@ pub struct Text {
     pub hand_only: bool,
     /// Shown only for an oblique or spinning ball (`--angle-deg`, `--spin-rpm`).
     pub oblique_only: bool,
+    /// Shown only under a tangential law with named loss mechanisms (`--tangential` other than
+    /// `elastic`; NaN, and left out, under the elastic law).
+    pub law_only: bool,
 }
 
 /// One field of [`ImpactResult`].
@@ -53,6 +56,11 @@ impl Field {
     /// Whether the field is one of an oblique or spinning ball (NaN at normal incidence).
     pub fn is_oblique(&self) -> bool {
         self.text.is_some_and(|t| t.oblique_only)
+    }
+
+    /// Whether the field is a loss of a named tangential mechanism (NaN under the elastic law).
+    pub fn is_law_only(&self) -> bool {
+        self.text.is_some_and(|t| t.law_only)
     }
 
     /// The value as a number (a flag as 0 or 1).
@@ -95,17 +103,23 @@ const fn same(a: &str, b: &str) -> bool {
 
 /// A text line with the value as it is.
 const fn text(label: &'static str, unit: &'static str) -> Option<Text> {
-    Some(Text { label, scale: 1.0, unit, hand_only: false, oblique_only: false })
+    Some(Text { label, scale: 1.0, unit, hand_only: false, oblique_only: false, law_only: false })
 }
 
 /// A text line with the value times 1000 (ms, mm).
 const fn text_milli(label: &'static str, unit: &'static str) -> Option<Text> {
-    Some(Text { label, scale: 1e3, unit, hand_only: false, oblique_only: false })
+    Some(Text { label, scale: 1e3, unit, hand_only: false, oblique_only: false, law_only: false })
 }
 
 /// A text line shown only for an oblique or spinning ball.
 const fn text_oblique(label: &'static str, unit: &'static str) -> Option<Text> {
-    Some(Text { label, scale: 1.0, unit, hand_only: false, oblique_only: true })
+    Some(Text { label, scale: 1.0, unit, hand_only: false, oblique_only: true, law_only: false })
+}
+
+/// A text line shown only for an oblique or spinning ball under a tangential law with named
+/// loss mechanisms.
+const fn text_law(label: &'static str, unit: &'static str) -> Option<Text> {
+    Some(Text { label, scale: 1.0, unit, hand_only: false, oblique_only: true, law_only: true })
 }
 
 /// A field value that is left out of the JSON: NaN, which marks a quantity that does not apply
@@ -198,7 +212,7 @@ impact_result! {
     /// Energy taken by the hand (`--grip hand`: its springs' energy plus what its dampers
     /// dissipated) at separation; 0 for the paper's free racket.
     f_hand: f64 [""] checked: true, sweep: false,
-        text: Some(Text { label: "f_hand", scale: 1.0, unit: "taken by the hand (springs + damping)", hand_only: true, oblique_only: false });
+        text: Some(Text { label: "f_hand", scale: 1.0, unit: "taken by the hand (springs + damping)", hand_only: true, oblique_only: false, law_only: false });
     /// Rigid-body kinetic energy of the racket (translation + rotation about the centre of mass).
     f_rigid: f64 [""] checked: true, sweep: true, text: text("f_rigid", "racket rigid-body KE");
     /// Rebound kinetic energy of the ball (= e_a^2).
@@ -241,7 +255,9 @@ impact_result! {
     rebound_angle_deg: f64 ["deg"] checked: false, sweep: true, text: text_oblique("rebound_angle", "deg, outgoing velocity from the outward normal");
     /// Tangential coefficient of restitution of the contact point, `-(w_out - u_out) / w_in`
     /// (`w` the slip velocity of the ball's contact point, `u_out` the frame's there); NaN
-    /// (left out of the JSON) when the contact point arrives without slip.
+    /// (undefined: null in the JSON of an oblique or spinning impact, an empty CSV field,
+    /// `undefined` in the text) when the contact point arrives with a slip below
+    /// [`crate::solve::oblique::E_T_MIN_SLIP_FRACTION`] of the incident speed.
     e_t: f64 [""] checked: false, sweep: true, text: text_oblique("e_t", "tangential COR of the contact point");
     /// Share of the contact time in which the ball slid on the strings.
     slip_fraction: f64 [""] checked: false, sweep: true, text: text_oblique("slip_fraction", "of the contact time sliding");
@@ -257,17 +273,20 @@ impact_result! {
         text: text_oblique("f_racket_inplane", "racket in-plane KE (of the whole incoming KE)");
     /// Energy dissipated in the ball's tangential damper (mechanism `loss`; fraction of the
     /// whole incoming kinetic energy). NaN (left out) under the elastic law.
-    f_tangential_damping: f64 [""] checked: false, sweep: false, text: None;
+    f_tangential_damping: f64 [""] checked: false, sweep: true,
+        text: text_law("f_tangential_damping", "lost in the ball's tangential damper (of the whole incoming KE)");
     /// Energy dissipated by the strings sliding over each other (mechanism `bed`; fraction of
     /// the whole incoming kinetic energy). NaN (left out) under the elastic law.
-    f_string_sliding: f64 [""] checked: false, sweep: false, text: None;
+    f_string_sliding: f64 [""] checked: false, sweep: true,
+        text: text_law("f_string_sliding", "lost by the strings sliding (of the whole incoming KE)");
     /// Energy dissipated by the offset torque against the spin (mechanism `offset`; fraction
     /// of the whole incoming kinetic energy). NaN (left out) under the elastic law.
-    f_rolling: f64 [""] checked: false, sweep: false, text: None;
+    f_rolling: f64 [""] checked: false, sweep: true,
+        text: text_law("f_rolling", "lost to the offset torque against the spin (of the whole incoming KE)");
 }
 
 /// The text output's lines, in its order.
-pub const TEXT_ORDER: [&Field; 25] = [
+pub const TEXT_ORDER: [&Field; 28] = [
     field("e_a"),
     field("tau_s"),
     field("theta_end_deg"),
@@ -293,6 +312,9 @@ pub const TEXT_ORDER: [&Field; 25] = [
     field("f_friction"),
     field("f_ball_spin"),
     field("f_racket_inplane"),
+    field("f_tangential_damping"),
+    field("f_string_sliding"),
+    field("f_rolling"),
 ];
 
 impl ImpactResult {

@@ -257,7 +257,7 @@ impl SpeedComparison {
             .iter()
             .map(|SpeedRow { label, params: p, result: r, v_out, launch }| {
                 let mut v = serde_json::json!({
-                    "variant": label, "params": p, "result": r,
+                    "variant": label, "params": p, "result": crate::render::impact::result_json(p, r),
                     "ball_speed_out": v_out / unit.si, "change_pct": gain_pct(self.v_ref(), *v_out), "unit": unit.label,
                 });
                 if let (Some((launch_deg, spin_rpm)), Some(o)) = (launch, v.as_object_mut()) {

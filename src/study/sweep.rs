@@ -15,9 +15,11 @@ use crate::solve::outcome::{Field, Get, FIELDS};
 use crate::solve::{simulate, ImpactResult};
 
 /// A number in its shortest exact form (`ryu`), zero of either sign as "0" as in the other
-/// tables.
+/// tables; an undefined one (NaN: `e_t` at too little incoming slip) as an empty field.
 fn number_text(v: f64) -> String {
-    if v == 0.0 {
+    if v.is_nan() {
+        String::new()
+    } else if v == 0.0 {
         "0".to_string()
     } else {
         ryu::Buffer::new().format(v).to_string()
@@ -149,15 +151,17 @@ pub fn column_name(key: &str) -> &'static str {
 }
 
 /// The result fields a sweep writes: the sweep columns of the result's field table
-/// ([`FIELDS`]), the oblique ones only in a sweep of oblique or spinning balls.
-fn swept(oblique: bool) -> impl Iterator<Item = &'static Field> {
-    FIELDS.iter().filter(move |f| f.sweep && (oblique || !f.is_oblique()))
+/// ([`FIELDS`]), the oblique ones only in a sweep of oblique or spinning balls, and the losses
+/// of the named tangential mechanisms only where some impact runs under such a law (`losses`;
+/// an empty field for an impact under the elastic law).
+fn swept(oblique: bool, losses: bool) -> impl Iterator<Item = &'static Field> {
+    FIELDS.iter().filter(move |f| f.sweep && (oblique || !f.is_oblique()) && (losses || !f.is_law_only()))
 }
 
 /// Result columns written for every impact: [`swept`] fields, then the solver (unless the
 /// solver is itself a swept axis, whose column already names it: no column twice).
-pub fn result_columns(oblique: bool, solver_swept: bool) -> impl Iterator<Item = &'static str> {
-    swept(oblique).map(|f| f.key).chain((!solver_swept).then_some("solver"))
+pub fn result_columns(oblique: bool, losses: bool, solver_swept: bool) -> impl Iterator<Item = &'static str> {
+    swept(oblique, losses).map(|f| f.key).chain((!solver_swept).then_some("solver"))
 }
 
 /// The result columns of one impact. Numbers are written in their shortest form that reads back
@@ -166,10 +170,10 @@ pub fn result_columns(oblique: bool, solver_swept: bool) -> impl Iterator<Item =
 fn result_fields<'a>(
     r: &'a ImpactResult,
     p: &Params,
-    oblique: bool,
+    (oblique, losses): (bool, bool),
     solver_swept: bool,
 ) -> impl Iterator<Item = String> + 'a {
-    let fields = swept(oblique).map(move |f| match f.get {
+    let fields = swept(oblique, losses).map(move |f| match f.get {
         Get::Number(g) => number_text(g(r)),
         Get::Flag(g) => u8::from(g(r)).to_string(),
     });
@@ -296,10 +300,23 @@ impl Sweep {
         varied || !p.oblique.is_normal()
     }
 
+    /// Whether any impact of the sweep is oblique or spinning under a tangential law with
+    /// named loss mechanisms (its rows then carry their losses too).
+    pub fn has_losses(&self) -> bool {
+        let elastic = crate::params::TangentialLaw::Elastic;
+        let mut p = self.defaults;
+        self.base.apply(&mut p);
+        let law = match self.axes.iter().find(|a| a.key == keys::TANGENTIAL.key) {
+            Some(axis) => axis.values.iter().any(|v| v.trim() != elastic.name()),
+            None => p.oblique.tangential != elastic,
+        };
+        self.is_oblique() && law
+    }
+
     /// The CSV header.
     pub fn header(&self) -> Vec<String> {
         let oblique = self.is_oblique();
-        let results = result_columns(oblique, self.solver_swept()).map(String::from);
+        let results = result_columns(oblique, self.has_losses(), self.solver_swept()).map(String::from);
         let fixed = self.fixed_keys(oblique).into_iter().map(|k| column_name(k).to_string());
         self.axes.iter().map(|a| column_name(&a.key).to_string()).chain(fixed).chain(results).collect()
     }
@@ -346,6 +363,7 @@ impl Sweep {
         let total = self.len();
         limits::check_count("sweep", total as f64, MAX_POINTS, "the impacts of a sweep (the product of the counts)")?;
         let oblique = self.is_oblique();
+        let losses = self.has_losses();
         let fixed = self.fixed_keys(oblique);
         let solver_swept = self.solver_swept();
         let points = Points::of(self)?;
@@ -363,7 +381,7 @@ impl Sweep {
                         .into_iter()
                         .map(str::to_string)
                         .chain(fixed)
-                        .chain(result_fields(&r, &p, oblique, solver_swept))
+                        .chain(result_fields(&r, &p, (oblique, losses), solver_swept))
                         .collect())
                 })
                 .collect::<Result<_>>()?;

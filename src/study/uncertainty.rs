@@ -8,7 +8,7 @@ use serde_json::{json, Map, Value};
 
 use super::sensitivity::{self, Design, Summary};
 use crate::error::{Error, Result};
-use crate::params::spec::{sig, Check, Values};
+use crate::params::spec::{readable, sig, Check, Values};
 use crate::params::uncertainty::Dist;
 use crate::params::{keys, Overrides, Params};
 use crate::solve::outcome::{Get, FIELDS};
@@ -53,11 +53,13 @@ pub fn parse_vary(text: &str, base: &Params) -> Result<Input> {
                 spec.key,
                 dist.text(),
                 format!(
-                    "samples reach {}..{}{unit}; {} must satisfy {min:e} <= {} <= {max:e}{unit}",
+                    "samples reach {}..{}{unit}; {} must satisfy {} <= {} <= {}{unit}",
                     sig(lo, 6),
                     sig(hi, 6),
                     spec.what,
-                    spec.key
+                    readable(min),
+                    spec.key,
+                    readable(max)
                 ),
             ));
         }
@@ -169,12 +171,14 @@ impl Study {
             || self.inputs.iter().any(|i| i.key == keys::ANGLE_DEG.key || i.key == keys::SPIN_RPM.key)
     }
 
-    /// The result fields summarised: the numeric sweep columns.
+    /// The result fields summarised: the numeric sweep columns (the losses of the named
+    /// tangential mechanisms under a law that has them).
     pub fn output_fields(&self) -> Vec<OutputField> {
         let oblique = self.is_oblique();
+        let losses = oblique && self.base.oblique.tangential != crate::params::TangentialLaw::Elastic;
         FIELDS
             .iter()
-            .filter(|f| f.sweep && (oblique || !f.is_oblique()))
+            .filter(|f| f.sweep && (oblique || !f.is_oblique()) && (losses || !f.is_law_only()))
             .filter_map(|f| match f.get {
                 Get::Number(g) => Some((f.key, f.unit, g)),
                 Get::Flag(_) => None,
@@ -284,14 +288,22 @@ impl Study {
         for o in outputs {
             let m = &o.summary;
             s.push_str(&format!(
-                "{:<22} mean {} sd {}  q05 {} q50 {} q95 {} {}\n",
+                "{:<22} mean {} sd {}  q05 {} q50 {} q95 {} {}{}\n",
                 o.key,
                 f(m.mean),
                 f(m.sd),
                 f(m.q05),
                 f(m.q50),
                 f(m.q95),
-                o.unit
+                o.unit,
+                // (an output undefined in some draws, e_t, says why)
+                if m.mean.is_nan() {
+                    format!(" undefined in some draws {}", crate::render::impact::undefined_remark(o.key))
+                        .trim_end()
+                        .to_string()
+                } else {
+                    String::new()
+                }
             ));
             for (k, i) in self.inputs.iter().enumerate() {
                 let (a, b) = (m.first[k], m.total[k]);
@@ -329,7 +341,7 @@ mod tests {
         assert_eq!(msg(&["ks=normal:4e4:-1"], 8), "invalid ks = normal:4e4:-1: a normal needs SD > 0");
         assert_eq!(
             msg(&["ks=uniform:0.5:2e4"], 8),
-            "invalid ks = uniform:0.5:20000: samples reach 0.5..20000 N/m; string-plane stiffness must satisfy 1e0 <= ks <= 1e12 N/m"
+            "invalid ks = uniform:0.5:20000: samples reach 0.5..20000 N/m; string-plane stiffness must satisfy 1 <= ks <= 1e12 N/m"
         );
         assert!(msg(&["x=uniform:0.1:0.9"], 8).starts_with("invalid x = uniform:0.1:0.9: samples reach 0.9 m, where"));
         assert!(msg(&["p=uniform:0.5:2"], 8).contains("1 < p <= 10"));

@@ -140,7 +140,9 @@ pub(super) fn draw(root: &DrawingArea<BitMapBackend<'_>, Shift>, map: &HeatMap) 
         .draw()
         .map_err(plot::msg)?;
 
-    let ((mut lo, mut hi), mut data) = color_range(&map.z, map.scale);
+    // (the points the mask greys are left out of the scale and the contours)
+    let shown = map.shown_values();
+    let ((mut lo, mut hi), mut data) = color_range(&shown, map.scale);
     if let Some(floor) = map.floor {
         // the scale starts at the floor (values below are grey), the contours too
         lo = lo.max(floor);
@@ -168,7 +170,7 @@ pub(super) fn draw(root: &DrawingArea<BitMapBackend<'_>, Shift>, map: &HeatMap) 
         Some((dlo, dhi)) => contour_levels(dlo, dhi, CONTOUR_TARGET),
         None => (Vec::new(), 0.0),
     };
-    draw_lines(&mut cc, map, &levels)?;
+    draw_lines(&mut cc, map, &shown, &levels)?;
 
     let label_style = plot::font(TICK_SIZE, FontStyle::Normal);
     let mut taken: Vec<Rect> = Vec::new();
@@ -223,6 +225,12 @@ fn draw_shading(
     let plot_rect: Rect = (px_range.start, py_range.start, px_range.end, py_range.end);
     // a clipped map's grid extended past its data so the shading reaches the outline
     let shaded = if map.clip.is_empty() { map.z.clone() } else { fill_rim(map.xs.len(), map.ys.len(), &map.z, 2) };
+    let grey = match (map.grey_below_zero.is_empty(), map.clip.is_empty()) {
+        (true, _) => Vec::new(),
+        (false, true) => map.grey_below_zero.clone(),
+        (false, false) => fill_rim(map.xs.len(), map.ys.len(), &map.grey_below_zero, 2),
+    };
+    let below = RGBColor(BELOW_FLOOR.0, BELOW_FLOOR.1, BELOW_FLOOR.2);
     // each pixel row's colours in parallel (a row depends on nothing but the map), then drawn
     // in order
     use rayon::prelude::*;
@@ -233,14 +241,16 @@ fn draw_shading(
             let y = y1 - (f64::from(py - py_range.start) + 0.5) / ph * (y1 - y0);
             let mut out = Vec::new();
             let Some(row) = Row::at(&map.xs, &map.ys, &shaded, y) else { return out };
-            let mut cursor = 0;
+            let grey_row = Row::at(&map.xs, &map.ys, &grey, y);
+            let (mut cursor, mut grey_cursor) = (0, 0);
             for px in px_range.clone() {
                 let x = x0 + (f64::from(px - px_range.start) + 0.5) / pw * (x1 - x0);
                 if !map.clip.iter().all(|e| e.contains(x, y)) {
                     continue;
                 }
                 if let Some(v) = row.sample(x, &mut cursor) {
-                    out.push((px, color(v)));
+                    let greyed = grey_row.as_ref().and_then(|g| g.sample(x, &mut grey_cursor)).is_some_and(|g| g < 0.0);
+                    out.push((px, if greyed { below } else { color(v) }));
                 }
             }
             out
@@ -255,10 +265,10 @@ fn draw_shading(
 }
 
 /// The contour lines at `levels`, then the outlines (the first solid, the others dashed).
-fn draw_lines(cc: &mut Coords<'_, '_>, map: &HeatMap, levels: &[f64]) -> std::result::Result<(), String> {
+fn draw_lines(cc: &mut Coords<'_, '_>, map: &HeatMap, z: &[f64], levels: &[f64]) -> std::result::Result<(), String> {
     let contour_style = RGBColor(20, 20, 20).mix(0.55).stroke_width(1);
     for &level in levels {
-        let segs = contour_segments(&map.xs, &map.ys, &map.z, level);
+        let segs = contour_segments(&map.xs, &map.ys, z, level);
         cc.draw_series(segs.into_iter().map(|s| PathElement::new(vec![s[0], s[1]], contour_style)))
             .map_err(plot::msg)?;
     }
@@ -328,8 +338,9 @@ fn draw_contour_labels(
     taken: &mut Vec<Rect>,
 ) -> std::result::Result<(), String> {
     let style = plot::font(CONTOUR_LABEL_SIZE, FontStyle::Normal);
+    let shown = map.shown_values();
     for &level in levels {
-        let segs = contour_segments(&map.xs, &map.ys, &map.z, level);
+        let segs = contour_segments(&map.xs, &map.ys, &shown, level);
         if segs.is_empty() {
             continue;
         }
@@ -457,7 +468,17 @@ fn draw_color_bar(
         }
     }
     if !map.bar_label.is_empty() {
-        let style = plot::font(AXIS_DESC_SIZE, FontStyle::Normal)
+        // shrunk (to 11 px at the least) until it fits the image's height
+        let mut size = AXIS_DESC_SIZE;
+        while size > 11.0 {
+            let (w, _) =
+                root.estimate_text_size(&map.bar_label, &plot::font(size, FontStyle::Normal)).map_err(plot::msg)?;
+            if w <= HEIGHT - 80 {
+                break;
+            }
+            size -= 1.0;
+        }
+        let style = plot::font(size, FontStyle::Normal)
             .transform(FontTransform::Rotate270)
             .pos(Pos::new(HPos::Center, VPos::Center));
         let x = WIDTH as i32 - 22;

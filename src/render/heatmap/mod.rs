@@ -140,6 +140,23 @@ pub struct HeatMap {
     /// line is drawn below it (say what grey means in [`HeatMap::bar_label`]). `None`: the
     /// scale spans the data.
     pub floor: Option<f64>,
+    /// A second field on the grid of `z` (empty: none): where it is below 0 the map is shaded
+    /// [`BELOW_FLOOR`] grey whatever `z` is there, and those points' values are left out of
+    /// the colour scale and the contour lines (say what grey means in [`HeatMap::bar_label`]).
+    /// A face map of an oblique quantity greys the points where the ball does not rebound
+    /// with the normal rebound velocity, as a power map greys them with its floor.
+    pub grey_below_zero: Vec<f64>,
+}
+
+impl HeatMap {
+    /// `z` with the points that [`HeatMap::grey_below_zero`] greys left out (NaN): the values
+    /// the colour scale and the contour lines are drawn from.
+    pub fn shown_values(&self) -> Vec<f64> {
+        if self.grey_below_zero.len() != self.z.len() {
+            return self.z.clone();
+        }
+        self.z.iter().zip(&self.grey_below_zero).map(|(&v, &g)| if g < 0.0 { f64::NAN } else { v }).collect()
+    }
 }
 
 /// The grey of values below a map's [`HeatMap::floor`].
@@ -181,6 +198,9 @@ pub(crate) fn draw_file(map: &HeatMap, file: &Path) -> std::result::Result<(), S
 fn check(map: &HeatMap) -> std::result::Result<(), String> {
     if map.z.len() != map.xs.len() * map.ys.len() {
         return Err(format!("the grid has {} x {} points but {} values", map.xs.len(), map.ys.len(), map.z.len()));
+    }
+    if !map.grey_below_zero.is_empty() && map.grey_below_zero.len() != map.z.len() {
+        return Err(format!("{} values but {} of the grey mask", map.z.len(), map.grey_below_zero.len()));
     }
     for (name, v) in [("xs", &map.xs), ("ys", &map.ys)] {
         if v.iter().any(|c| !c.is_finite()) || v.windows(2).any(|w| w[0] >= w[1]) {

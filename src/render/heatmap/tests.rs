@@ -298,3 +298,21 @@ fn values_below_the_floor_are_grey_and_the_colour_scale_starts_at_it() {
     let buf = draw_to_buffer(&map);
     assert_ne!(pixel(&map, &buf, (4.0, 0.0)), grey);
 }
+
+#[test]
+fn points_the_mask_greys_are_grey_whatever_their_value_and_left_out_of_the_scale() {
+    // a value that grows towards the tip (as a rebound angle does), greyed where x < 8
+    let mut map = face_map(41, 21, |x, _| 100.0 - x);
+    map.grey_below_zero = map.xs.iter().flat_map(|&x| map.ys.iter().map(move |_| x - 8.0)).collect();
+    let buf = draw_to_buffer(&map);
+    assert_eq!(pixel(&map, &buf, (4.0, 0.0)), BELOW_FLOOR, "masked");
+    assert_ne!(pixel(&map, &buf, (20.0, 0.0)), BELOW_FLOOR);
+    // the scale ends at the largest value shown (92 at x = 8): just right of the mask, the top
+    let v = viridis(1.0);
+    let (r, g, b) = pixel(&map, &buf, (8.5, 0.0));
+    assert!((i32::from(r) - i32::from(v.0)).abs() < 30 && (i32::from(g) - i32::from(v.1)).abs() < 30, "{r} {g} {b}");
+    assert!(map.shown_values().iter().zip(&map.grey_below_zero).all(|(v, g)| *g >= 0.0 || v.is_nan()));
+    map.grey_below_zero.clear();
+    let buf = draw_to_buffer(&map);
+    assert_ne!(pixel(&map, &buf, (4.0, 0.0)), BELOW_FLOOR, "no mask, no grey");
+}

@@ -158,6 +158,12 @@ impl FaceMap {
         self.results.iter().map(|r| r.as_ref().map_or(f64::NAN, |r| q.of(r))).collect()
     }
 
+    /// The normal rebound velocity `v2_n` at every grid point (NaN where not evaluated, or at
+    /// normal incidence without spin): below 0 where the ball does not rebound.
+    pub fn normal_rebound(&self) -> Vec<f64> {
+        self.results.iter().map(|r| r.as_ref().map_or(f64::NAN, |r| r.v2_n)).collect()
+    }
+
     /// The mode-1 nodes inside the face (along x), ascending.
     pub fn nodes_in_face(&self) -> Vec<f64> {
         self.mode1_nodes.iter().copied().filter(|&x| self.face.half_width_at(x) > 0.0).collect()
@@ -224,6 +230,12 @@ impl DiffMap {
     /// B - A of `q` at every grid point (NaN where either is missing).
     pub fn values(&self, q: Quantity) -> Vec<f64> {
         self.a.values(q).iter().zip(self.b.values(q)).map(|(a, b)| b - a).collect()
+    }
+
+    /// The smaller normal rebound velocity of A and B at every grid point: below 0 where the
+    /// ball does not rebound off either.
+    pub fn normal_rebound(&self) -> Vec<f64> {
+        self.a.normal_rebound().iter().zip(self.b.normal_rebound()).map(|(a, b)| a.min(b)).collect()
     }
 
     /// Number of points in the difference.

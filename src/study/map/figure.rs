@@ -61,8 +61,8 @@ impl FaceMap {
             subtitle: subtitle(&self.params, &[self.face], &self.grid, self.len()),
             x_label: "x: distance from the tip (cm)".into(),
             y_label: "r: distance from the long axis (cm)".into(),
-            bar_label: match q.floor() {
-                Some((_, note)) => format!("{}; {note}", bar_label(q, false)),
+            bar_label: match q.floor().map(|(_, note)| note).or(q.no_rebound_note()) {
+                Some(note) => format!("{}; {note}", bar_label(q, false)),
                 None => bar_label(q, false),
             },
             xs: self.grid.xs.iter().map(|x| 100.0 * x).collect(),
@@ -74,6 +74,7 @@ impl FaceMap {
             segments,
             markers,
             floor: q.floor().map(|(f, _)| f),
+            grey_below_zero: if q.no_rebound_note().is_some() { self.normal_rebound() } else { Vec::new() },
         }
     }
 }
@@ -237,7 +238,10 @@ impl DiffMap {
             ),
             x_label: "x: distance from the tip (cm)".into(),
             y_label: "r: distance from the long axis (cm)".into(),
-            bar_label: bar_label(q, true),
+            bar_label: match q.no_rebound_note() {
+                Some(_) => format!("{}; grey: no rebound off A or B", bar_label(q, true)),
+                None => bar_label(q, true),
+            },
             xs: self.a.grid.xs.iter().map(|x| 100.0 * x).collect(),
             ys: self.a.grid.rs.iter().map(|r| 100.0 * r).collect(),
             scale: ColorScale::for_values(&z),
@@ -247,6 +251,7 @@ impl DiffMap {
             segments,
             markers,
             floor: None,
+            grey_below_zero: if q.no_rebound_note().is_some() { self.normal_rebound() } else { Vec::new() },
         }
     }
 }

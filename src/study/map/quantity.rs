@@ -140,6 +140,18 @@ impl Quantity {
         }
     }
 
+    /// For a quantity of an oblique or spinning ball, what the grey of a map means: the points
+    /// where the ball does not rebound (`v2_n` < 0, a rebound angle over 90 degrees: it moves
+    /// on behind the recoiling frame, as where a power map is below its floor), greyed so that
+    /// a spin or an angle of a ball that never comes back is not read as a shot's.
+    pub fn no_rebound_note(self) -> Option<&'static str> {
+        match self {
+            Quantity::Spin => Some("grey: no rebound"),
+            Quantity::ReboundAngle => Some("grey: over 90, no rebound"),
+            _ => None,
+        }
+    }
+
     /// Its value for one impact, as shown (in [`Quantity::unit`]: tau in ms).
     pub fn of(self, r: &ImpactResult) -> f64 {
         let (field, scale) = self.source();
