@@ -53,7 +53,7 @@ fn modal(p: Params) -> ModalModel {
 
 #[test]
 fn a_prepared_normal_impact_allocates_nothing_after_the_first() {
-    for (x, r, ks) in [(0.16, 0.0, 2.74e4), (0.30, 0.05, 1.5e4), (0.02, 0.08, 5e4)] {
+    for (x, r, ks) in [(0.16, 0.0, 2.74e4), (0.30, 0.05, 1.5e4), (0.02, 0.08, 5e4), (0.0, 0.0, 6e4)] {
         let mut p = Params::paper();
         (p.impact.x, p.impact.r, p.strings.ks) = (x, r, ks);
         let m = modal(p);
@@ -67,6 +67,31 @@ fn a_prepared_normal_impact_allocates_nothing_after_the_first() {
         assert_eq!(count, 0, "x {x}, r {r}, ks {ks}: {count} allocations in 5 impacts");
         assert_eq!(format!("{first:?}"), format!("{:?}", again.unwrap()), "the same impact twice");
     }
+}
+
+/// Impacts that need buffers of different sizes, taken in turn on one thread: once each has
+/// run, none allocates (the spares settle to the sizes they need whatever the order).
+#[test]
+fn interleaved_impacts_allocate_nothing_once_each_has_run() {
+    let models: Vec<ModalModel> = [(0.0, 0.0, 6e4), (0.16, 0.0, 2.74e4), (0.45, 0.08, 1e4), (0.02, 0.03, 3e4)]
+        .into_iter()
+        .map(|(x, r, ks)| {
+            let mut p = Params::paper();
+            (p.impact.x, p.impact.r, p.strings.ks) = (x, r, ks);
+            modal(p)
+        })
+        .collect();
+    for m in &models {
+        m.run().unwrap();
+    }
+    let count = allocations(|| {
+        for _ in 0..5 {
+            for m in models.iter().chain(models.iter().rev()) {
+                m.run().unwrap();
+            }
+        }
+    });
+    assert_eq!(count, 0, "{count} allocations in 40 interleaved impacts");
 }
 
 /// The first run of an impact on a fresh thread does allocate (the spare buffers), so the

@@ -151,8 +151,7 @@ impl FreeVibration {
     fn sample(&self, k: usize, lo: f64, hi: f64, m: usize, f: impl Fn(usize, f64) -> f64) -> Buf<f64> {
         let mut ph = self.phasors(k, lo);
         let rot = self.rotation(k, (hi - lo) / m as f64);
-        let mut out = Buf::new();
-        out.reserve(m + 1);
+        let mut out = Buf::with_capacity(m + 1);
         out.push((0..k).map(|i| f(i, ph.q[i])).sum());
         for _ in 0..m {
             ph.rotate(&rot);
@@ -163,7 +162,12 @@ impl FreeVibration {
 
     /// Phasors `(q_k, q_k'/w_k)` of the first `k` modes at time `t`.
     fn phasors(&self, k: usize, t: f64) -> Phasors {
-        let (q, p) = (0..k).map(|i| self.phasor(i, t)).unzip();
+        let (mut q, mut p) = (Buf::with_capacity(k), Buf::with_capacity(k));
+        for i in 0..k {
+            let (qi, pi) = self.phasor(i, t);
+            q.push(qi);
+            p.push(pi);
+        }
         Phasors { q, p }
     }
 
@@ -232,12 +236,12 @@ impl FreeVibration {
         let (mut back, mut whole_step) = (None, None);
         // (time, value, sample spacing, the peak of the local quadratic, phasors) of each
         // sampled peak after the parabola step
-        let mut candidates = CANDIDATES.with(|c| std::mem::take(&mut *c.borrow_mut()));
+        let mut candidates = CANDIDATES.try_with(|c| std::mem::take(&mut *c.borrow_mut())).unwrap_or_default();
         // one window over [t0, t1] when the dominant mode does not bound the peak, else one
         // around each maximum; the buffers are reused from window to window
         let windows = if half.is_infinite() { 1 } else { peaks.len() };
         at.copy_from(&first);
-        let (mut ph, mut start, mut v) = (first.clone(), first, Buf::new());
+        let (mut ph, mut start, mut v) = (first.clone(), first, Buf::with_capacity(whole_m + 1));
         for (j, &peak) in peaks.iter().enumerate().take(windows) {
             if j > 0 {
                 at.rotate(&turn);
@@ -323,7 +327,7 @@ impl FreeVibration {
             }
         }
         // (the list's storage kept for the next peak on this thread)
-        CANDIDATES.with(|c| *c.borrow_mut() = candidates);
+        let _ = CANDIDATES.try_with(|c| *c.borrow_mut() = candidates);
         best
     }
 

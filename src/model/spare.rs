@@ -1,10 +1,15 @@
 //! Buffers reused from impact to impact: a [`Buf`] is a `Vec` whose storage comes from, and
 //! goes back to, a small per-thread list of spare ones, so that an impact run again and again
-//! (a sweep, a map, an uncertainty study) allocates nothing once its thread has run one.
+//! (a sweep, a map, an uncertainty study) allocates nothing once its thread has run it, whatever
+//! other impacts ran in between (`tests/modal_alloc.rs`).
+//!
+//! A buffer that knows its size takes the smallest spare that holds it (else the largest, which
+//! it then grows), so that the spares settle to the sizes a thread's impacts need whatever the
+//! order buffers are taken and dropped in.
 //!
 //! (Written here rather than taken from an object-pool crate: the need is a `Vec` that returns
-//! its storage on drop, some forty lines, and the pool crates add locking or shared handles
-//! that a per-thread list does not need.)
+//! its storage on drop, and the pool crates add locking or shared handles that a per-thread
+//! list does not need.)
 
 use std::cell::RefCell;
 use std::ops::{Deref, DerefMut};
@@ -39,21 +44,55 @@ pub(crate) use pooled;
 pooled!(f64, (f64, f64));
 
 /// A `Vec` whose storage is taken from this thread's spares and given back when dropped.
-#[derive(Debug)]
 pub struct Buf<T: Pooled>(Vec<T>);
 
 impl<T: Pooled> Buf<T> {
     /// An empty buffer (a spare one's storage if there is one).
     pub fn new() -> Self {
-        let spare = T::spares().try_with(|s| s.borrow_mut().pop()).ok().flatten();
-        Buf(spare.unwrap_or_default())
+        Buf::with_capacity(0)
+    }
+
+    /// An empty buffer for at least `n` elements: the smallest spare that holds them, else the
+    /// largest spare grown to hold them, else a new one.
+    pub fn with_capacity(n: usize) -> Self {
+        let spare = T::spares()
+            .try_with(|s| {
+                let mut s = s.borrow_mut();
+                // (newest first; an exact fit, the usual case when an impact repeats, ends it)
+                let (mut fit, mut largest): (Option<usize>, Option<usize>) = (None, None);
+                for i in (0..s.len()).rev() {
+                    let c = s[i].capacity();
+                    if c == n {
+                        fit = Some(i);
+                        break;
+                    }
+                    if c > n && fit.is_none_or(|f| c < s[f].capacity()) {
+                        fit = Some(i);
+                    }
+                    if largest.is_none_or(|l| c > s[l].capacity()) {
+                        largest = Some(i);
+                    }
+                }
+                fit.or(largest).map(|i| s.swap_remove(i))
+            })
+            .ok()
+            .flatten();
+        let mut v = spare.unwrap_or_default();
+        v.reserve(n);
+        Buf(v)
     }
 
     /// `len` copies of `value`.
     pub fn filled(value: T, len: usize) -> Self {
-        let mut b = Buf::new();
+        let mut b = Buf::with_capacity(len);
         b.0.resize(len, value);
         b
+    }
+}
+
+impl<T: Pooled + std::fmt::Debug> std::fmt::Debug for Buf<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.0.fmt(f)
     }
 }
 
@@ -82,7 +121,7 @@ impl<T: Pooled> Drop for Buf<T> {
 
 impl<T: Pooled> Clone for Buf<T> {
     fn clone(&self) -> Self {
-        let mut b = Buf::new();
+        let mut b = Buf::with_capacity(self.0.len());
         b.0.extend_from_slice(&self.0);
         b
     }
@@ -104,7 +143,8 @@ impl<T: Pooled> DerefMut for Buf<T> {
 
 impl<T: Pooled> FromIterator<T> for Buf<T> {
     fn from_iter<I: IntoIterator<Item = T>>(iter: I) -> Self {
-        let mut b = Buf::new();
+        let iter = iter.into_iter();
+        let mut b = Buf::with_capacity(iter.size_hint().0);
         b.0.extend(iter);
         b
     }
@@ -156,6 +196,22 @@ mod tests {
         assert_ne!(d.as_ptr(), c.as_ptr());
         let (x, y): (Buf<f64>, Buf<f64>) = (0..3).map(|i| (i as f64, -(i as f64))).unzip();
         assert_eq!((&x[..], &y[..]), (&[0.0, 1.0, 2.0][..], &[0.0, -1.0, -2.0][..]));
+    }
+
+    /// A buffer of known size takes the smallest spare that holds it, so a large request is not
+    /// handed a small spare while a large one waits (the order of drops does not matter).
+    #[test]
+    fn a_sized_buffer_takes_the_smallest_spare_that_holds_it() {
+        <f64>::spares().with(|s| s.borrow_mut().clear());
+        let (small, large): (Buf<f64>, Buf<f64>) = (Buf::filled(0.0, 4), Buf::filled(0.0, 1000));
+        let large_ptr = large.as_ptr();
+        drop(large);
+        drop(small);
+        let b: Buf<f64> = Buf::with_capacity(500);
+        assert_eq!(b.as_ptr(), large_ptr);
+        let c: Buf<f64> = Buf::with_capacity(2);
+        assert!(c.capacity() < 1000, "the small spare");
+        assert_eq!(format!("{:?}", Buf::<f64>::filled(1.0, 2)), "[1.0, 1.0]", "prints as a Vec");
     }
 
     /// No more than [`KEPT`] spares are held, whatever was dropped.

@@ -6,19 +6,19 @@
 //! then obeys `q'' + (Lambda + kappa g g^T) q = 0`: a linear system whose modes, the *coupled*
 //! modes of ball, strings and frame, are found once per prepared model (the eigenpairs of
 //! `Lambda + kappa g g^T` that the spring couples, [`crate::model::rank_one`]; the part of the
-//! ball's arrival they do not carry is a rigid motion the spring does not feel). The ball arrives with the
-//! frame at rest, so each coupled mode `k` moves as `c_k v1 sin(s_k t) / s_k` (or `c_k v1 t` for
-//! a rigid motion of frequency 0) and the compression rate is
+//! ball's arrival they do not carry is a rigid motion the spring does not feel). The ball
+//! arrives with the frame at rest, so each coupled mode `k` moves as `c_k v1 sin(s_k t) / s_k`
+//! (or `c_k v1 t` for a rigid motion of frequency 0) and the compression rate is
 //! `Y_T'(t) = v1 sum_k a_k cos(s_k t)`.
 //!
-//! The set-up finds the first zero of `Y_T'` (the time of maximum compression; per unit incident
-//! speed, so once for every speed): none can come
-//! before the dominant mode's share stops exceeding the sum of the others' amplitudes; from
-//! there it samples every half radian of the fastest mode with a share of the rate (of either
-//! sign; each coupled mode's phasor rotated, no trigonometric call per sample), then Newton's
-//! method inside the bracket. A run evaluates every coordinate and rate there exactly. No step of the compression phase is
-//! taken, so no error is made in it: the stepping starts at maximum compression, where the
-//! force's rate is zero on both sides and the expansion law takes over.
+//! The set-up finds the first zero of `Y_T'`, the time of maximum compression (the phase is
+//! linear, so the time is the same for every incident speed): none can come before the
+//! dominant mode's share stops exceeding the sum of the others' amplitudes; from there it
+//! samples every half radian of the fastest mode with a share of the rate (of either sign; each
+//! coupled mode's phasor rotated, no trigonometric call per sample), then Newton's method
+//! inside the bracket. A run evaluates every coordinate and rate there exactly. No step of the
+//! compression phase is taken, so no error is made in it: the stepping starts at maximum
+//! compression, where the force's rate is zero on both sides and the expansion law takes over.
 
 use crate::model::rank_one::coupled_modes;
 use crate::model::short_turn::{series_terms, small_sin_cos};
@@ -56,20 +56,14 @@ pub(super) struct Compression {
     spacing: f64,
     rotation: Vec<(f64, f64)>,
     /// The first maximum of the compression, found once (it does not depend on the incident
-    /// speed: the phase is linear), if it comes within [`SEARCH_LIMITS`] time limits.
+    /// speed: the phase is linear), if it comes within the model's time limit.
     turn: Option<Turn>,
 }
 
-/// How many of the model's time limits the set-up's search for maximum compression looks
-/// ahead (a run compares the turn it found with its own limit).
-const SEARCH_LIMITS: f64 = 100.0;
-
-/// The first zero of the compression rate: the lower end of the sampling bracket that held it
-/// (a run whose time limit is below it gives up there), the time, s, and each coupled mode's
-/// phasor `(sin, cos)(s_k t)` there.
+/// The first zero of the compression rate: the time, s, and each coupled mode's phasor
+/// `(sin, cos)(s_k t)` there.
 #[derive(Debug, Clone)]
 struct Turn {
-    bracket: f64,
     t: f64,
     phasors: Vec<(f64, f64)>,
 }
@@ -91,8 +85,9 @@ impl Compression {
     /// The coupled modes of coordinates with `w^2 = lam`, load-point amplitudes `g`, the ball
     /// first (`g[0] = -1/sqrt(m_b)`), a contact of stiffness `k` in compression and the truncated
     /// modes' static flexibility `residual` in series.
-    /// `limit` is the model's time limit, s (the first maximum is looked for within
-    /// [`SEARCH_LIMITS`] of them).
+    /// `limit` is the model's time limit, s, within which the first maximum is looked for (it
+    /// is the set-up's own: it depends on the ball's mass, `k1` and `k_s` only, all part of the
+    /// set-up's key, [`super::shared::Key`]).
     pub fn new(lam: &[f64], g: &[f64], k: f64, residual: f64, ball_mass: f64, limit: f64) -> Self {
         let n = lam.len();
         let kappa = k / (1.0 + k * residual);
@@ -138,7 +133,7 @@ impl Compression {
             0.0
         };
         let mut compression = Compression { n, sigma, z, c, a, k, t_safe, spacing, rotation, turn: None };
-        compression.turn = compression.find_turn(SEARCH_LIMITS * limit);
+        compression.turn = compression.find_turn(limit);
         compression
     }
 
@@ -162,12 +157,12 @@ impl Compression {
         }
     }
 
-    /// The first maximum of the compression within `limit` seconds, and the state there for an
-    /// incident speed `v1` into `state`; `None` if the compression still grows at `limit`.
+    /// The first maximum of the compression, and the state there for an incident speed `v1`
+    /// into `state`; `None` if the compression still grows at the model's time limit.
     /// `pieces = (h, sink)`: the force history is handed to `sink(h, (F0, F0'), (F1, F1'))` in
     /// pieces of at most `h` seconds (the tangential law follows it).
-    pub fn at_max(&self, v1: f64, limit: f64, state: &mut State, pieces: Option<(f64, ForceSink)>) -> Option<AtMax> {
-        let turn = self.turn.as_ref().filter(|turn| turn.bracket <= limit)?;
+    pub fn at_max(&self, v1: f64, state: &mut State, pieces: Option<(f64, ForceSink)>) -> Option<AtMax> {
+        let turn = self.turn.as_ref()?;
         let (t, ph) = (turn.t, &turn.phasors);
         if let Some((h, piece)) = pieces {
             self.pieces(v1, t, h, piece);
@@ -205,7 +200,6 @@ impl Compression {
             }
             (lo, d_lo) = (lo + self.spacing, d);
         };
-        let bracket = lo;
         let mut hi = lo + self.spacing;
         // Newton inside [lo, hi] from the secant estimate (bisection where it would leave), the
         // phasors carried along by short rotations
@@ -226,7 +220,7 @@ impl Compression {
             }
             next = if t + step >= lo && t + step <= hi { t + step } else { 0.5 * (lo + hi) };
         }
-        Some(Turn { bracket, t, phasors: ph })
+        Some(Turn { t, phasors: ph })
     }
 
     /// `Y_T` per unit incident speed from the phasors at time `t`.
@@ -279,11 +273,10 @@ mod tests {
     use crate::params::{Params, SolverKind};
     use crate::solve::modal::ModalModel;
 
-    /// The time of maximum compression is found once in the set-up, but each run holds it to
-    /// its own time limit: a limit before the turn (or before the end of the contact) is an
-    /// error, not a hang and not a result.
+    /// A time limit before maximum compression (found once, in the set-up) or before the end of
+    /// the contact is an error, not a hang and not a result; a limit past the end changes nothing.
     #[test]
-    fn a_run_holds_the_turn_found_in_the_set_up_to_its_own_time_limit() {
+    fn a_limit_before_the_turn_or_the_end_is_an_error() {
         let mut p = Params::paper();
         p.numerics.solver = SolverKind::Modal;
         let m = ModalModel::new(&p).unwrap();

@@ -245,9 +245,9 @@ impl ModalModel {
             let mut feed = |h: f64, a: (f64, f64), b: (f64, f64)| {
                 tangential.advance(|| ForcePiece::hermite(h, a, b));
             };
-            self.set.compression.at_max(v1, limit, &mut s, Some((self.step(), &mut feed)))
+            self.set.compression.at_max(v1, &mut s, Some((self.step(), &mut feed)))
         } else {
-            self.set.compression.at_max(v1, limit, &mut s, None)
+            self.set.compression.at_max(v1, &mut s, None)
         };
         let max = max.ok_or(Error::ImpactDidNotEnd { limit_s: limit })?;
         let y0 = self.law.ball_compression_at_max(max.yt);
@@ -341,7 +341,11 @@ impl ModalModel {
     /// ([`FreeVibration`]). `s` is the state `lag` seconds after separation.
     fn after_impact(&self, s: &State, lag: f64) -> (f64, bool) {
         let flex = RIGID..self.set.lam.len();
-        let (q, v): (Buf<f64>, Buf<f64>) = flex.clone().map(|j| (s.q(j), s.v(j))).unzip();
+        let (mut q, mut v) = (Buf::with_capacity(flex.len()), Buf::with_capacity(flex.len()));
+        for j in flex.clone() {
+            q.push(s.q(j));
+            v.push(s.v(j));
+        }
         let free = FreeVibration::new(&self.set.omega[flex.clone()], &q, &v, &self.set.g[flex]);
         let window = 2.0 / self.base.f1_hz;
         let peak = free.peak_pe(-lag, window - lag);

@@ -1,7 +1,7 @@
 //! The set-up of a prepared modal model that one impact shares with every other impact of the
 //! same racket, impact point, strings and ball: the retained coordinates (`w^2`, `w`, `g`), the
-//! truncated modes' static flexibility, the coupled modes of the compression phase (per unit
-//! incident speed) and the step tables (per step length). None of them depends on the incident
+//! truncated modes' static flexibility, the coupled modes of the compression phase and the time
+//! of maximum compression (per unit incident speed) and the step tables (per step length). None of them depends on the incident
 //! speed, angle, azimuth, spin or friction, so a sweep or an uncertainty run over those builds
 //! them once per impact point (the beam's own modes are shared more widely still, by racket,
 //! [`crate::model::basis`]).
@@ -9,7 +9,7 @@
 //! Each thread keeps the last set-up it built, keyed by the exact bits of everything it is
 //! computed from, so a model built from it is the one built afresh, bit for bit. A sweep whose
 //! inner axes are the speed, angle, azimuth, spin or friction finds its set-up there (a sweep of
-//! 1000 points over x, r and v1: 135,000 instructions a point against 204,000 without); a sweep
+//! 1000 points over x, r and v1: 123,000 instructions a point against 204,000 without); a sweep
 //! over impact points and strings, where no two points share one, pays a key comparison a point
 //! and frees each set-up one point later. Keeping more set-ups (16 were tried) would serve an
 //! inner impact-point axis too, but on a million-point sweep over x, r and ks the held set-ups
@@ -46,7 +46,9 @@ pub(super) struct Shared {
 
 /// Everything a [`Shared`] set-up is computed from: the beam (by address), the load nodes and
 /// the bits of their weights, the offset `r`, the roll inertia, the ball's mass, `k1` and `p`,
-/// the string-plane stiffness and the resolution's mode cut-off and step phase.
+/// the string-plane stiffness and the resolution's mode cut-off and step phase. (The model's time
+/// limit, within which the set-up looks for maximum compression, follows from the ball's mass,
+/// `k1` and the string-plane stiffness, so it needs no bits of its own.)
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub(super) struct Key {
     basis: usize,
