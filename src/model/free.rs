@@ -241,7 +241,10 @@ impl FreeVibration {
         // around each maximum; the buffers are reused from window to window
         let windows = if half.is_infinite() { 1 } else { peaks.len() };
         at.copy_from(&first);
-        let (mut ph, mut start, mut v) = (first.clone(), first, Buf::with_capacity(whole_m + 1));
+        // (no whole window when the dominant mode does not bound the peak: `whole_m` is then
+        // meaningless, saturated from an infinite width)
+        let samples = if half.is_finite() { whole_m + 1 } else { 0 };
+        let (mut ph, mut start, mut v) = (first.clone(), first, Buf::with_capacity(samples));
         for (j, &peak) in peaks.iter().enumerate().take(windows) {
             if j > 0 {
                 at.rotate(&turn);
@@ -442,10 +445,13 @@ mod tests {
     fn peak_matches_brute_force_for_dominant_and_shared_energy() {
         let omega = [785.0, 2170.0, 4200.0, 6900.0, 30000.0];
         let g = [1.0, -0.8, 0.5, 0.3, 0.1];
-        let cases: [[f64; 5]; 3] = [
+        let cases: [[f64; 5]; 4] = [
             [6e-4, 1e-6, 3e-7, 1e-7, 1e-9], // mode 1 dominates (the paper's impacts)
             [1e-4, 1e-4, 3e-5, 1e-5, 1e-7], // energy shared: wide candidate windows
             [0.0, 2e-4, 0.0, 0.0, 0.0],     // a single higher mode (impact at the mode-1 node)
+            // five modes of nearly equal energy (the slowest a little ahead): no dominant mode
+            // bounds the peak, one window over the whole interval
+            [1.005e-4, 1e-4 * 785.0 / 2170.0, 1e-4 * 785.0 / 4200.0, 1e-4 * 785.0 / 6900.0, 1e-4 * 785.0 / 30000.0],
         ];
         for q in cases {
             let qdot: Vec<f64> = q.iter().zip(&omega).map(|(q, w)| 0.7 * q * w).collect();
