@@ -164,8 +164,8 @@ pub fn markdown(rows: &[Row]) -> String {
 }
 
 /// The whole report: the paper's claims ([`markdown`]), how robust each is under the declared
-/// input uncertainty ([`robustness::section`]) and the section beyond the paper
-/// ([`beyond::section`]).
+/// input uncertainty (`robustness::section`) and the section beyond the paper
+/// (`beyond::section`).
 pub fn document(rows: &[Row]) -> Result<String> {
     Ok(markdown(rows) + &robustness::section()? + &beyond::section()?)
 }

@@ -1,6 +1,6 @@
 //! `robustness` (ours): every paper claim under the declared input uncertainty. The inputs are
 //! the parameters with an uncertainty declared beside them in
-//! [`keys`](crate::params::keys) (ball mass, p through the rules' e, k1, k_s, EI through f1,
+//! [`keys`] (ball mass, p through the rules' e, k1, k_s, EI through f1,
 //! racket mass, length, I_x, the 30 m/s of Figs 7-8), each drawn as a factor `drawn / nominal`
 //! on the context's value; a Saltelli design of [`SAMPLES`] base samples runs every claim's own
 //! computation at each point with the modal solver (within 1e-4 of the explicit one), and

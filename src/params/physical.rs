@@ -160,7 +160,7 @@ pub struct Impact {
 impl Default for Impact {
     /// The Fig 4 impact: x = 10 cm, r = 5 cm, at the 100-inch drop speed (results scale with v1).
     /// (The command line's default point is the centre of the string face instead:
-    /// [`keys::face_centre_impact`](super::keys::face_centre_impact).)
+    /// [`keys::face_centre_impact`].)
     fn default() -> Self {
         Impact { x: 0.10, r: 0.05, v1: drop_speed(DROP_HEIGHT_100_IN) }
     }

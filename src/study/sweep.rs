@@ -158,7 +158,7 @@ fn swept(oblique: bool, losses: bool) -> impl Iterator<Item = &'static Field> {
     FIELDS.iter().filter(move |f| f.sweep && (oblique || !f.is_oblique()) && (losses || !f.is_law_only()))
 }
 
-/// Result columns written for every impact: [`swept`] fields, then the solver (unless the
+/// Result columns written for every impact: `swept` fields, then the solver (unless the
 /// solver is itself a swept axis, whose column already names it: no column twice).
 pub fn result_columns(oblique: bool, losses: bool, solver_swept: bool) -> impl Iterator<Item = &'static str> {
     swept(oblique, losses).map(|f| f.key).chain((!solver_swept).then_some("solver"))

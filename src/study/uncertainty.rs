@@ -1,6 +1,6 @@
 //! `uncertainty`: one impact's result fields under uncertain inputs. Any numeric parameter is
 //! varied by a distribution (`--vary ks=uniform:2e4:6e4`), the impact is run over a Saltelli
-//! design ([`sensitivity`](super::sensitivity)) in parallel, and every numeric result field is
+//! design ([`sensitivity`]) in parallel, and every numeric result field is
 //! summarised: mean, sd, q05, q50, q95, and the first-order and total Sobol' index of each input
 //! with bootstrap intervals.
 

@@ -18,7 +18,7 @@ const SAMPLE_STEP: f64 = 3.0;
 /// The top-left corner of a `size` (width, height) legend box inside `area` that covers the
 /// fewest `obstacles` (pixel positions of the drawn data), trying in order: upper right, upper
 /// left, lower right, lower left, upper centre, lower centre, middle right, middle left,
-/// centre, then every height (in [`SCAN_STEP`] steps) at the right, left and centre. The first
+/// centre, then every height (in `SCAN_STEP` steps) at the right, left and centre. The first
 /// spot with the fewest covered obstacles wins, so with nothing in the way the legend sits
 /// upper right.
 pub fn place_legend(area: Rect, size: (i32, i32), obstacles: &[(i32, i32)]) -> (i32, i32) {
