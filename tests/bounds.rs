@@ -28,7 +28,9 @@ fn every_count_from_the_input_is_checked_before_any_work() {
     let many_tensions: String = (1..=60).map(|t| t.to_string()).collect::<Vec<_>>().join(",");
     let cases: Vec<(Vec<&str>, &str, &str)> = vec![
         (vec!["sweep", "--x", "0.1:0.2:1000000000"], "invalid sweep", "at most 1000000"),
-        (vec!["sweep", "--x", "0.1:0.2:99999999999999999999999"], "invalid sweep", "whole number"),
+        (vec!["sweep", "--x", "0.1:0.2:99999999999999999999999"], "invalid sweep", "at most 1000000"),
+        (vec!["sweep", "--x", "0.1:0.2:1e9"], "invalid sweep", "at most 1000000"),
+        (vec!["sweep", "--x", "0.1:0.2:2.5"], "invalid sweep", "whole number >= 1"),
         (
             vec!["sweep", "--x", "0.1:0.2:1000", "--ks", "1e4:5e4:1000", "--mb", "0.05:0.06:1000"],
             "invalid sweep",

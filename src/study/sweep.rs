@@ -68,9 +68,14 @@ pub fn parse_spec(key: &str, spec: &str) -> Result<Axis> {
         };
         let a: f64 = parts[0].parse().map_err(|_| bad("start is not a number"))?;
         let b: f64 = parts[1].parse().map_err(|_| bad("stop is not a number"))?;
-        let n: u64 = parts[2].parse().map_err(|_| bad("count is not a whole number"))?;
+        // (a count reads as digits or as a whole number in exponent form: 50, 1e3)
+        let count: f64 = parts[2].parse().map_err(|_| bad("count is not a number"))?;
+        if !(count.is_finite() && count >= 1.0 && count.fract() == 0.0) {
+            return Err(bad("count must be a whole number >= 1 (as 50 or 1e3)"));
+        }
         // counted before any value is made
-        limits::check_count("sweep", n as f64, limits::MAX_AXIS_VALUES, &format!("the count of --{key}"))?;
+        limits::check_count("sweep", count, limits::MAX_AXIS_VALUES, &format!("the count of --{key}"))?;
+        let n = count as u64;
         if n == 0 || !a.is_finite() || !b.is_finite() {
             return Err(bad("count must be >= 1 and the ends finite"));
         }
@@ -463,6 +468,12 @@ mod tests {
         assert!(parse_spec("ks", "a,b").is_err());
         assert!(parse_spec("nope", "1").is_err());
         assert!(parse_spec("ks", "0:1:3:log").is_err());
+        // a count in exponent form is the same count; a fractional or zero one is refused
+        assert_eq!(parse_spec("x", "0.1:0.3:3e0").unwrap().values, parse_spec("x", "0.1:0.3:3").unwrap().values);
+        assert_eq!(parse_spec("x", "0:1:1e3").unwrap().values.len(), 1000);
+        for bad in ["0.1:0.3:2.5", "0.1:0.3:0", "0.1:0.3:-3", "0.1:0.3:nan", "0.1:0.3:inf"] {
+            assert!(parse_spec("x", bad).is_err(), "{bad}");
+        }
     }
 
     #[test]
