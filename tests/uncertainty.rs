@@ -107,7 +107,35 @@ fn claims_give_every_claim_a_verdict() {
     );
     let rows: Vec<&str> = lines.collect();
     assert_eq!(rows.len(), 44);
-    assert!(rows.iter().all(|r| ["holds", "part", "not at all"].iter().any(|v| r.contains(&format!(",{v},")))));
+    assert!(rows
+        .iter()
+        .all(|r| ["holds", "part", "not at all", "independent"].iter().any(|v| r.contains(&format!(",{v},")))));
+}
+
+#[test]
+fn claims_that_no_sampled_input_moves_are_independent_not_holding_or_failing() {
+    let out = bin(&["uncertainty", "--claims", "--samples", "2", "--format", "csv"]);
+    let csv = String::from_utf8(out.stdout).unwrap();
+    let verdict = |id: &str| {
+        let row = csv.lines().find(|l| l.starts_with(&format!("{id},"))).unwrap();
+        row.split(',').nth(10).unwrap().to_string()
+    };
+    for id in ["ball_p_for_e_0_762", "strings_ks_40lb", "strings_ks_80lb"] {
+        assert_eq!(verdict(id), "independent", "{id}");
+    }
+    assert_eq!(csv.matches(",independent,").count(), 3, "{csv}");
+    assert_ne!(verdict("serve_peak_force"), "independent");
+    // the text output counts the verdicts, the independent ones apart
+    let out = bin(&["uncertainty", "--claims", "--samples", "2"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("not at all; 3 do not depend on the sampled inputs (independent)"), "{text}");
+    let json = bin(&["uncertainty", "--claims", "--samples", "2", "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    assert_eq!(v["outputs"]["strings_ks_40lb"]["verdict"], "independent");
+    assert_eq!(v["verdicts"]["independent"], 3);
+    let total: u64 =
+        ["holds", "part", "not at all", "independent"].iter().map(|k| v["verdicts"][k].as_u64().unwrap()).sum();
+    assert_eq!(total, 44);
 }
 
 #[test]

@@ -170,15 +170,19 @@ fn run_claims(a: UncertaintyArgs) -> Result<()> {
                     })
                 })
                 .collect();
+            let verdicts: serde_json::Map<String, serde_json::Value> =
+                robustness::tally(&rows).iter().map(|(v, n)| (v.name().to_string(), (*n).into())).collect();
             json_text(&serde_json::json!({
-                "samples": samples, "seed": seed, "runs": design.runs(), "inputs": inputs, "outputs": outputs
+                "samples": samples, "seed": seed, "runs": design.runs(), "inputs": inputs, "outputs": outputs,
+                "verdicts": verdicts
             }))?
         }
     };
     emit(a.out.as_ref(), &text)
 }
 
-/// One line per claim: nominal, q05-q95, verdict, the two inputs it hinges on.
+/// One line per claim: nominal, q05-q95, verdict, the two inputs it hinges on; then the
+/// verdicts counted.
 fn claims_text(rows: &[robustness::ClaimRobustness], samples: u64, seed: u32, runs: usize) -> String {
     use racket_impact::params::spec::sig;
     let mut s = format!(
@@ -200,6 +204,7 @@ fn claims_text(rows: &[robustness::ClaimRobustness], samples: u64, seed: u32, ru
             top.join(", ")
         ));
     }
+    s.push_str(&format!("{}\n", robustness::tally_text(rows)));
     s
 }
 

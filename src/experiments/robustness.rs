@@ -6,7 +6,7 @@
 //! computation at each point with the modal solver (within 1e-4 of the explicit one), and
 //! each claim gets q05-q95, its Sobol' indices and a verdict: the paper's value holds (is
 //! within the claim's tolerance) over the whole 5-95 % interval, over part of it, or not at
-//! all. The nominal value is the report's (explicit solver, the paper's inputs); the
+//! all, or `independent` where no sampled input moves the claim's value. The nominal value is the report's (explicit solver, the paper's inputs); the
 //! `numerical` column is the converged value (`hat` load, N = 320) less it, where the claim
 //! has one: the paper's numerics beside the physical uncertainty.
 
@@ -47,6 +47,10 @@ pub enum Robust {
     Part,
     /// Nowhere in it.
     NotAtAll,
+    /// The claim's value does not change with the sampled inputs (a closed form, a fixed
+    /// calibration): the interval is a point and says nothing of its robustness; the claim's
+    /// verdict is the report's one at the paper's inputs.
+    Independent,
 }
 
 impl Robust {
@@ -56,12 +60,19 @@ impl Robust {
             Robust::Holds => "holds",
             Robust::Part => "part",
             Robust::NotAtAll => "not at all",
+            Robust::Independent => "independent",
         }
     }
 
-    /// Compare the interval `[q05, q95]` with the band `[lo, hi]`.
+    /// Every verdict, in the order the counts are told.
+    pub const ALL: [Robust; 4] = [Robust::Holds, Robust::Part, Robust::NotAtAll, Robust::Independent];
+
+    /// Compare the interval `[q05, q95]` with the band `[lo, hi]`; an interval that is one
+    /// point (no sampled input moves the value) is [`Robust::Independent`].
     pub fn of(q05: f64, q95: f64, (lo, hi): (f64, f64)) -> Robust {
-        if q05 >= lo && q95 <= hi {
+        if q05 == q95 {
+            Robust::Independent
+        } else if q05 >= lo && q95 <= hi {
             Robust::Holds
         } else if q95 < lo || q05 > hi {
             Robust::NotAtAll
@@ -205,6 +216,21 @@ pub fn study(
         .collect()
 }
 
+/// How many claims have each verdict, in [`Robust::ALL`]'s order.
+pub fn tally(rows: &[ClaimRobustness]) -> [(Robust, usize); 4] {
+    Robust::ALL.map(|v| (v, rows.iter().filter(|r| r.verdict == v).count()))
+}
+
+/// The counts in words: "9 hold over the whole interval, 28 over part of it, 4 not at all; 3
+/// do not depend on the sampled inputs (independent)".
+pub fn tally_text(rows: &[ClaimRobustness]) -> String {
+    let [(_, holds), (_, part), (_, none), (_, independent)] = tally(rows);
+    format!(
+        "{holds} hold over the whole interval, {part} over part of it, {none} not at all; {independent} do not \
+         depend on the sampled inputs (independent)"
+    )
+}
+
 /// Total indices below this are not named as an input a claim hinges on.
 pub const NAMED_TOTAL: f64 = 0.01;
 
@@ -292,7 +318,7 @@ fn in_band(v: f64, (lo, hi): (f64, f64)) -> f64 {
 }
 
 /// Verdict colours (palette indices).
-const COLOURS: [(&str, usize); 3] = [("holds", 3), ("part", 1), ("not at all", 5)];
+const COLOURS: [(&str, usize); 4] = [("holds", 3), ("part", 1), ("not at all", 5), ("independent", 6)];
 
 fn chart(_: &Context, t: &Table) -> Chart {
     let col = |name: &str| super::col(t, name);
@@ -346,6 +372,9 @@ mod tests {
         assert_eq!(Robust::of(1.0, 4.0, (0.0, 3.0)), Robust::Part);
         assert_eq!(Robust::of(-1.0, 0.5, (0.0, 3.0)), Robust::Part);
         assert_eq!(Robust::of(3.5, 4.0, (0.0, 3.0)), Robust::NotAtAll);
+        // a point interval is no test of robustness, inside the band or out of it
+        assert_eq!(Robust::of(2.0, 2.0, (0.0, 3.0)), Robust::Independent);
+        assert_eq!(Robust::of(4.0, 4.0, (0.0, 3.0)), Robust::Independent);
         assert_eq!(in_band(3.0, (1.0, 3.0)), 1.0f64.asinh());
     }
 
