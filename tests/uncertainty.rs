@@ -205,7 +205,7 @@ fn draws_outside_the_usual_range_earn_one_warning_per_key() {
     let stderr = |o: &Output| String::from_utf8_lossy(&o.stderr).into_owned();
     let warns =
         |o: &Output| stderr(o).lines().filter(|l| l.starts_with("warning:")).map(String::from).collect::<Vec<_>>();
-    let base = ["uncertainty", "--solver", "modal", "--samples", "4"];
+    let base = ["uncertainty", "--solver", "modal", "--samples", "64"];
     let run = |vary: &[&str]| {
         let mut args = base.to_vec();
         for v in vary {
@@ -241,4 +241,31 @@ fn draws_outside_the_usual_range_earn_one_warning_per_key() {
     assert!(warns(&run(&["mb=normal:0.15:0.016"])).is_empty());
     let q = bin(&[&base[..], &["--quiet", "--vary", "ks=uniform:1e3:6e4"]].concat());
     assert!(q.stderr.is_empty() && q.stdout == run(&["ks=uniform:1e3:6e4"]).stdout);
+}
+
+#[test]
+fn too_few_samples_warn_once_and_the_text_says_the_indices_mean_nothing() {
+    for args in [
+        &["uncertainty", "--vary", "ks=uniform:2e4:6e4", "--samples", "1"][..],
+        &["uncertainty", "--claims", "--samples", "2", "--format", "csv"][..],
+    ] {
+        let loud = bin(args);
+        assert!(loud.status.success());
+        let err = String::from_utf8(loud.stderr).unwrap();
+        let warnings: Vec<&str> = err.lines().filter(|l| l.starts_with("warning:")).collect();
+        assert_eq!(warnings.len(), 1, "{args:?}: {err}");
+        assert!(warnings[0].contains("below 64 base samples") && warnings[0].contains("1/sqrt(N)"), "{}", warnings[0]);
+        let quiet = bin(&[&["--quiet"], args].concat());
+        assert!(quiet.stderr.is_empty(), "{}", String::from_utf8_lossy(&quiet.stderr));
+        assert_eq!(quiet.stdout, loud.stdout, "the warning changed the result");
+    }
+    let text =
+        String::from_utf8(bin(&["uncertainty", "--vary", "ks=uniform:2e4:6e4", "--samples", "1"]).stdout).unwrap();
+    assert!(text.contains("NOT MEANINGFUL at 1 base samples (fewer than 64)"), "{text}");
+    let text = String::from_utf8(bin(&["uncertainty", "--claims", "--samples", "2"]).stdout).unwrap();
+    assert!(text.contains("NOT MEANINGFUL at 2 base samples"), "{text}");
+    // at the minimum: no warning, no remark
+    let ok = bin(&["uncertainty", "--vary", "ks=uniform:2e4:6e4", "--samples", "64"]);
+    assert!(!String::from_utf8(ok.stderr).unwrap().contains("warning:"));
+    assert!(!String::from_utf8(ok.stdout).unwrap().contains("NOT MEANINGFUL"));
 }

@@ -9,7 +9,7 @@ use racket_impact::experiments::robustness;
 use racket_impact::params::keys;
 use racket_impact::params::uncertainty::unusual_draws;
 use racket_impact::study::sensitivity::Design;
-use racket_impact::study::uncertainty::{summary_json, Study, DEFAULT_SAMPLES};
+use racket_impact::study::uncertainty::{few_samples, summary_json, Study, DEFAULT_SAMPLES, MIN_SAMPLES};
 use racket_impact::{Error, Result};
 
 use super::common::{out, warn, warn_params_except, Common, Format, Progress};
@@ -108,6 +108,9 @@ pub fn run(a: UncertaintyArgs) -> Result<()> {
         Format::Text => study.text(&outputs),
     };
     emit(a.out.as_ref(), &text)?;
+    if let Some(line) = few_samples(samples) {
+        warn(&line);
+    }
     // the base value of a drawn parameter is not used: its draws are judged instead
     let drawn: Vec<&str> = study.inputs.iter().map(|i| i.key).collect();
     warn_params_except([&study.base], &drawn);
@@ -178,7 +181,11 @@ fn run_claims(a: UncertaintyArgs) -> Result<()> {
             }))?
         }
     };
-    emit(a.out.as_ref(), &text)
+    emit(a.out.as_ref(), &text)?;
+    if let Some(line) = few_samples(samples) {
+        warn(&line);
+    }
+    Ok(())
 }
 
 /// One line per claim: nominal, q05-q95, verdict, the two inputs it hinges on; then the
@@ -190,6 +197,16 @@ fn claims_text(rows: &[robustness::ClaimRobustness], samples: u64, seed: u32, ru
          {:<32} {:>10} {:>10} {:>10} {:>10}  {:<11} top inputs (total index)\n",
         "claim", "nominal", "q05", "q50", "q95", "verdict"
     );
+    if samples < MIN_SAMPLES {
+        s.insert_str(
+            s.find('\n').unwrap_or(0) + 1,
+            &format!(
+                "NOT MEANINGFUL at {samples} base samples (fewer than {MIN_SAMPLES}): q05/q95 rest on a few runs and \
+                 the indices' sampling error, of order 1/sqrt(N), is as large as the indices, so the verdicts and \
+                 indices below mean nothing\n"
+            ),
+        );
+    }
     for r in rows {
         let top: Vec<String> =
             robustness::top_two(&r.summary).iter().map(|(k, v)| format!("{k} {}", sig(*v, 2))).collect();

@@ -17,6 +17,23 @@ use crate::solve::simulate;
 /// Base samples unless given (a power of two, as the Sobol' sequence likes).
 pub const DEFAULT_SAMPLES: u64 = 256;
 
+/// Fewest base samples whose Sobol' indices mean anything: their sampling error is of order
+/// `1/sqrt(N)` (0.125 at 64), as large as the indices themselves below it, and q05/q95 of the
+/// 2N independent runs rest on three runs or fewer beyond them.
+pub const MIN_SAMPLES: u64 = 64;
+
+/// The one-line warning for a design of `samples` base samples below [`MIN_SAMPLES`] (none at
+/// or above it).
+pub fn few_samples(samples: u64) -> Option<String> {
+    (samples < MIN_SAMPLES).then(|| {
+        format!(
+            "samples = {samples} is below {MIN_SAMPLES} base samples: the Sobol' indices' sampling error, of order \
+             1/sqrt(N), is then as large as the indices and q05/q95 rest on a few runs; the indices and \
+             intervals are not meaningful at this count"
+        )
+    })
+}
+
 /// One varied input.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Input {
@@ -284,6 +301,16 @@ impl Study {
             inputs.join(", "),
             100.0 * sensitivity::CONFIDENCE
         );
+        if (self.design.samples() as u64) < MIN_SAMPLES {
+            s.insert_str(
+                s.len() - 1,
+                &format!(
+                    "NOT MEANINGFUL at {} base samples (fewer than {MIN_SAMPLES}): the indices' sampling error, of \
+                     order 1/sqrt(N), is as large as the indices\n",
+                    self.design.samples()
+                ),
+            );
+        }
         let f = |v: f64| if v.is_finite() { sig(v, 4) } else { "-".to_string() };
         for o in outputs {
             let m = &o.summary;
