@@ -48,7 +48,8 @@ fn implausible_values_run_and_warn_once() {
     warns_once(&["simulate", "--ks", "40", "--format", "json"], &["ks = 40 N/m", "5000..200000 N/m"]);
     warns_once(&["simulate", "--ks", "5e5"], &["ks = 500000 N/m"]);
     warns_once(&["simulate", "--mass", "0.1"], &["mass = 0.1 kg", "0.15..1 kg"]);
-    warns_once(&["simulate", "--v1", "90"], &["v1 = 90 m/s", "0..70 m/s"]);
+    // (a ball stiff enough not to be squashed beyond its radius at 90 m/s, which warns too)
+    warns_once(&["simulate", "--v1", "90", "--k1", "1.5e5"], &["v1 = 90 m/s", "0..70 m/s"]);
     warns_once(&["simulate", "--mu", "1.5", "--angle-deg", "30"], &["mu = 1.5", "0..1"]);
     warns_once(&["simulate", "--angle-deg", "84", "--v1", "20"], &["angle-deg = 84 deg", "0..80 deg"]);
     // a frame frequency no racket has: EI 20 on the paper's frame is about 46 Hz
@@ -58,6 +59,19 @@ fn implausible_values_run_and_warn_once() {
     warns_once(&["simulate", "--x", "0.16", "--r", "0.12", "--ix", "5e-4", "--v1", "40"], &["theta_end = ", "15 deg"]);
     warns_once(&["speed", "--swing", "100", "--ks", "40"], &["ks = 40 N/m"]);
     warns_once(&["sweep", "--ks", "40,4e4", "--x", "0.1"], &["ks = 40 N/m"]);
+}
+
+/// A ball squashed beyond its own radius (every input in its usual range) is outside the
+/// paper's linear ball; under the radius law the friction lever is clamped at zero.
+#[test]
+fn a_ball_compressed_beyond_its_radius_warns() {
+    warns_once(&["simulate", "--v1", "69"], &["y0 = 61.7 mm", "radius 33 mm", "linear ball", "outside its range"]);
+    warns_once(&["simulate", "--v1", "69", "--k1", "5000"], &["y0 = 191 mm", "radius 33 mm"]);
+    let oblique = ["simulate", "--angle-deg", "30", "--azimuth-deg", "90", "--tangential", "radius", "--v1", "45"];
+    warns_once(&oblique, &["radius 33 mm", "friction lever R - delta is clamped at 0"]);
+    // within the radius: no warning
+    let ok = run(&["simulate", "--v1", "30"]);
+    assert!(stderr(&ok).is_empty(), "{}", stderr(&ok));
 }
 
 #[test]

@@ -126,6 +126,28 @@ pub fn warn_twist(theta_end_deg: f64) {
     }
 }
 
+/// Warn when the ball's largest compression `y0_m` exceeds its radius: the paper's linear ball
+/// (F = k1 y) is then outside its range, and the radius law's friction lever `R - delta` is
+/// clamped at zero.
+pub fn warn_squash(params: &Params, y0_m: f64) {
+    let radius = params.oblique.ball_radius;
+    if y0_m > radius {
+        let lever = if !params.oblique.is_normal()
+            && params.oblique.tangential.has(racket_impact::params::TangentialLaw::Radius)
+        {
+            "; the radius law's friction lever R - delta is clamped at 0, so the spin results rest on that clamp"
+        } else {
+            ""
+        };
+        warn(&format!(
+            "ball compression y0 = {} mm exceeds the ball's radius {} mm: the paper's linear ball (F = k1 y) is \
+             outside its range (computed anyway; check v1 and k1){lever}",
+            sig(1e3 * y0_m, 3),
+            sig(1e3 * radius, 3)
+        ));
+    }
+}
+
 /// Output format.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Format {

@@ -7,7 +7,7 @@ use racket_impact::params::spec::sig;
 use racket_impact::solve::{Model, SeriesOptions};
 use racket_impact::{Error, Result};
 
-use super::common::{out, warn, warn_params, warn_twist, Common, Format};
+use super::common::{out, warn, warn_params, warn_squash, warn_twist, Common, Format};
 use super::overrides::SimulateKeys;
 
 /// Sample spacing of the time series unless given, s.
@@ -108,6 +108,7 @@ pub fn run(a: SimulateArgs) -> Result<()> {
     })?;
     warn_params([&params]);
     warn_twist(result.theta_end_deg);
+    warn_squash(&params, result.y0_m);
     if result.recontact {
         warn("the vibrating frame met the ball again after separation (re-contact not modelled)");
     }
