@@ -268,3 +268,27 @@ fn tangential_losses_are_in_every_output_of_an_impact() {
         assert!(v[0]["result"][key].is_number(), "speed json lacks {key}");
     }
 }
+
+/// Each energy fraction of an oblique impact names its base: those of the normal motion are of
+/// the normal incoming KE (`f_ke_ball` is `(v2_n / v1_n)^2`), the tangential ones of the whole;
+/// at normal incidence the base is the one incoming KE and the lines are as before.
+#[test]
+fn oblique_energy_fractions_name_their_base() {
+    let p = oblique(0.158, 0.0, 30.0, 90.0, 0.0);
+    let r = simulate(&p).unwrap();
+    let text = result_text(&p, &r);
+    let ke = line(&text, "f_ke_ball");
+    assert!(ke.ends_with("ball rebound KE (v2_n / v1_n)^2, of the normal incoming KE"), "{ke}");
+    assert!(!text.contains("of initial ball KE"), "{text}");
+    assert!((r.f_ke_ball - (r.v2_n / (10.0 * 30f64.to_radians().cos())).powi(2)).abs() < 1e-9, "{r:?}");
+    for label in ["f_ball", "f_rigid", "f_vib", "f_vib_peak_pe", "f_spin"] {
+        assert!(line(&text, label).ends_with("of the normal incoming KE)"), "{}", line(&text, label));
+    }
+    for label in ["f_friction", "f_ball_spin", "f_racket_inplane"] {
+        assert!(line(&text, label).ends_with("(of the whole incoming KE)"), "{}", line(&text, label));
+    }
+    let normal = Params::paper();
+    let text = result_text(&normal, &simulate(&normal).unwrap());
+    assert!(line(&text, "f_ke_ball").ends_with("of initial ball KE"), "{text}");
+    assert!(!text.contains("normal incoming"), "{text}");
+}

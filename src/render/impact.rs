@@ -69,7 +69,7 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
                 "{:<18} {:>12} {}{}",
                 text.label,
                 fmt_sig(value * text.scale, 6),
-                text.unit,
+                text.oblique_unit.filter(|_| !p.oblique.is_normal()).unwrap_or(text.unit),
                 sign_remark(field.key, r)
             )
         };

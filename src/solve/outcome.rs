@@ -24,6 +24,10 @@ pub struct Text {
     pub scale: f64,
     /// The unit or remark after the value (empty for none).
     pub unit: &'static str,
+    /// The unit or remark instead for an oblique or spinning ball, where it differs: the
+    /// energy fractions of the normal motion are then of the normal incoming KE
+    /// `m_b (v1 cos angle)^2 / 2` only, while the tangential ones are of the whole.
+    pub oblique_unit: Option<&'static str>,
     /// Shown only for a racket held in a hand (`--grip hand`).
     pub hand_only: bool,
     /// Shown only for an oblique or spinning ball (`--angle-deg`, `--spin-rpm`).
@@ -103,23 +107,37 @@ const fn same(a: &str, b: &str) -> bool {
 
 /// A text line with the value as it is.
 const fn text(label: &'static str, unit: &'static str) -> Option<Text> {
-    Some(Text { label, scale: 1.0, unit, hand_only: false, oblique_only: false, law_only: false })
+    Some(Text { label, scale: 1.0, unit, hand_only: false, oblique_only: false, law_only: false, oblique_unit: None })
+}
+
+/// A text line of an energy fraction of the normal motion: its base named for an oblique or
+/// spinning ball, the normal incoming KE.
+const fn text_normal(label: &'static str, unit: &'static str, oblique_unit: &'static str) -> Option<Text> {
+    Some(Text {
+        label,
+        scale: 1.0,
+        unit,
+        hand_only: false,
+        oblique_only: false,
+        law_only: false,
+        oblique_unit: Some(oblique_unit),
+    })
 }
 
 /// A text line with the value times 1000 (ms, mm).
 const fn text_milli(label: &'static str, unit: &'static str) -> Option<Text> {
-    Some(Text { label, scale: 1e3, unit, hand_only: false, oblique_only: false, law_only: false })
+    Some(Text { label, scale: 1e3, unit, hand_only: false, oblique_only: false, law_only: false, oblique_unit: None })
 }
 
 /// A text line shown only for an oblique or spinning ball.
 const fn text_oblique(label: &'static str, unit: &'static str) -> Option<Text> {
-    Some(Text { label, scale: 1.0, unit, hand_only: false, oblique_only: true, law_only: false })
+    Some(Text { label, scale: 1.0, unit, hand_only: false, oblique_only: true, law_only: false, oblique_unit: None })
 }
 
 /// A text line shown only for an oblique or spinning ball under a tangential law with named
 /// loss mechanisms.
 const fn text_law(label: &'static str, unit: &'static str) -> Option<Text> {
-    Some(Text { label, scale: 1.0, unit, hand_only: false, oblique_only: true, law_only: true })
+    Some(Text { label, scale: 1.0, unit, hand_only: false, oblique_only: true, law_only: true, oblique_unit: None })
 }
 
 /// A field value that is left out of the JSON: NaN, which marks a quantity that does not apply
@@ -201,22 +219,24 @@ impact_result! {
     /// Rotation about the long axis at the end of the impact, degrees.
     theta_end_deg: f64 ["deg"] checked: true, sweep: true, text: text("theta_end", "deg");
     /// Energy dissipated in the ball (Eq 11).
-    f_ball: f64 [""] checked: true, sweep: true, text: text("f_ball", "lost in the ball (Eq 11)");
+    f_ball: f64 [""] checked: true, sweep: true, text: text_normal("f_ball", "lost in the ball (Eq 11)", "lost in the ball (Eq 11; of the normal incoming KE)");
     /// Racket vibration energy after impact: racket energy minus its rigid-body energy.
-    f_vib: f64 [""] checked: true, sweep: true, text: text("f_vib", "racket vibration");
+    f_vib: f64 [""] checked: true, sweep: true, text: text_normal("f_vib", "racket vibration", "racket vibration (of the normal incoming KE)");
     /// The paper's vibration measure: peak bending PE during two fundamental periods after impact.
     f_vib_peak_pe: f64 [""] checked: true, sweep: true,
-        text: text("f_vib_peak_pe", "peak bending PE after impact (paper)");
+        text: text_normal("f_vib_peak_pe", "peak bending PE after impact (paper)", "peak bending PE after impact (paper; of the normal incoming KE)");
     /// Kinetic energy of twist about the long axis.
-    f_spin: f64 [""] checked: true, sweep: true, text: text("f_spin", "twist about the long axis");
+    f_spin: f64 [""] checked: true, sweep: true, text: text_normal("f_spin", "twist about the long axis", "twist about the long axis (of the normal incoming KE)");
     /// Energy taken by the hand (`--grip hand`: its springs' energy plus what its dampers
     /// dissipated) at separation; 0 for the paper's free racket.
     f_hand: f64 [""] checked: true, sweep: false,
-        text: Some(Text { label: "f_hand", scale: 1.0, unit: "taken by the hand (springs + damping)", hand_only: true, oblique_only: false, law_only: false });
+        text: Some(Text { label: "f_hand", scale: 1.0, unit: "taken by the hand (springs + damping)", hand_only: true, oblique_only: false, law_only: false, oblique_unit: Some("taken by the hand (springs + damping; of the normal incoming KE)") });
     /// Rigid-body kinetic energy of the racket (translation + rotation about the centre of mass).
-    f_rigid: f64 [""] checked: true, sweep: true, text: text("f_rigid", "racket rigid-body KE");
-    /// Rebound kinetic energy of the ball (= e_a^2).
-    f_ke_ball: f64 [""] checked: true, sweep: true, text: text("f_ke_ball", "of initial ball KE");
+    f_rigid: f64 [""] checked: true, sweep: true, text: text_normal("f_rigid", "racket rigid-body KE", "racket rigid-body KE (of the normal incoming KE)");
+    /// Rebound kinetic energy of the ball (= e_a^2), as a fraction of the incoming kinetic
+    /// energy; for an oblique or spinning ball that of the normal motion, `(v2_n / v1_n)^2`, a
+    /// fraction of the normal incoming KE `m_b (v1 cos angle)^2 / 2` only.
+    f_ke_ball: f64 [""] checked: true, sweep: true, text: text_normal("f_ke_ball", "of initial ball KE", "ball rebound KE (v2_n / v1_n)^2, of the normal incoming KE");
     /// Maximum contact force, N.
     peak_force_n: f64 ["N"] checked: true, sweep: true, text: text("peak_force", "N");
     /// Largest relative deviation of the total energy from its initial value, over the run.
