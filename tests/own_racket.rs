@@ -160,3 +160,20 @@ fn bad_racket_input_is_one_line_with_the_key() {
     assert!(err.contains("invalid x") && err.contains("string face"), "{err}");
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// A fit row without a target (ei, the densities) has null target and rel_error in the JSON,
+/// not an empty string; the rows with one have numbers.
+#[test]
+fn racket_json_gives_null_for_a_missing_target() {
+    let v = json(&["racket", "tweener", "--format", "json"]);
+    let rows = v["fit"].as_array().unwrap();
+    let ei = rows.iter().find(|r| r["quantity"] == "ei").unwrap();
+    assert!(ei["rel_error"].is_null() && ei["target"].is_null(), "{ei}");
+    assert!(ei["model"].is_number());
+    for r in rows {
+        for key in ["target", "model", "rel_error"] {
+            assert!(r[key].is_number() || r[key].is_null(), "{r}");
+        }
+    }
+    assert!(rows.iter().any(|r| r["rel_error"].is_number()));
+}

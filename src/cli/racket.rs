@@ -108,6 +108,10 @@ fn list(segments: usize, format: Format) -> Result<()> {
 
 /// A table's rows as JSON objects (`{"<table name>": [...]}` plus `extra` members), pretty-printed.
 fn table_json(t: &racket_impact::render::table::Table, extra: &[(&str, serde_json::Value)]) -> Result<String> {
+    use racket_impact::render::table::Value;
+    // an empty cell of a numeric column (a check without a target) is null, not ""
+    let numeric: Vec<bool> =
+        (0..t.columns.len()).map(|k| t.rows.iter().any(|r| matches!(r.get(k), Some(Value::Num(_))))).collect();
     let rows: Vec<serde_json::Value> = t
         .rows
         .iter()
@@ -116,11 +120,13 @@ fn table_json(t: &racket_impact::render::table::Table, extra: &[(&str, serde_jso
                 .columns
                 .iter()
                 .zip(row)
-                .map(|(c, v)| {
+                .zip(&numeric)
+                .map(|((c, v), &numeric)| {
                     let value = match v {
-                        racket_impact::render::table::Value::Num(x) => serde_json::json!(x),
-                        racket_impact::render::table::Value::Int(i) => serde_json::json!(i),
-                        racket_impact::render::table::Value::Text(s) => serde_json::json!(s),
+                        Value::Num(x) => serde_json::json!(x),
+                        Value::Int(i) => serde_json::json!(i),
+                        Value::Text(s) if s.is_empty() && numeric => serde_json::Value::Null,
+                        Value::Text(s) => serde_json::json!(s),
                     };
                     (c.clone(), value)
                 })
