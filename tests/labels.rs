@@ -292,3 +292,22 @@ fn oblique_energy_fractions_name_their_base() {
     assert!(line(&text, "f_ke_ball").ends_with("of initial ball KE"), "{text}");
     assert!(!text.contains("normal incoming"), "{text}");
 }
+
+/// A flag is 0/1 in every CSV: the simulate CSV's `recontact` as the sweep's and the map's.
+#[test]
+fn flags_are_0_or_1_in_the_simulate_csv_as_in_the_sweep_csv() {
+    let column = |csv: &str, key: &str| -> Vec<String> {
+        let mut lines = csv.lines();
+        let k = lines.next().unwrap().split(',').position(|c| c == key).unwrap_or_else(|| panic!("{key}: {csv}"));
+        lines.map(|l| l.split(',').nth(k).unwrap().to_string()).collect()
+    };
+    let p = Params::paper();
+    let mut r = simulate(&p).unwrap();
+    assert_eq!(column(&result_csv(&p, &r), "recontact"), ["0"]);
+    r.recontact = true;
+    assert_eq!(column(&result_csv(&p, &r), "recontact"), ["1"]);
+    let sim = bin().args(["simulate", "--format", "csv"]).output().unwrap();
+    assert_eq!(column(&String::from_utf8(sim.stdout).unwrap(), "recontact"), ["0"]);
+    let sweep = bin().args(["sweep", "--ks", "2e4,4e4"]).output().unwrap();
+    assert_eq!(column(&String::from_utf8(sweep.stdout).unwrap(), "recontact"), ["0", "0"]);
+}

@@ -137,8 +137,13 @@ pub fn result_csv(params: &Params, r: &ImpactResult) -> String {
     if let serde_json::Value::Object(map) = v {
         for (k, v) in map {
             head.push(k);
-            // (an undefined field, null in the JSON, is an empty field)
-            row.push(if v.is_null() { String::new() } else { v.to_string() });
+            // (an undefined field, null in the JSON, is an empty field; a flag is 0/1 as in
+            // the sweep and map CSVs)
+            row.push(match v {
+                serde_json::Value::Null => String::new(),
+                serde_json::Value::Bool(b) => u8::from(b).to_string(),
+                v => v.to_string(),
+            });
         }
     }
     for (column, value) in recorded(params).into_iter().chain(recorded_oblique(params)) {
