@@ -269,3 +269,27 @@ fn too_few_samples_warn_once_and_the_text_says_the_indices_mean_nothing() {
     assert!(!String::from_utf8(ok.stderr).unwrap().contains("warning:"));
     assert!(!String::from_utf8(ok.stdout).unwrap().contains("NOT MEANINGFUL"));
 }
+
+/// The CSV's index columns spell a key with underscores, as the other CSVs and the JSON do
+/// (`first_angle_deg`, not `first_angle-deg`).
+#[test]
+fn csv_index_columns_spell_keys_with_underscores() {
+    let out = bin(&[
+        "uncertainty",
+        "--x",
+        "0.158",
+        "--vary",
+        "angle-deg=uniform:10:30",
+        "--samples",
+        "64",
+        "--format",
+        "csv",
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let csv = String::from_utf8(out.stdout).unwrap();
+    let head = csv.lines().next().unwrap();
+    assert!(head.ends_with(
+        "first_angle_deg,first_angle_deg_lo,first_angle_deg_hi,total_angle_deg,total_angle_deg_lo,total_angle_deg_hi"
+    ), "{head}");
+    assert!(!head.contains('-'), "{head}");
+}

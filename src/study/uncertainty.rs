@@ -260,14 +260,16 @@ impl Study {
     }
 
     /// The CSV table: one row per output; per input `first_KEY`, `first_KEY_lo`,
-    /// `first_KEY_hi`, `total_KEY`, `total_KEY_lo`, `total_KEY_hi` (empty where undefined).
+    /// `first_KEY_hi`, `total_KEY`, `total_KEY_lo`, `total_KEY_hi` (empty where undefined;
+    /// KEY with underscores, `first_angle_deg`, as the other CSVs spell a column).
     pub fn csv(&self, outputs: &[Output]) -> String {
         let mut head = vec!["output".to_string(), "unit".into()];
         head.extend(["mean", "sd", "q05", "q50", "q95"].map(String::from));
         for i in &self.inputs {
             for kind in ["first", "total"] {
                 for end in ["", "_lo", "_hi"] {
-                    head.push(format!("{kind}_{}{end}", i.key));
+                    // (the key as the JSON and config files spell it: angle_deg, not angle-deg)
+                    head.push(format!("{kind}_{}{end}", i.key.replace('-', "_")));
                 }
             }
         }
