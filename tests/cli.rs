@@ -251,3 +251,16 @@ fn a_reader_that_stops_early_ends_the_program_quietly() {
     assert!(out.status.success(), "exit {:?}: {err}", out.status.code());
     assert!(!err.contains("panicked"), "{err}");
 }
+
+/// One compared tension T sets only the second row's k_s: the first is the configuration as
+/// given, with the --ks flag (only two or more tensions refuse it, tests/bad_input.rs).
+#[test]
+fn one_compared_tension_keeps_the_given_ks_in_the_first_row() {
+    let out = run(&["speed", "--swing", "100", "--ks", "3e4", "--compare-tension-lb", "50", "--format", "csv"]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let csv = String::from_utf8(out.stdout).unwrap();
+    let ks: Vec<f64> = csv.lines().skip(1).map(|l| l.split(',').nth(3).unwrap().parse().unwrap()).collect();
+    assert_eq!(ks.len(), 2);
+    assert_relative_eq!(ks[0], 3.0e4);
+    assert_relative_eq!(ks[1], 4.0e4 * 50.0 / 60.0, max_relative = 1e-5); // (printed to 6 digits)
+}

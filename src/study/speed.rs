@@ -117,7 +117,7 @@ impl SpeedRequest {
                 ),
             ));
         }
-        check_comparison(&self.compare_tension_lb, !self.compare_racket.is_empty())?;
+        check_comparison(&self.compare_tension_lb, !self.compare_racket.is_empty(), &self.sources.flags)?;
         for (field, n) in
             [("compare-tension-lb", self.compare_tension_lb.len()), ("compare-racket", self.compare_racket.len())]
         {

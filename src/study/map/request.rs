@@ -60,7 +60,7 @@ impl MapRequest {
     pub fn check(&self) -> Result<()> {
         check_count("nx", self.nx)?;
         check_count("nr", self.nr)?;
-        check_comparison(&self.compare_tension_lb, self.compare_racket.is_some())?;
+        check_comparison(&self.compare_tension_lb, self.compare_racket.is_some(), &self.sources.flags)?;
         if self.compare_tension_lb.len() > 2 {
             return Err(Error::invalid(
                 "compare-tension-lb",
