@@ -145,6 +145,33 @@ fn a_fifo_is_written_through_and_stays_a_fifo() {
     assert_eq!(s.names(), vec!["pipe".to_string(), "regular.csv".to_string()]);
 }
 
+/// `--out /dev/stdout` with standard output a pipe (`... | cat`): the link chain ends at
+/// `/proc/self/fd/1 -> pipe:[N]`, which is not a path; the path given is opened and the file's
+/// bytes come down the pipe. A map (three files) refuses it as it refuses any device.
+#[test]
+fn standard_output_as_a_pipe_is_written_through() {
+    let s = Scratch::new("stdout-pipe");
+    let regular = s.path("regular.csv");
+    for (args, reference) in writers(Path::new("/dev/stdout")).into_iter().zip(writers(&regular)) {
+        let o = bin().args(&args).stdout(Stdio::piped()).output().unwrap();
+        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+        let r = bin().args(&reference).stdout(Stdio::null()).output().unwrap();
+        assert!(r.status.success(), "{reference:?}: {}", stderr(&r));
+        let file = std::fs::read(&regular).unwrap();
+        assert!(!file.is_empty());
+        assert!(
+            o.stdout.windows(file.len()).any(|w| w == file.as_slice()),
+            "{args:?}: the pipe did not carry the file's bytes: {}",
+            String::from_utf8_lossy(&o.stdout)
+        );
+    }
+    let o =
+        bin().args(["map", "--nx", "5", "--nr", "5", "--out", "/dev/stdout"]).stdout(Stdio::piped()).output().unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("invalid out") && stderr(&o).contains("device or pipe"), "{}", stderr(&o));
+    assert!(temp_leftovers("stdout").is_empty());
+}
+
 #[test]
 fn a_symlink_keeps_pointing_at_its_target_which_is_written() {
     let s = Scratch::new("symlink");

@@ -63,6 +63,15 @@ pub fn resolve(path: &Path) -> Result<Resolved> {
     if path.file_name().is_none() {
         return Err(Error::io(path, "not a file path (no file name)"));
     }
+    // What the system's own link following ends at: a device, FIFO or socket is written
+    // through the path as given, whose links may pass through names that are not paths
+    // (`/dev/stdout -> /proc/self/fd/1 -> pipe:[N]`, opened by the kernel, not by name).
+    if let Ok(meta) = fs::metadata(path) {
+        let kind = meta.file_type();
+        if !kind.is_file() && !kind.is_dir() {
+            return Ok(Resolved::Through(path.to_path_buf()));
+        }
+    }
     let mut at = path.to_path_buf();
     for _ in 0..40 {
         let meta = match fs::symlink_metadata(&at) {
