@@ -202,6 +202,41 @@ fn a_symlink_keeps_pointing_at_its_target_which_is_written() {
     assert_eq!(s.names(), vec!["dangling.csv", "data", "direct.csv", "link.csv"]);
 }
 
+/// Replacing an output keeps the permissions of the file replaced (`chmod 600 out.csv` stays
+/// 600, and a read-only 444 file stays read-only), for every writer and a map's three files.
+#[test]
+fn a_replaced_output_keeps_its_permissions() {
+    use std::os::unix::fs::PermissionsExt;
+    let s = Scratch::new("modes");
+    let mode = |p: &Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o7777;
+    for (i, wanted) in [0o640, 0o600, 0o444].into_iter().enumerate() {
+        let out = s.path("out.csv");
+        // (the slow report once)
+        for args in writers(&out).into_iter().take(if i == 0 { 3 } else { 2 }) {
+            let _ = std::fs::remove_file(&out);
+            std::fs::write(&out, "old\n").unwrap();
+            std::fs::set_permissions(&out, std::fs::Permissions::from_mode(wanted)).unwrap();
+            let o = bin().args(&args).stdout(Stdio::null()).output().unwrap();
+            assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+            assert_ne!(std::fs::read(&out).unwrap(), b"old\n", "{args:?}: not written");
+            assert_eq!(mode(&out), wanted, "{args:?}: permissions {:o}, were {wanted:o}", mode(&out));
+        }
+        let files = ["m.csv", "m.png", "m.json"].map(|n| s.path(n));
+        for f in &files {
+            let _ = std::fs::remove_file(f);
+            std::fs::write(f, "old\n").unwrap();
+            std::fs::set_permissions(f, std::fs::Permissions::from_mode(wanted)).unwrap();
+        }
+        let o = bin().args(["map", "--nx", "5", "--nr", "3", "--out"]).arg(&files[0]).output().unwrap();
+        assert!(o.status.success(), "map: {}", stderr(&o));
+        for f in &files {
+            assert_ne!(std::fs::read(f).unwrap(), b"old\n", "{}: not written", f.display());
+            assert_eq!(mode(f), wanted, "{}: permissions {:o}, were {wanted:o}", f.display(), mode(f));
+        }
+    }
+    assert_eq!(s.names(), vec!["m.csv", "m.json", "m.png", "out.csv"]);
+}
+
 #[test]
 fn a_read_only_directory_is_refused_before_any_work_and_nothing_is_left() {
     let s = Scratch::new("readonly");
