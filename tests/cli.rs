@@ -264,3 +264,35 @@ fn one_compared_tension_keeps_the_given_ks_in_the_first_row() {
     assert_relative_eq!(ks[0], 3.0e4);
     assert_relative_eq!(ks[1], 4.0e4 * 50.0 / 60.0, max_relative = 1e-5); // (printed to 6 digits)
 }
+
+/// A sweep point that fails says which point it is, by the values of the swept keys (not the
+/// fixed ones), the first failing point in the sweep's order; one line, exit 2, no file.
+#[test]
+fn a_failing_sweep_point_is_named_by_its_swept_values() {
+    let dir = scratch("sweep-point");
+    let out = dir.join("f.csv");
+    let o = run(&[
+        "sweep",
+        "--out",
+        out.to_str().unwrap(),
+        "--solver",
+        "fd",
+        "--dt",
+        "1e-4",
+        "--x",
+        "0.1,0.2",
+        "--segments",
+        "4,39",
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.starts_with("error: at x = 0.1, segments = 4: energy not conserved"), "{err}");
+    assert!(!out.exists());
+    // a bad value found before anything runs names the point too, its values readable
+    let o = run(&["sweep", "--mu", "0:3:11", "--x", "0.1,0.2", "--angle-deg", "30"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.starts_with("error: at mu = 2.1, x = 0.1: invalid mu = 2.1: "), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
