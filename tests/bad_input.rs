@@ -182,6 +182,8 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
         case(&["simulate", "--series", &no_dir_series], "series", true),
         case(&["simulate", "--series", &format!("{a_file}/s.csv")], "series", true),
         case(&["figures", "--only", "fig4_energy", "--out", &under_file], "out", false),
+        case(&["figures", "--only", "modes", "--out", &a_file], "invalid out", false),
+        case(&["figures", "--only", "modes", "--out", &under_file], "a_file is a file, not a directory", false),
         case(&["figures", "--only", "no_such_experiment", "--out", &s.path("figs")], "no_such_experiment", false),
         case(&["report", "--out", &no_dir_report], "out", true),
         case(&["modes", "--count", "0"], "count", true),

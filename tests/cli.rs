@@ -296,3 +296,32 @@ fn a_failing_sweep_point_is_named_by_its_swept_values() {
     assert!(err.starts_with("error: at mu = 2.1, x = 0.1: invalid mu = 2.1: "), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// No command at all: clap's usage and command list, laid out on several lines on stderr
+/// (not flattened onto one, as an error is), exit 2.
+#[test]
+fn no_command_prints_the_help_on_several_lines() {
+    let o = bin().output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(o.stdout.is_empty());
+    assert!(err.lines().any(|l| l.starts_with("Usage: racket-impact")), "{err}");
+    assert!(err.lines().any(|l| l.trim_start().starts_with("simulate ")), "{err}");
+    assert!(err.lines().all(|l| l.len() < 200), "a line too long: {err}");
+}
+
+/// An experiment named twice with --only runs once (one progress line, its two files).
+#[test]
+fn an_experiment_given_twice_runs_once() {
+    let dir = scratch("only-twice");
+    let out = dir.join("figs");
+    let o = run(&["figures", "--only", "modes", "--only", "modes", "--out", out.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert_eq!(err.lines().filter(|l| l.starts_with("modes ")).count(), 1, "{err}");
+    let mut names: Vec<String> =
+        std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    names.sort();
+    assert_eq!(names, vec!["modes.csv", "modes.png"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}

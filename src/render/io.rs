@@ -319,6 +319,24 @@ impl AtomicFile {
     }
 }
 
+/// Refuse a directory path `dir`, the value of the option `field`, that cannot become a
+/// directory: it, or the nearest of its ancestors that exists, is not a directory (a regular
+/// file in the way). Checked before any work; creates nothing.
+pub fn check_dir_path(field: &'static str, dir: &Path) -> Result<()> {
+    let existing = dir.ancestors().find(|a| !a.as_os_str().is_empty() && fs::metadata(a).is_ok());
+    match existing {
+        Some(a) if !a.is_dir() => {
+            let why = if a == dir {
+                "is a file, not a directory (the option names the directory the files go in)".to_string()
+            } else {
+                format!("{} is a file, not a directory", a.display())
+            };
+            Err(Error::invalid(field, dir.display(), why))
+        }
+        _ => Ok(()),
+    }
+}
+
 /// Create `dir` and any missing parents (like `mkdir -p`).
 ///
 /// Succeeds if the directory already exists; fails with an [`Error::Io`] naming `dir` if it
