@@ -325,3 +325,19 @@ fn an_experiment_given_twice_runs_once() {
     assert_eq!(names, vec!["modes.csv", "modes.png"]);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Each option's help states its default once: the declaration's text carries no default of
+/// its own beside the `[default: ...]` the command line adds.
+#[test]
+fn no_option_states_its_default_twice() {
+    for command in ["simulate", "modes", "speed", "sweep", "map", "uncertainty", "figures", "report", "racket"] {
+        for flag in ["-h", "--help"] {
+            let o = run(&[command, flag]);
+            assert_eq!(o.status.code(), Some(0), "{command} {flag}");
+            let help = String::from_utf8(o.stdout).unwrap();
+            for line in help.lines() {
+                assert!(line.to_lowercase().matches("default").count() <= 1, "{command} {flag}: {line}");
+            }
+        }
+    }
+}
