@@ -341,3 +341,20 @@ fn no_option_states_its_default_twice() {
         }
     }
 }
+
+/// A zero in JSON is printed without a sign: a stroke's params echo its zero spin as 0.0,
+/// not -0.0 (every JSON goes through render::json).
+#[test]
+fn json_prints_no_negative_zero() {
+    for args in [
+        &["speed", "--swing", "100", "--swing-path-deg", "10", "--format", "json"][..],
+        &["simulate", "--angle-deg", "30", "--format", "json"][..],
+    ] {
+        let o = run(args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}");
+        let text = String::from_utf8(o.stdout).unwrap();
+        assert!(!text.contains("-0.0,") && !text.contains("-0.0\n"), "{args:?}: {text}");
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+        assert!(v.is_object() || v.is_array());
+    }
+}

@@ -269,7 +269,7 @@ impl SpeedComparison {
                 v
             })
             .collect();
-        Ok(format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?))
+        crate::render::json::pretty(&v)
     }
 
     /// The comparison as text: the swing, then one line per variant.

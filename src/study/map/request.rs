@@ -45,7 +45,7 @@ pub struct MapOutcome {
 impl MapOutcome {
     /// The metadata as pretty JSON with a final newline.
     pub fn json(&self) -> Result<String> {
-        Ok(format!("{}\n", serde_json::to_string_pretty(&self.metadata).map_err(|e| Error::io("<json>", e))?))
+        crate::render::json::pretty(&self.metadata)
     }
 
     /// Number of points with a re-contact after separation (in either configuration).
