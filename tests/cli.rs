@@ -358,3 +358,19 @@ fn json_prints_no_negative_zero() {
         assert!(v.is_object() || v.is_array());
     }
 }
+
+/// A config file's ks, which two or more compared tensions set, is named in the one warning
+/// about unused config keys (a config file may be shared, so it is not refused as a flag is).
+#[test]
+fn a_config_ks_under_two_compared_tensions_is_named_as_unused() {
+    let dir = scratch("tension-config");
+    let cfg = dir.join("cfg.toml");
+    std::fs::write(&cfg, "ks = 1000\n").unwrap();
+    let o = run(&["speed", "--swing", "100", "--config", cfg.to_str().unwrap(), "--compare-tension-lb", "50,60"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    let notes: Vec<&str> = err.lines().filter(|l| l.contains("not used here")).collect();
+    assert_eq!(notes.len(), 1, "{err}");
+    assert!(notes[0].contains("ks (set on the command line)"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -57,6 +57,10 @@ pub struct Sources {
     /// them): it has no flag for them, and a config file's values for them are dropped
     /// ([`Sources::config`]) and named as unused ([`Sources::check_used`]).
     pub not_taken: Vec<&'static str>,
+    /// The parameter keys this run sets from the command's own options (k_s from two or more
+    /// `--compare-tension-lb` tensions, [`TENSION_SETS`]): a config file's values for them
+    /// are named as set on the command line ([`Sources::check_used`]).
+    pub set_by_options: Vec<&'static str>,
 }
 
 impl Sources {
@@ -95,7 +99,8 @@ impl Sources {
         }
         let (config, dropped) = self.config()?;
         let path = self.config.as_deref().unwrap_or(Path::new(""));
-        Ok(unused_config_note(path, &config, &self.flags.given(), &dropped, self.command, params))
+        let overridden: Vec<&str> = self.flags.given().into_iter().chain(self.set_by_options.iter().copied()).collect();
+        Ok(unused_config_note(path, &config, &overridden, &dropped, self.command, params))
     }
 }
 
