@@ -107,6 +107,14 @@ pub enum Error {
         /// The operating-system message.
         message: String,
     },
+    /// One point of a sweep failed: the error, after the point's swept values.
+    #[error("at {point}: {source}")]
+    AtPoint {
+        /// The swept values, `x = 0.1, segments = 4`.
+        point: String,
+        /// What failed there.
+        source: Box<Error>,
+    },
     /// An unknown experiment id was requested.
     #[error("unknown experiment id '{0}' (see `racket-impact figures --list`)")]
     UnknownExperiment(String),
@@ -120,6 +128,20 @@ pub enum Error {
     },
 }
 
+/// A value as a message shows it: a number to [`MESSAGE_DIGITS`] significant digits (`2.1`,
+/// not `2.0999999999999996`; an integer of up to 15 digits, a count, exactly as it is), any
+/// other text as it is.
+///
+/// [`MESSAGE_DIGITS`]: crate::params::spec::MESSAGE_DIGITS
+pub fn readable(text: &str) -> String {
+    match text.parse::<f64>() {
+        Ok(v) if v.is_finite() && (text.contains('.') || text.len() > 15) => {
+            crate::params::spec::sig(v, crate::params::spec::MESSAGE_DIGITS)
+        }
+        _ => text.to_string(),
+    }
+}
+
 /// Shorthand for `Result<T, racket_impact::Error>`.
 pub type Result<T> = std::result::Result<T, Error>;
 
@@ -131,15 +153,7 @@ impl Error {
     ///
     /// [`MESSAGE_DIGITS`]: crate::params::spec::MESSAGE_DIGITS
     pub fn invalid(field: &'static str, value: impl std::fmt::Display, allowed: impl Into<String>) -> Self {
-        let text = value.to_string();
-        let value = match text.parse::<f64>() {
-            // (an integer of up to 15 digits, a count, is shown exactly as it is)
-            Ok(v) if v.is_finite() && (text.contains('.') || text.len() > 15) => {
-                crate::params::spec::sig(v, crate::params::spec::MESSAGE_DIGITS)
-            }
-            _ => text,
-        };
-        Error::InvalidParameter { field, value, allowed: allowed.into() }
+        Error::InvalidParameter { field, value: readable(&value.to_string()), allowed: allowed.into() }
     }
 
     /// Build an [`Error::Io`] from a path and an `std::io::Error`.

@@ -22,6 +22,11 @@ fn main() -> ExitCode {
                 let _ = std::io::Write::write_all(&mut std::io::stdout(), e.to_string().as_bytes());
                 return ExitCode::SUCCESS;
             }
+            if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+                // no command at all (`racket-impact`): the help as clap lays it out, on stderr
+                let _ = e.print();
+                return ExitCode::from(2);
+            }
             // clap's message spreads over several lines (the allowed values, usage, a hint):
             // keep what names the field and the allowed values, on one line
             let text = e.render().to_string();

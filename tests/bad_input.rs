@@ -182,6 +182,8 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
         case(&["simulate", "--series", &no_dir_series], "series", true),
         case(&["simulate", "--series", &format!("{a_file}/s.csv")], "series", true),
         case(&["figures", "--only", "fig4_energy", "--out", &under_file], "out", false),
+        case(&["figures", "--only", "modes", "--out", &a_file], "invalid out", false),
+        case(&["figures", "--only", "modes", "--out", &under_file], "a_file is a file, not a directory", false),
         case(&["figures", "--only", "no_such_experiment", "--out", &s.path("figs")], "no_such_experiment", false),
         case(&["report", "--out", &no_dir_report], "out", true),
         case(&["modes", "--count", "0"], "count", true),
@@ -206,6 +208,11 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
         case(&["speed", "--swing", "30", "--compare-tension-lb", "0"], "compare-tension-lb", true),
         case(&["speed", "--swing", "30", "--compare-tension-lb", "50", "--compare-racket", "light"], "compare", false),
         case(&["speed", "--incoming", "20"], "--swing", false),
+        // what two or more compared tensions set (k_s) is not taken from a flag as well
+        case(&["speed", "--swing", "100", "--ks", "1e3", "--compare-tension-lb", "50,60"], "compare-tension-lb", false),
+        case(&["map", "--out", &s.path("t.csv"), "--ks", "1e3", "--compare-tension-lb", "50,60"], "ks", false),
+        case(&["map", "--out", &s.path("t.csv"), "--compare-tension-lb", "50,50"], "given twice", false),
+        case(&["speed", "--swing", "100", "--compare-tension-lb", "50,60,50"], "given twice", false),
         case(&["sweep", "--out", &s.path("sw.csv"), "--solver", "modal", "--grip", "hand,free"], "solver", true),
         // options a command does not use are refused, with the reason
         case(&["simulate", "--series-dt", "1e-4"], "series-dt", false),

@@ -251,3 +251,126 @@ fn a_reader_that_stops_early_ends_the_program_quietly() {
     assert!(out.status.success(), "exit {:?}: {err}", out.status.code());
     assert!(!err.contains("panicked"), "{err}");
 }
+
+/// One compared tension T sets only the second row's k_s: the first is the configuration as
+/// given, with the --ks flag (only two or more tensions refuse it, tests/bad_input.rs).
+#[test]
+fn one_compared_tension_keeps_the_given_ks_in_the_first_row() {
+    let out = run(&["speed", "--swing", "100", "--ks", "3e4", "--compare-tension-lb", "50", "--format", "csv"]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let csv = String::from_utf8(out.stdout).unwrap();
+    let ks: Vec<f64> = csv.lines().skip(1).map(|l| l.split(',').nth(3).unwrap().parse().unwrap()).collect();
+    assert_eq!(ks.len(), 2);
+    assert_relative_eq!(ks[0], 3.0e4);
+    assert_relative_eq!(ks[1], 4.0e4 * 50.0 / 60.0, max_relative = 1e-5); // (printed to 6 digits)
+}
+
+/// A sweep point that fails says which point it is, by the values of the swept keys (not the
+/// fixed ones), the first failing point in the sweep's order; one line, exit 2, no file.
+#[test]
+fn a_failing_sweep_point_is_named_by_its_swept_values() {
+    let dir = scratch("sweep-point");
+    let out = dir.join("f.csv");
+    let o = run(&[
+        "sweep",
+        "--out",
+        out.to_str().unwrap(),
+        "--solver",
+        "fd",
+        "--dt",
+        "1e-4",
+        "--x",
+        "0.1,0.2",
+        "--segments",
+        "4,39",
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.starts_with("error: at x = 0.1, segments = 4: energy not conserved"), "{err}");
+    assert!(!out.exists());
+    // a bad value found before anything runs names the point too, its values readable
+    let o = run(&["sweep", "--mu", "0:3:11", "--x", "0.1,0.2", "--angle-deg", "30"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.starts_with("error: at mu = 2.1, x = 0.1: invalid mu = 2.1: "), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// No command at all: clap's usage and command list, laid out on several lines on stderr
+/// (not flattened onto one, as an error is), exit 2.
+#[test]
+fn no_command_prints_the_help_on_several_lines() {
+    let o = bin().output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(o.stdout.is_empty());
+    assert!(err.lines().any(|l| l.starts_with("Usage: racket-impact")), "{err}");
+    assert!(err.lines().any(|l| l.trim_start().starts_with("simulate ")), "{err}");
+    assert!(err.lines().all(|l| l.len() < 200), "a line too long: {err}");
+}
+
+/// An experiment named twice with --only runs once (one progress line, its two files).
+#[test]
+fn an_experiment_given_twice_runs_once() {
+    let dir = scratch("only-twice");
+    let out = dir.join("figs");
+    let o = run(&["figures", "--only", "modes", "--only", "modes", "--out", out.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert_eq!(err.lines().filter(|l| l.starts_with("modes ")).count(), 1, "{err}");
+    let mut names: Vec<String> =
+        std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    names.sort();
+    assert_eq!(names, vec!["modes.csv", "modes.png"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Each option's help states its default once: the declaration's text carries no default of
+/// its own beside the `[default: ...]` the command line adds.
+#[test]
+fn no_option_states_its_default_twice() {
+    for command in ["simulate", "modes", "speed", "sweep", "map", "uncertainty", "figures", "report", "racket"] {
+        for flag in ["-h", "--help"] {
+            let o = run(&[command, flag]);
+            assert_eq!(o.status.code(), Some(0), "{command} {flag}");
+            let help = String::from_utf8(o.stdout).unwrap();
+            for line in help.lines() {
+                assert!(line.to_lowercase().matches("default").count() <= 1, "{command} {flag}: {line}");
+            }
+        }
+    }
+}
+
+/// A zero in JSON is printed without a sign: a stroke's params echo its zero spin as 0.0,
+/// not -0.0 (every JSON goes through render::json).
+#[test]
+fn json_prints_no_negative_zero() {
+    for args in [
+        &["speed", "--swing", "100", "--swing-path-deg", "10", "--format", "json"][..],
+        &["simulate", "--angle-deg", "30", "--format", "json"][..],
+    ] {
+        let o = run(args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}");
+        let text = String::from_utf8(o.stdout).unwrap();
+        assert!(!text.contains("-0.0,") && !text.contains("-0.0\n"), "{args:?}: {text}");
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+        assert!(v.is_object() || v.is_array());
+    }
+}
+
+/// A config file's ks, which two or more compared tensions set, is named in the one warning
+/// about unused config keys (a config file may be shared, so it is not refused as a flag is).
+#[test]
+fn a_config_ks_under_two_compared_tensions_is_named_as_unused() {
+    let dir = scratch("tension-config");
+    let cfg = dir.join("cfg.toml");
+    std::fs::write(&cfg, "ks = 1000\n").unwrap();
+    let o = run(&["speed", "--swing", "100", "--config", cfg.to_str().unwrap(), "--compare-tension-lb", "50,60"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    let notes: Vec<&str> = err.lines().filter(|l| l.contains("not used here")).collect();
+    assert_eq!(notes.len(), 1, "{err}");
+    assert!(notes[0].contains("ks (set on the command line)"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -145,6 +145,33 @@ fn a_fifo_is_written_through_and_stays_a_fifo() {
     assert_eq!(s.names(), vec!["pipe".to_string(), "regular.csv".to_string()]);
 }
 
+/// `--out /dev/stdout` with standard output a pipe (`... | cat`): the link chain ends at
+/// `/proc/self/fd/1 -> pipe:[N]`, which is not a path; the path given is opened and the file's
+/// bytes come down the pipe. A map (three files) refuses it as it refuses any device.
+#[test]
+fn standard_output_as_a_pipe_is_written_through() {
+    let s = Scratch::new("stdout-pipe");
+    let regular = s.path("regular.csv");
+    for (args, reference) in writers(Path::new("/dev/stdout")).into_iter().zip(writers(&regular)) {
+        let o = bin().args(&args).stdout(Stdio::piped()).output().unwrap();
+        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+        let r = bin().args(&reference).stdout(Stdio::null()).output().unwrap();
+        assert!(r.status.success(), "{reference:?}: {}", stderr(&r));
+        let file = std::fs::read(&regular).unwrap();
+        assert!(!file.is_empty());
+        assert!(
+            o.stdout.windows(file.len()).any(|w| w == file.as_slice()),
+            "{args:?}: the pipe did not carry the file's bytes: {}",
+            String::from_utf8_lossy(&o.stdout)
+        );
+    }
+    let o =
+        bin().args(["map", "--nx", "5", "--nr", "5", "--out", "/dev/stdout"]).stdout(Stdio::piped()).output().unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("invalid out") && stderr(&o).contains("device or pipe"), "{}", stderr(&o));
+    assert!(temp_leftovers("stdout").is_empty());
+}
+
 #[test]
 fn a_symlink_keeps_pointing_at_its_target_which_is_written() {
     let s = Scratch::new("symlink");
@@ -173,6 +200,41 @@ fn a_symlink_keeps_pointing_at_its_target_which_is_written() {
     assert!(std::fs::read(s.path("data/new.csv")).unwrap() == std::fs::read(&direct).unwrap());
     assert_eq!(names_in(&s.path("data")), vec!["new.csv".to_string(), "target.csv".to_string()]);
     assert_eq!(s.names(), vec!["dangling.csv", "data", "direct.csv", "link.csv"]);
+}
+
+/// Replacing an output keeps the permissions of the file replaced (`chmod 600 out.csv` stays
+/// 600, and a read-only 444 file stays read-only), for every writer and a map's three files.
+#[test]
+fn a_replaced_output_keeps_its_permissions() {
+    use std::os::unix::fs::PermissionsExt;
+    let s = Scratch::new("modes");
+    let mode = |p: &Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o7777;
+    for (i, wanted) in [0o640, 0o600, 0o444].into_iter().enumerate() {
+        let out = s.path("out.csv");
+        // (the slow report once)
+        for args in writers(&out).into_iter().take(if i == 0 { 3 } else { 2 }) {
+            let _ = std::fs::remove_file(&out);
+            std::fs::write(&out, "old\n").unwrap();
+            std::fs::set_permissions(&out, std::fs::Permissions::from_mode(wanted)).unwrap();
+            let o = bin().args(&args).stdout(Stdio::null()).output().unwrap();
+            assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+            assert_ne!(std::fs::read(&out).unwrap(), b"old\n", "{args:?}: not written");
+            assert_eq!(mode(&out), wanted, "{args:?}: permissions {:o}, were {wanted:o}", mode(&out));
+        }
+        let files = ["m.csv", "m.png", "m.json"].map(|n| s.path(n));
+        for f in &files {
+            let _ = std::fs::remove_file(f);
+            std::fs::write(f, "old\n").unwrap();
+            std::fs::set_permissions(f, std::fs::Permissions::from_mode(wanted)).unwrap();
+        }
+        let o = bin().args(["map", "--nx", "5", "--nr", "3", "--out"]).arg(&files[0]).output().unwrap();
+        assert!(o.status.success(), "map: {}", stderr(&o));
+        for f in &files {
+            assert_ne!(std::fs::read(f).unwrap(), b"old\n", "{}: not written", f.display());
+            assert_eq!(mode(f), wanted, "{}: permissions {:o}, were {wanted:o}", f.display(), mode(f));
+        }
+    }
+    assert_eq!(s.names(), vec!["m.csv", "m.json", "m.png", "out.csv"]);
 }
 
 #[test]

@@ -183,18 +183,25 @@ impl<K: KeySet> Common<K> {
             flags: self.overrides.0.clone(),
             command: K::COMMAND,
             not_taken: K::not_taken(),
+            set_by_options: Vec::new(),
         }
     }
 
     /// Refuse a parameter flag none of `params` uses; warn (one line) about config-file keys
     /// the command does not use.
     pub fn check_used<'a>(&self, params: impl IntoIterator<Item = &'a Params>) -> Result<()> {
-        let params: Vec<Params> = params.into_iter().copied().collect();
-        if let Some(note) = self.sources().check_used(&params)? {
-            warn(&note);
-        }
-        Ok(())
+        check_used(&self.sources(), params)
     }
+}
+
+/// [`Common::check_used`] for the parameters of `sources` (a command's own, where its options
+/// set some parameters: [`Sources::set_by_options`]).
+pub fn check_used<'a>(sources: &Sources, params: impl IntoIterator<Item = &'a Params>) -> Result<()> {
+    let params: Vec<Params> = params.into_iter().copied().collect();
+    if let Some(note) = sources.check_used(&params)? {
+        warn(&note);
+    }
+    Ok(())
 }
 
 /// A progress bar on stderr for long runs: hidden, and shown only on a terminal once the run

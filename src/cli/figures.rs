@@ -10,7 +10,7 @@ use super::common::outln;
 
 #[derive(Args, Debug)]
 pub struct FiguresArgs {
-    /// Only this experiment (repeatable); see --list
+    /// Only this experiment (repeatable; each runs once, in the order given); see --list
     #[arg(long = "only", value_name = "ID")]
     pub only: Vec<String>,
     /// Output directory (created if missing); default figures/, or figures/racket-NAME with --racket
@@ -45,7 +45,15 @@ pub fn run(a: FiguresArgs) -> Result<()> {
     let selected = if a.only.is_empty() {
         experiments::registry()
     } else {
-        a.only.iter().map(|id| experiments::find(id)).collect::<Result<Vec<_>>>()?
+        let mut selected: Vec<experiments::Experiment> = Vec::new();
+        for id in &a.only {
+            let e = experiments::find(id)?;
+            // an id given twice runs once, where it was first given
+            if !selected.iter().any(|s| s.id == e.id) {
+                selected.push(e);
+            }
+        }
+        selected
     };
     let mut ctx = experiments::Context::paper();
     let out = match &a.racket {
@@ -61,6 +69,7 @@ pub fn run(a: FiguresArgs) -> Result<()> {
         }
         None => a.out.clone().unwrap_or_else(|| PathBuf::from("figures")),
     };
+    racket_impact::render::io::check_dir_path("out", &out)?;
     racket_impact::render::io::ensure_dir(&out)?;
     for e in &selected {
         let start = std::time::Instant::now();

@@ -59,8 +59,12 @@ pub struct MapArgs {
 
 /// Check, compute, write the three files, then print the chosen format.
 pub fn run(a: MapArgs) -> Result<()> {
+    let mut sources = a.common.sources();
+    if a.compare_tension_lb.len() >= 2 {
+        sources.set_by_options.extend(racket_impact::study::TENSION_SETS);
+    }
     let request = MapRequest {
-        sources: a.common.sources(),
+        sources: sources.clone(),
         quantity: a.quantity,
         nx: a.nx,
         nr: a.nr,
@@ -79,7 +83,7 @@ pub fn run(a: MapArgs) -> Result<()> {
             p
         })
         .collect();
-    a.common.check_used(&solved)?;
+    super::common::check_used(&sources, &solved)?;
 
     let bar = Progress::new(total as u64);
     let started = bar.started;

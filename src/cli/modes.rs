@@ -37,7 +37,7 @@ pub fn run(a: ModesArgs) -> Result<()> {
                 "segments": n,
                 "params": params.racket,
             });
-            format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?)
+            racket_impact::render::json::pretty(&v)?
         }
         Format::Csv => {
             let mut s = String::from("mode,frequency_hz\n");

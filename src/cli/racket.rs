@@ -138,7 +138,7 @@ fn table_json(t: &racket_impact::render::table::Table, extra: &[(&str, serde_jso
     for (k, x) in extra {
         v[*k] = x.clone();
     }
-    Ok(format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?))
+    racket_impact::render::json::pretty(&v)
 }
 
 /// The fit report and the model's values.

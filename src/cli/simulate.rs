@@ -92,7 +92,7 @@ pub fn run(a: SimulateArgs) -> Result<()> {
                 v["spin_convention"] = racket_impact::render::impact::SIMULATE_SPIN_CONVENTION.into();
             }
             v["f1_hz"] = f1_hz.into();
-            format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?)
+            racket_impact::render::json::pretty(&v)?
         }
         Format::Csv => racket_impact::render::impact::result_csv(&params, &result),
         Format::Text => racket_impact::render::impact::result_text(&params, &result),

@@ -67,8 +67,12 @@ pub struct SpeedArgs {
 
 /// Run the comparison and print it in the chosen format.
 pub fn run(a: SpeedArgs) -> Result<()> {
+    let mut sources = a.common.sources();
+    if a.compare_tension_lb.len() >= 2 {
+        sources.set_by_options.extend(racket_impact::study::TENSION_SETS);
+    }
     let request = SpeedRequest {
-        sources: a.common.sources(),
+        sources: sources.clone(),
         swing: a.swing,
         incoming: a.incoming,
         unit: a.unit.unit(),
@@ -78,7 +82,7 @@ pub fn run(a: SpeedArgs) -> Result<()> {
         incoming_spin_rpm: a.incoming_spin_rpm,
     };
     let comparison = request.run()?;
-    a.common.check_used(comparison.rows.iter().map(|r| &r.params))?;
+    super::common::check_used(&sources, comparison.rows.iter().map(|r| &r.params))?;
     let text = match a.common.format {
         Format::Csv => comparison.table()?.to_csv(),
         Format::Json => comparison.json()?,

@@ -19,7 +19,8 @@ pub struct SweepArgs {
     /// TOML file with fixed values for any parameter (as for `simulate`)
     #[arg(long)]
     pub config: Option<PathBuf>,
-    /// Output CSV file (written atomically); standard output if absent
+    /// Output CSV file (written atomically: a new file replaces it, with its permissions; other
+    /// hard links to the old file keep the old content); standard output if absent
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// The varied parameters: --KEY SPEC pairs

@@ -68,7 +68,7 @@ declare_params! {
     /// Load rule: node (the paper's) or hat
     LOAD load: LoadRule = "load" at numerics.load,
         what "load rule", unit "", column "load", choice;
-    /// Time step, s (default: converged automatic step; must be below the stability limit)
+    /// Time step, s (must be below the stability limit)
     DT dt: f64 = "dt" at numerics.dt,
         what "time step", unit "s", column "dt_s", rule;
     /// Solver: fd (explicit time stepping, the reference) or modal (modal superposition)
@@ -83,49 +83,49 @@ declare_params! {
     /// String law: linear (the paper's) or stiffening
     STRINGS strings: StringLaw = "strings" at variants.strings,
         what "string law", unit "", column "strings", choice;
-    /// Stiffening fraction s at the stiffening deflection (0 ..= 10; default 0.10)
+    /// Stiffening fraction s at the stiffening deflection (0 ..= 10)
     STRING_STIFFENING string_stiffening: f64 = "string-stiffening" at variants.string_stiffening,
         what "string stiffening fraction", unit "", column "string_stiffening", within(0.0, 10.0);
-    /// Deflection at which the strings are stiffer by s, m (1e-4 ..= 1; default 0.04)
+    /// Deflection at which the strings are stiffer by s, m (1e-4 ..= 1)
     STIFFENING_DEFLECTION stiffening_deflection: f64 = "stiffening-deflection" at variants.stiffening_deflection,
         what "stiffening deflection", unit "m", column "stiffening_deflection_m", within(1.0e-4, 1.0);
-    /// Total hand stiffness, N/m (0 ..= 1e7; default 5e3)
+    /// Total hand stiffness, N/m (0 ..= 1e7)
     HAND_STIFFNESS hand_stiffness: f64 = "hand-stiffness" at variants.hand_stiffness,
         what "hand stiffness", unit "N/m", column "hand_stiffness_n_per_m", within(0.0, 1.0e7);
-    /// Total hand damping, N s/m (0 ..= 1e4; default 10)
+    /// Total hand damping, N s/m (0 ..= 1e4)
     HAND_DAMPING hand_damping: f64 = "hand-damping" at variants.hand_damping,
         what "hand damping", unit "N s/m", column "hand_damping_n_s_per_m", within(0.0, 1.0e4);
-    /// Grip length from the butt, m (up to half the racket; default 0.15)
+    /// Grip length from the butt, m (up to half the racket)
     GRIP_LENGTH grip_length: f64 = "grip-length" at variants.grip_length,
         what "grip length", unit "m", column "grip_length_m", rule;
-    /// Incidence angle from the string-plane normal, degrees (0 ..= 85; default 0)
+    /// Incidence angle from the string-plane normal, degrees (0 ..= 85)
     ANGLE_DEG angle_deg: f64 = "angle-deg" at oblique.angle_deg,
         what "incidence angle", unit "deg", column "angle_deg", within(0.0, 85.0), usual(0.0, 80.0);
-    /// In-plane direction of the incoming ball, degrees from the long axis towards the handle; 90 = across the face to +r (-360 ..= 360; default 0)
+    /// In-plane direction of the incoming ball, degrees from the long axis towards the handle; 90 = across the face to +r (-360 ..= 360)
     AZIMUTH_DEG azimuth_deg: f64 = "azimuth-deg" at oblique.azimuth_deg,
         what "azimuth", unit "deg", column "azimuth_deg", within(-360.0, 360.0);
-    /// Incoming spin, rpm; > 0 topspin relative to the ball's motion along the strings (-2e4 ..= 2e4; default 0)
+    /// Incoming spin, rpm; > 0 topspin relative to the ball's motion along the strings (-2e4 ..= 2e4)
     SPIN_RPM spin_rpm: f64 = "spin-rpm" at oblique.spin_rpm,
         what "incoming spin", unit "rpm", column "spin_rpm", within(-2.0e4, 2.0e4), usual(-6.0e3, 6.0e3);
-    /// Friction coefficient of ball on strings (0 ..= 2; default 0.4)
+    /// Friction coefficient of ball on strings (0 ..= 2)
     MU mu: f64 = "mu" at oblique.mu,
         what "friction coefficient", unit "", column "mu", within(0.0, 2.0), usual(0.0, 1.0);
-    /// Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9; default 2e4)
+    /// Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9)
     KT kt: f64 = "kt" at oblique.kt,
         what "tangential stiffness", unit "N/m", column "kt_n_per_m", within(1.0, 1.0e9);
-    /// Tangential contact law: elastic (default), loss, offset, bed, radius or physical (all four)
+    /// Tangential contact law: elastic, loss, offset, bed, radius or physical (all four)
     TANGENTIAL tangential: TangentialLaw = "tangential" at oblique.tangential,
         what "tangential contact law", unit "", column "tangential", choice;
-    /// String-to-string friction coefficient, for the bed mechanism (0 ..= 2; default 0.08)
+    /// String-to-string friction coefficient, for the bed mechanism (0 ..= 2)
     MU_SS mu_ss: f64 = "mu-ss" at oblique.mu_ss,
         what "string-to-string friction coefficient", unit "", column "mu_ss", within(0.0, 2.0), usual(0.0, 0.5);
-    /// The string, from data/strings: sets mu and mu-ss where the TWU database gives them (default none)
+    /// The string, from data/strings: sets mu and mu-ss where the TWU database gives them
     STRING string: StringName = "string" at oblique.string,
         what "string", unit "", column "string", choice;
-    /// Ball radius, m (1e-3 ..= 1; default 0.033)
+    /// Ball radius, m (1e-3 ..= 1)
     BALL_RADIUS ball_radius: f64 = "ball-radius" at oblique.ball_radius,
         what "ball radius", unit "m", column "ball_radius_m", within(1.0e-3, 1.0), usual(0.015, 0.05);
-    /// Ball moment of inertia over m_b R^2 (0 < alpha <= 1; default 0.55)
+    /// Ball moment of inertia over m_b R^2 (0 < alpha <= 1)
     BALL_INERTIA_FACTOR ball_inertia_factor: f64 = "ball-inertia-factor" at oblique.ball_inertia_factor,
         what "ball inertia factor", unit "", column "ball_inertia_factor", rule;
 }

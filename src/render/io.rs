@@ -3,7 +3,9 @@
 //! Every file the crate produces (CSV tables, JSON, PNG figures) is first written to a hidden
 //! temporary file ([`tempfile`], removed if dropped) next to the file it will become and then
 //! renamed over it, so a reader never sees a half-written file and an interrupted run never
-//! leaves a truncated one behind.
+//! leaves a truncated one behind. The new file takes the replaced file's permissions; being a
+//! new file, it is no longer the one other hard links to the old file name (they keep the old
+//! content), as with any atomic replace.
 //!
 //! What is at the output path decides how it is written ([`resolve`]):
 //! - nothing or a regular file: temporary file + rename;
@@ -62,6 +64,15 @@ impl Resolved {
 pub fn resolve(path: &Path) -> Result<Resolved> {
     if path.file_name().is_none() {
         return Err(Error::io(path, "not a file path (no file name)"));
+    }
+    // What the system's own link following ends at: a device, FIFO or socket is written
+    // through the path as given, whose links may pass through names that are not paths
+    // (`/dev/stdout -> /proc/self/fd/1 -> pipe:[N]`, opened by the kernel, not by name).
+    if let Ok(meta) = fs::metadata(path) {
+        let kind = meta.file_type();
+        if !kind.is_file() && !kind.is_dir() {
+            return Ok(Resolved::Through(path.to_path_buf()));
+        }
     }
     let mut at = path.to_path_buf();
     for _ in 0..40 {
@@ -124,6 +135,17 @@ fn write_through(tmp: &Path, target: &Path, shown: &Path) -> Result<()> {
         to.flush()
     })();
     copied.map_err(|e| Error::io(shown, e))
+}
+
+/// Rename the finished temporary file `tmp` over the regular file (or nothing) `target`,
+/// giving it first the permissions of the file it replaces (a `chmod 600` output stays 600;
+/// a new file keeps the temporary file's, readable by all subject to the umask).
+fn replace(tmp: NamedTempFile, target: &Path, shown: &Path) -> Result<()> {
+    if let Ok(meta) = fs::metadata(target) {
+        tmp.as_file().set_permissions(meta.permissions()).map_err(|e| Error::io(shown, e))?;
+    }
+    tmp.persist(target).map_err(|e| Error::io(shown, e.error))?;
+    Ok(())
 }
 
 /// One staged output: its temporary file, where it goes and the path the user gave.
@@ -191,7 +213,7 @@ impl Staged {
         print()?;
         for p in renamed {
             if let Resolved::File(target) = &p.target {
-                p.tmp.persist(target).map_err(|e| Error::io(&p.shown, e.error))?;
+                replace(p.tmp, target, &p.shown)?;
             }
         }
         Ok(())
@@ -289,12 +311,29 @@ impl AtomicFile {
             Some(Stream::Temp(w, target)) => {
                 let tmp = w.into_inner().map_err(|e| fail(e.into_error()))?;
                 tmp.as_file().sync_all().map_err(fail)?;
-                tmp.persist(&target).map_err(|e| fail(e.error))?;
-                Ok(())
+                replace(tmp, &target, &self.path)
             }
             Some(Stream::Through(mut w)) => w.flush().map_err(fail),
             None => Err(Error::io(&self.path, "already committed")),
         }
+    }
+}
+
+/// Refuse a directory path `dir`, the value of the option `field`, that cannot become a
+/// directory: it, or the nearest of its ancestors that exists, is not a directory (a regular
+/// file in the way). Checked before any work; creates nothing.
+pub fn check_dir_path(field: &'static str, dir: &Path) -> Result<()> {
+    let existing = dir.ancestors().find(|a| !a.as_os_str().is_empty() && fs::metadata(a).is_ok());
+    match existing {
+        Some(a) if !a.is_dir() => {
+            let why = if a == dir {
+                "is a file, not a directory (the option names the directory the files go in)".to_string()
+            } else {
+                format!("{} is a file, not a directory", a.display())
+            };
+            Err(Error::invalid(field, dir.display(), why))
+        }
+        _ => Ok(()),
     }
 }
 

@@ -10,12 +10,14 @@
 //! | [`impact`] | one impact as text, CSV and a time-series file |
 //! | [`map_files`] | the three files of a string-face map, written together |
 //! | [`io`] | atomic, deterministic file writes |
+//! | [`json`] | every JSON output: pretty, unsigned zeros |
 //!
 //! Nothing here runs a solver: the layers above compute, and hand tables and charts down.
 
 pub mod heatmap;
 pub mod impact;
 pub mod io;
+pub mod json;
 pub mod map_files;
 pub mod plot;
 pub mod table;

@@ -57,6 +57,10 @@ pub struct Sources {
     /// them): it has no flag for them, and a config file's values for them are dropped
     /// ([`Sources::config`]) and named as unused ([`Sources::check_used`]).
     pub not_taken: Vec<&'static str>,
+    /// The parameter keys this run sets from the command's own options (k_s from two or more
+    /// `--compare-tension-lb` tensions, [`TENSION_SETS`]): a config file's values for them
+    /// are named as set on the command line ([`Sources::check_used`]).
+    pub set_by_options: Vec<&'static str>,
 }
 
 impl Sources {
@@ -95,7 +99,8 @@ impl Sources {
         }
         let (config, dropped) = self.config()?;
         let path = self.config.as_deref().unwrap_or(Path::new(""));
-        Ok(unused_config_note(path, &config, &self.flags.given(), &dropped, self.command, params))
+        let overridden: Vec<&str> = self.flags.given().into_iter().chain(self.set_by_options.iter().copied()).collect();
+        Ok(unused_config_note(path, &config, &overridden, &dropped, self.command, params))
     }
 }
 
@@ -147,9 +152,14 @@ pub fn racket_label(arg: Option<&str>) -> String {
     }
 }
 
+/// The parameter keys a compared tension sets in each configuration it names (k_s =
+/// [`crate::params::ks_from_tension_lb`]).
+pub const TENSION_SETS: [&str; 1] = ["ks"];
+
 /// The comparison options of `speed` and `map`: tensions or rackets, not both; each tension in
-/// range.
-pub fn check_comparison(tensions_lb: &[f64], rackets_given: bool) -> Result<()> {
+/// range and named once; and, when every compared configuration is at a given tension (two or
+/// more tensions), no flag for what the tensions set ([`TENSION_SETS`]): no row would use it.
+pub fn check_comparison(tensions_lb: &[f64], rackets_given: bool, flags: &Overrides) -> Result<()> {
     if !tensions_lb.is_empty() && rackets_given {
         return Err(Error::invalid(
             "compare-tension-lb",
@@ -157,8 +167,30 @@ pub fn check_comparison(tensions_lb: &[f64], rackets_given: bool) -> Result<()> 
             "compare either tensions or rackets, not both",
         ));
     }
-    match tensions_lb.iter().find(|t| !(t.is_finite() && **t > 0.0 && **t <= 200.0)) {
-        Some(t) => Err(Error::invalid("compare-tension-lb", t, "tension must satisfy 0 < T <= 200 lb")),
-        None => Ok(()),
+    if let Some(t) = tensions_lb.iter().find(|t| !(t.is_finite() && **t > 0.0 && **t <= 200.0)) {
+        return Err(Error::invalid("compare-tension-lb", t, "tension must satisfy 0 < T <= 200 lb"));
     }
+    if let Some((i, t)) = tensions_lb.iter().enumerate().find(|(i, t)| tensions_lb[..*i].contains(t)) {
+        let list = tensions_lb.iter().map(f64::to_string).collect::<Vec<_>>().join(",");
+        return Err(Error::invalid(
+            "compare-tension-lb",
+            list,
+            format!("the tension {t} lb is given twice (item {}): a configuration compared with itself differs nowhere; give different tensions", i + 1),
+        ));
+    }
+    if tensions_lb.len() >= 2 {
+        let given = flags.given();
+        if let Some(key) = TENSION_SETS.iter().find(|k| given.contains(k)) {
+            let mut p = Params::default();
+            flags.apply(&mut p);
+            let value = crate::params::keys::value_text(key, &p).unwrap_or_default();
+            return Err(Error::invalid(
+                key,
+                value,
+                "not used with two or more --compare-tension-lb tensions: every compared configuration takes its k_s \
+                 from its tension (4e4 N/m * T / 60 lb); give one tension T to compare this k_s against T",
+            ));
+        }
+    }
+    Ok(())
 }

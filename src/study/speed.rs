@@ -117,7 +117,7 @@ impl SpeedRequest {
                 ),
             ));
         }
-        check_comparison(&self.compare_tension_lb, !self.compare_racket.is_empty())?;
+        check_comparison(&self.compare_tension_lb, !self.compare_racket.is_empty(), &self.sources.flags)?;
         for (field, n) in
             [("compare-tension-lb", self.compare_tension_lb.len()), ("compare-racket", self.compare_racket.len())]
         {
@@ -269,7 +269,7 @@ impl SpeedComparison {
                 v
             })
             .collect();
-        Ok(format!("{}\n", serde_json::to_string_pretty(&v).map_err(|e| Error::io("<json>", e))?))
+        crate::render::json::pretty(&v)
     }
 
     /// The comparison as text: the swing, then one line per variant.

@@ -359,7 +359,37 @@ impl Sweep {
         let total = self.len();
         limits::check_count("sweep", total as f64, MAX_POINTS, "the impacts of a sweep (the product of the counts)")?;
         let points = Points::of(self)?;
-        (0..total).into_par_iter().try_for_each(|i| points.at(i).0.validate())
+        // the first bad point in the sweep's order, so that the message is the same every run
+        let bad = (0..total).into_par_iter().find_first(|&i| points.at(i).0.validate().is_err());
+        match bad {
+            Some(i) => {
+                let (p, vals) = points.at(i);
+                p.validate().map_err(|e| self.at_point(&vals, e))
+            }
+            None => Ok(()),
+        }
+    }
+
+    /// The error `e` of the point with the swept values `vals`, saying which point it is by
+    /// the values of the keys swept over more than one value (`at x = 0.1, segments = 4:
+    /// ...`), unless the message names the point already: a bad value of the one such key, or
+    /// no such key (the command names the point).
+    fn at_point(&self, vals: &[&str], e: Error) -> Error {
+        let swept: Vec<(&Axis, &str)> =
+            self.axes.iter().zip(vals).filter(|(a, _)| a.values.len() > 1).map(|(a, v)| (a, *v)).collect();
+        let names_it = match (&e, &swept[..]) {
+            (_, []) => true,
+            (Error::InvalidParameter { field, .. }, [(axis, _)]) => {
+                keys::find(&axis.key).is_some_and(|s| s.key == *field)
+            }
+            _ => false,
+        };
+        if names_it {
+            return e;
+        }
+        let point: Vec<String> =
+            swept.iter().map(|(a, v)| format!("{} = {}", a.key, crate::error::readable(v))).collect();
+        Error::AtPoint { point: point.join(", "), source: Box::new(e) }
     }
 
     /// Run every impact in parallel chunks and hand each finished chunk's CSV rows, in order,
@@ -380,7 +410,7 @@ impl Sweep {
                 .map(|i| {
                     let (p, vals) = points.at(i);
                     // (`simulate` validates the parameters, as `point` would)
-                    let r = simulate(&p)?;
+                    let r = simulate(&p).map_err(|e| self.at_point(&vals, e))?;
                     let fixed = fixed.iter().map(|k| number_text(keys::value_number(k, &p).unwrap_or(f64::NAN)));
                     Ok(vals
                         .into_iter()
@@ -389,6 +419,9 @@ impl Sweep {
                         .chain(result_fields(&r, &p, (oblique, losses), solver_swept))
                         .collect())
                 })
+                // (the first failed point in the sweep's order: the same message every run)
+                .collect::<Vec<Result<Vec<String>>>>()
+                .into_iter()
                 .collect::<Result<_>>()?;
             sink(&rows)?;
             progress(end);

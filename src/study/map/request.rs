@@ -45,7 +45,7 @@ pub struct MapOutcome {
 impl MapOutcome {
     /// The metadata as pretty JSON with a final newline.
     pub fn json(&self) -> Result<String> {
-        Ok(format!("{}\n", serde_json::to_string_pretty(&self.metadata).map_err(|e| Error::io("<json>", e))?))
+        crate::render::json::pretty(&self.metadata)
     }
 
     /// Number of points with a re-contact after separation (in either configuration).
@@ -60,7 +60,7 @@ impl MapRequest {
     pub fn check(&self) -> Result<()> {
         check_count("nx", self.nx)?;
         check_count("nr", self.nr)?;
-        check_comparison(&self.compare_tension_lb, self.compare_racket.is_some())?;
+        check_comparison(&self.compare_tension_lb, self.compare_racket.is_some(), &self.sources.flags)?;
         if self.compare_tension_lb.len() > 2 {
             return Err(Error::invalid(
                 "compare-tension-lb",
