@@ -9,7 +9,7 @@ use racket_impact::params::keys;
 use racket_impact::params::spec::sig;
 use racket_impact::study::speed::SPEED_SETS;
 
-use super::common::{out, warn, warn_params_except, warn_squash, warn_twist, Common, Format};
+use super::common::{out, warn, warn_params_except, warn_twist, Common, Format};
 use super::overrides::SpeedKeys;
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
@@ -121,10 +121,6 @@ pub fn run(a: SpeedArgs) -> Result<()> {
         comparison.rows.iter().map(|r| r.result.theta_end_deg).max_by(|a, b| a.abs().total_cmp(&b.abs()))
     {
         warn_twist(theta);
-    }
-    // (the most compressed of the compared strokes, once)
-    if let Some(row) = comparison.rows.iter().max_by(|a, b| a.result.y0_m.total_cmp(&b.result.y0_m)) {
-        warn_squash(&row.params, row.result.y0_m);
     }
     Ok(())
 }
