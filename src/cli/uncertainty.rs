@@ -226,7 +226,7 @@ fn claims_text(rows: &[robustness::ClaimRobustness], samples: u64, seed: u32, ru
 }
 
 fn json_text(v: &serde_json::Value) -> Result<String> {
-    Ok(format!("{}\n", serde_json::to_string_pretty(v).map_err(|e| Error::io("<json>", e))?))
+    racket_impact::render::json::pretty(v)
 }
 
 /// To the file (atomically) or standard output.
