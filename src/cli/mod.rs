@@ -45,7 +45,12 @@ pub enum Command {
     /// computed at the relative speed v_in + v_racket and the racket's swing speed taken at the
     /// impact point. Text and CSV give each variant's speeds with e_A, tau and theta (a
     /// deliberate subset); --format json gives every result field of each impact, as simulate's
-    /// JSON does. Example: racket-impact speed --racket tweener --swing 100 --incoming 60
+    /// JSON does. The launch angle is taken with the face as it was at first contact: an
+    /// off-axis impact (--r) twists the face by theta (shown, and warned of beyond the small-angle
+    /// range), which the launch direction does not include, so +r and -r launch alike. At stroke
+    /// speeds the paper's soft ball (k1 = 3e4 N/m) compresses by more than its radius (y0 about
+    /// 40 mm at 160 km/h; see simulate's y0): the speeds follow the paper's model extrapolated.
+    /// Example: racket-impact speed --racket tweener --swing 100 --incoming 60
     /// --compare-tension-lb 50,60
     Speed(speed::SpeedArgs),
     /// Run the cartesian product of ranges or lists of any parameters, in parallel, as CSV
