@@ -277,4 +277,11 @@ fn numbers_in_messages_are_short_and_readable() {
     // a refused value keeps the digits that tell it from the bound beside it
     let near = stderr(&["simulate", "--x", "0.7100001"]);
     assert!(near.starts_with("error: invalid x = 0.7100001: ") && near.contains("L = 0.71 m"), "{near}");
+    // a number too small or too large for an f64 is named as written, not as 0 or inf
+    assert_eq!(
+        stderr(&["simulate", "--ks", "1e-400"]),
+        "error: invalid ks = 1e-400: is too small to represent as a number (below about 1e-308)\n"
+    );
+    let huge = stderr(&["sweep", "--ks", "2e4,1e400"]);
+    assert!(huge.starts_with("error: invalid ks = 1e400: is too large to represent"), "{huge}");
 }

@@ -177,3 +177,23 @@ fn racket_json_gives_null_for_a_missing_target() {
     }
     assert!(rows.iter().any(|r| r["rel_error"].is_number()));
 }
+
+/// `racket --help` names every key a racket file takes (the list the parser itself gives for an
+/// unknown key, for the racket and its [ball] table), so that a spec sheet can be typed in
+/// without a failed first try.
+#[test]
+fn racket_help_names_every_file_key() {
+    let help = ok(&["racket", "--help"]);
+    let dir = scratch("help-keys");
+    for (file, text) in [("racket.toml", "nosuchkey = 1\n"), ("ball.toml", "mass_g = 300\n[ball]\nnosuchkey = 1\n")] {
+        let path = dir.join(file);
+        std::fs::write(&path, text).unwrap();
+        let err = fails(&["racket", path.to_str().unwrap()]);
+        let list = err.split("expected one of").nth(1).unwrap_or_else(|| panic!("{err}"));
+        let keys: Vec<&str> = list.split('`').skip(1).step_by(2).collect();
+        assert!(keys.len() >= 3, "{err}");
+        for key in keys {
+            assert!(help.contains(key), "racket --help does not name {key}");
+        }
+    }
+}

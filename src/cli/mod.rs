@@ -38,6 +38,15 @@ pub enum Command {
     /// The paper's numbers beside ours: writes REPORT.md and prints it
     Report(report::ReportArgs),
     /// Fit a racket description (file or preset) to the model and show how well it matches
+    ///
+    /// A racket file is TOML in player units (README "Your own racket"). Keys: name; length_in
+    /// or length_cm; mass_g (strung, required); balance_cm or balance_pts_hl (head-light
+    /// points), with swingweight_kg_cm2 (about 10 cm from the butt), or neither (a uniform
+    /// beam); twistweight_kg_cm2 (required); frequency_hz or ei_n_m2; stiffness_ratio (relative
+    /// EI at tip, head end, handle start, butt); head_length_cm with head_width_cm, or
+    /// head_size_sq_in with head_aspect; handle_length_cm; one of tension_lb, tension_kg,
+    /// string_bed_n_per_m, dt_kp_cm; mu; string (a name from data/strings); and a [ball] table
+    /// with mass_g, k1_n_per_m, p.
     Racket(racket::RacketArgs),
     /// Outgoing ball speed for a swing and an incoming ball; compare tensions or rackets
     ///
