@@ -9,7 +9,7 @@ use racket_impact::experiments::robustness;
 use racket_impact::params::keys;
 use racket_impact::params::uncertainty::unusual_draws;
 use racket_impact::study::sensitivity::Design;
-use racket_impact::study::uncertainty::{few_samples, summary_json, Study, DEFAULT_SAMPLES, MIN_SAMPLES};
+use racket_impact::study::uncertainty::{few_samples, not_meaningful, summary_json, Study, DEFAULT_SAMPLES};
 use racket_impact::{Error, Result};
 
 use super::common::{out, warn, warn_params_except, Common, Format, Progress};
@@ -197,15 +197,8 @@ fn claims_text(rows: &[robustness::ClaimRobustness], samples: u64, seed: u32, ru
          {:<32} {:>10} {:>10} {:>10} {:>10}  {:<11} top inputs (total index)\n",
         "claim", "nominal", "q05", "q50", "q95", "verdict"
     );
-    if samples < MIN_SAMPLES {
-        s.insert_str(
-            s.find('\n').unwrap_or(0) + 1,
-            &format!(
-                "NOT MEANINGFUL at {samples} base samples (fewer than {MIN_SAMPLES}): q05/q95 rest on a few runs and \
-                 the indices' sampling error, of order 1/sqrt(N), is as large as the indices, so the verdicts and \
-                 indices below mean nothing\n"
-            ),
-        );
+    if let Some(line) = not_meaningful(samples) {
+        s.insert_str(s.find('\n').unwrap_or(0) + 1, &line);
     }
     for r in rows {
         let top: Vec<String> =

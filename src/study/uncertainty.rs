@@ -22,6 +22,17 @@ pub const DEFAULT_SAMPLES: u64 = 256;
 /// 2N independent runs rest on three runs or fewer beyond them.
 pub const MIN_SAMPLES: u64 = 64;
 
+/// The line a text output opens with at `samples` base samples below [`MIN_SAMPLES`] (none at
+/// or above it), ending in a newline.
+pub fn not_meaningful(samples: u64) -> Option<String> {
+    (samples < MIN_SAMPLES).then(|| {
+        format!(
+            "NOT MEANINGFUL at {samples} base samples (fewer than {MIN_SAMPLES}): q05/q95 rest on a few runs and the \
+             indices' sampling error, of order 1/sqrt(N), is as large as the indices, so the figures below mean nothing\n"
+        )
+    })
+}
+
 /// The one-line warning for a design of `samples` base samples below [`MIN_SAMPLES`] (none at
 /// or above it).
 pub fn few_samples(samples: u64) -> Option<String> {
@@ -303,15 +314,8 @@ impl Study {
             inputs.join(", "),
             100.0 * sensitivity::CONFIDENCE
         );
-        if (self.design.samples() as u64) < MIN_SAMPLES {
-            s.insert_str(
-                s.len() - 1,
-                &format!(
-                    "NOT MEANINGFUL at {} base samples (fewer than {MIN_SAMPLES}): the indices' sampling error, of \
-                     order 1/sqrt(N), is as large as the indices\n",
-                    self.design.samples()
-                ),
-            );
+        if let Some(line) = not_meaningful(self.design.samples() as u64) {
+            s.insert_str(s.len() - 1, &line);
         }
         let f = |v: f64| if v.is_finite() { sig(v, 4) } else { "-".to_string() };
         for o in outputs {
