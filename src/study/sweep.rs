@@ -76,8 +76,8 @@ pub fn parse_spec(key: &str, spec: &str) -> Result<Axis> {
         // counted before any value is made
         limits::check_count("sweep", count, limits::MAX_AXIS_VALUES, &format!("the count of --{key}"))?;
         let n = count as u64;
-        if n == 0 || !a.is_finite() || !b.is_finite() {
-            return Err(bad("count must be >= 1 and the ends finite"));
+        if !a.is_finite() || !b.is_finite() {
+            return Err(bad("the ends must be finite"));
         }
         if log && (a <= 0.0 || b <= 0.0) {
             return Err(bad("a log range needs positive ends"));
