@@ -45,8 +45,7 @@ fn make_test_without_nextest_falls_back_to_cargo_test() {
 
 #[test]
 fn make_test_uses_nextest_where_it_is_installed() {
-    let has_nextest =
-        Command::new("cargo").args(["nextest", "--version"]).output().is_ok_and(|o| o.status.success());
+    let has_nextest = Command::new("cargo").args(["nextest", "--version"]).output().is_ok_and(|o| o.status.success());
     let plan = planned(None);
     assert_eq!(plan.contains("cargo nextest run --locked --no-fail-fast"), has_nextest, "{plan}");
 }
