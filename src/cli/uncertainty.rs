@@ -7,12 +7,11 @@ use std::path::PathBuf;
 use clap::Args;
 use racket_impact::experiments::robustness;
 use racket_impact::params::keys;
-use racket_impact::params::uncertainty::unusual_draws;
 use racket_impact::study::sensitivity::Design;
 use racket_impact::study::uncertainty::{few_samples, not_meaningful, summary_json, Study, DEFAULT_SAMPLES};
 use racket_impact::{Error, Result};
 
-use super::common::{out, warn, warn_params_except, Common, Format, Progress};
+use super::common::{out, print_diagnostics, warn, Common, Format, Progress};
 use super::overrides::UncertaintyKeys;
 
 #[derive(Args, Debug)]
@@ -111,14 +110,7 @@ pub fn run(a: UncertaintyArgs) -> Result<()> {
     if let Some(line) = few_samples(samples) {
         warn(&line);
     }
-    // the base value of a drawn parameter is not used: its draws are judged instead
-    let drawn: Vec<&str> = study.inputs.iter().map(|i| i.key).collect();
-    warn_params_except([&study.base], &drawn);
-    for input in &study.inputs {
-        if let Some(line) = keys::find(input.key).and_then(|spec| unusual_draws(spec, &input.dist)) {
-            warn(&line);
-        }
-    }
+    print_diagnostics(&study.diagnostics());
     Ok(())
 }
 

@@ -137,12 +137,6 @@ pub fn face_centre_impact(params: &mut Params) {
     params.impact.r = 0.0;
 }
 
-/// One line for each parameter of `params` outside its usual range
-/// ([`ParamSpec::usual`]): valid, computed, but probably a typo or a unit slip.
-pub fn unusual(params: &Params) -> Vec<String> {
-    ALL.iter().filter_map(|spec| spec.unusual(value_number(spec.key, params)?)).collect()
-}
-
 /// Usual range of the frame's first free-free bending frequency, Hz (wooden frames about
 /// 100 Hz, stiff composite ones up to about 200 Hz; the paper's 125 Hz).
 pub const USUAL_F1_HZ: (f64, f64) = (60.0, 300.0);
