@@ -4,8 +4,8 @@
 use super::spec::{ranges, RacketSpec, BALANCE_POINT_CM, DEFAULT_HANDLE_LENGTH_CM, DEFAULT_HEAD_END_FRACTION};
 use super::spec::{DEFAULT_HEAD_ASPECT, KP_PER_CM, LB_KG, SQ_IN_CM2};
 use crate::error::{Error, Result};
+use crate::numfmt::fmt_sig;
 use crate::params::{self, Ball, Strings};
-use crate::render::table::fmt_sig;
 
 /// How the frame stiffness is given.
 #[derive(Debug, Clone, Copy)]

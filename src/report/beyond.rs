@@ -5,8 +5,9 @@
 
 use crate::error::Result;
 use crate::experiments::{validation_spin, Context, CENTRE_X};
+use crate::numfmt::fmt_sig;
 use crate::params::ks_from_tension_lb;
-use crate::render::table::{fmt_sig, Table, Value};
+use crate::render::table::{Table, Value};
 use crate::solve::simulate;
 
 /// The model on the paper's conjecture, a friction that depends on the tension

@@ -111,8 +111,8 @@ impl SpeedRequest {
                 value,
                 format!(
                     "swing + incoming (the impact speed) must satisfy {} <= swing + incoming <= {} {}",
-                    crate::params::spec::sig(lo / u.si, 3),
-                    crate::params::spec::sig(hi / u.si, 3),
+                    crate::numfmt::sig(lo / u.si, 3),
+                    crate::numfmt::sig(hi / u.si, 3),
                     u.label
                 ),
             ));
