@@ -115,6 +115,11 @@ pub enum Error {
         /// What failed there.
         source: Box<Error>,
     },
+    /// Several problems found together (a racket description checks every key before it says
+    /// what is wrong), as one line: `N problems: first; second; ...`. Its reader names the file
+    /// ([`crate::racket::RacketSpec::from_toml_bytes`]).
+    #[error("{} problems: {}", .0.len(), one_line(.0))]
+    Several(Vec<Error>),
     /// An unknown experiment id was requested.
     #[error("unknown experiment id '{0}' (see `racket-impact figures --list`)")]
     UnknownExperiment(String),
@@ -126,6 +131,11 @@ pub enum Error {
         /// The backend's message.
         message: String,
     },
+}
+
+/// The errors `errors` on one line, `first; second; ...`.
+fn one_line(errors: &[Error]) -> String {
+    errors.iter().map(ToString::to_string).collect::<Vec<_>>().join("; ")
 }
 
 /// Shorthand for `Result<T, racket_impact::Error>`.
