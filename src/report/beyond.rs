@@ -202,7 +202,7 @@ pub fn section() -> Result<String> {
          The paper leaves oblique impacts to further work. `racket-impact` adds the tangential \
          grip-slip contact of SPEC.md section 6 on the same beam, strings and ball (experiments \
          `oblique_angle`, `oblique_tension`, `topspin_forehand`, `validation_spin`), with four \
-         switchable mechanisms on top of the elastic law (`--tangential`, `model::grip`).\n",
+         switchable mechanisms on top of the elastic law (`--tangential`, `model::tangential`).\n",
     );
     s.push_str(&against_measurement()?);
     s.push_str(&conjecture()?);
