@@ -143,7 +143,7 @@ fn csv_lines(rows: &[Vec<String>]) -> Vec<u8> {
             }
             out.push(b'\n');
         } else {
-            let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(out);
+            let mut w = racket_impact::render::table::csv_writer(out);
             let _ = w.write_record(r);
             out = w.into_inner().unwrap_or_default();
         }
@@ -173,8 +173,7 @@ mod tests {
         .map(|r| r.iter().map(|f| f.to_string()).collect())
         .collect();
         // (rows of every length here: the sweep's are all as long as its header)
-        let mut w =
-            csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).flexible(true).from_writer(Vec::new());
+        let mut w = racket_impact::render::table::csv_writer(Vec::new());
         for r in &rows {
             w.write_record(r).unwrap();
         }

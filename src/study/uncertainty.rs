@@ -301,7 +301,7 @@ impl Study {
                 }
             }
         }
-        let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(Vec::new());
+        let mut w = crate::render::table::csv_writer(Vec::new());
         let _ = w.write_record(&head);
         for o in outputs {
             let s = &o.summary;
