@@ -106,5 +106,6 @@ fn chart(_: &Context, t: &Table) -> Chart {
         ],
         bands: vec![],
         vlines: vec![],
+        ..Chart::default()
     }
 }
