@@ -10,12 +10,20 @@ all: build
 build:
 	$(CARGO) build --release --locked
 
-# Doc examples first, then the whole suite under nextest, whose summary is the last line.
+# Doc examples first, then the whole suite. The runner is cargo-nextest where it is installed
+# (one process per test, and its summary is the last line; `.ci/run` installs it), else plain
+# `cargo test`, so that a machine with only the Rust toolchain needs no third command (the
+# suite passes under either; tests/makefile.rs checks that the fallback is chosen without
+# nextest on PATH).
+ifeq ($(shell $(CARGO) nextest --version >/dev/null 2>&1 && echo yes),yes)
+SUITE := $(CARGO) nextest run --locked --no-fail-fast
+else
+SUITE := $(CARGO) test --locked --no-fail-fast --lib --bins --tests
+endif
+
 test:
-	@$(CARGO) nextest --version >/dev/null 2>&1 || { \
-		echo "make test needs cargo-nextest; install it with: cargo install cargo-nextest --locked" >&2; exit 2; }
 	$(CARGO) test --locked --doc
-	$(CARGO) nextest run --locked --no-fail-fast
+	$(SUITE)
 
 # The string-face maps (CSV + PNG + JSON each; tests/map.rs checks the committed ones against
 # these lines).
@@ -32,7 +40,7 @@ report: build
 # Deliberately re-bless: regenerate figures/ and REPORT.md, then rewrite the golden snapshots
 # (review `git diff golden/ figures/ REPORT.md` afterwards).
 golden: figures
-	INSTA_UPDATE=always CI= $(CARGO) nextest run --locked --no-fail-fast
+	INSTA_UPDATE=always CI= $(SUITE)
 
 bench:
 	$(CARGO) bench --locked

@@ -12,7 +12,34 @@ mod cli;
 
 use cli::Cli;
 
+/// On SIGINT, SIGTERM or SIGHUP: remove every temporary file the command has staged (a half
+/// written `sweep --out big.csv` is a hidden `.big.csv.tmp.*` beside it) and exit with the
+/// conventional status, 128 + the signal (130, 143, 129). The handler runs on its own thread
+/// (signal-hook's iterator), so the removal is ordinary code, not async-signal-safe code; a set
+/// of outputs being renamed into place is finished first ([`racket_impact::render::temps`]).
+#[cfg(unix)]
+fn remove_staged_on_interrupt() {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    match signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) {
+        Ok(mut signals) => {
+            std::thread::spawn(move || {
+                if let Some(signal) = signals.forever().next() {
+                    racket_impact::render::temps::remove_staged();
+                    std::process::exit(128 + signal);
+                }
+            });
+        }
+        Err(e) => cli::common::stderr_line(&format!(
+            "warning: cannot handle interrupts ({e}): an interrupted run may leave temporary files"
+        )),
+    }
+}
+
+#[cfg(not(unix))]
+fn remove_staged_on_interrupt() {}
+
 fn main() -> ExitCode {
+    remove_staged_on_interrupt();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => {

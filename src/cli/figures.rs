@@ -71,10 +71,20 @@ pub fn run(a: FiguresArgs) -> Result<()> {
     };
     racket_impact::render::io::check_dir_path("out", &out)?;
     racket_impact::render::io::ensure_dir(&out)?;
+    // every destination checked before any work, every file staged, then all published
+    // together (none if any experiment fails) and only then named
+    for e in &selected {
+        for path in experiments::files(e, &out) {
+            racket_impact::render::io::check_output_dir("out", &path)?;
+        }
+    }
+    let mut staged = racket_impact::render::io::Staged::new();
+    let mut lines = Vec::new();
     for e in &selected {
         let start = std::time::Instant::now();
-        let table = experiments::run_and_write(e, &ctx, &out)?;
-        super::common::stderr_line(&format!(
+        let (table, files) = experiments::run_and_stage(e, &ctx, &out)?;
+        staged.append(files);
+        lines.push(format!(
             "{:<24} {:>4} rows  {:>6.2} s  -> {}/{}.{{csv,png}}",
             e.id,
             table.rows.len(),
@@ -82,6 +92,10 @@ pub fn run(a: FiguresArgs) -> Result<()> {
             out.display(),
             e.id
         ));
+    }
+    staged.commit()?;
+    for line in lines {
+        super::common::stderr_line(&line);
     }
     Ok(())
 }

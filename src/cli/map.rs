@@ -72,8 +72,9 @@ pub fn run(a: MapArgs) -> Result<()> {
         compare_tension_lb: a.compare_tension_lb,
     };
     request.check()?;
-    let outputs = Outputs::for_csv(&a.out.unwrap_or_else(|| request.default_csv()))?;
+    // (the inputs read first: no output may be one of them)
     let (configs, total) = request.configurations()?;
+    let outputs = Outputs::for_csv(&a.out.unwrap_or_else(|| request.default_csv()))?;
     // (as the grid's points are: off the long axis too)
     let solved: Vec<_> = configs
         .iter()

@@ -134,8 +134,14 @@ pub fn find(id: &str) -> Result<Experiment> {
     registry().into_iter().find(|e| e.id == id).ok_or_else(|| Error::UnknownExperiment(id.to_string()))
 }
 
-/// Run one experiment on `ctx` and write `<out>/<id>.csv` and `<out>/<id>.png` (atomically).
-pub fn run_and_write(exp: &Experiment, ctx: &Context, out: &Path) -> Result<Table> {
+/// The files one experiment writes in `out`: `<id>.csv` and `<id>.png`.
+pub fn files(exp: &Experiment, out: &Path) -> [std::path::PathBuf; 2] {
+    [out.join(format!("{}.csv", exp.id)), out.join(format!("{}.png", exp.id))]
+}
+
+/// Run one experiment on `ctx` and stage `<out>/<id>.csv` and `<out>/<id>.png` ([`files`]) for
+/// the caller to publish with the others it runs (all or none).
+pub fn run_and_stage(exp: &Experiment, ctx: &Context, out: &Path) -> Result<(Table, crate::render::io::Staged)> {
     let table = (exp.run)(ctx)?;
     if let Some((row, col)) = first_non_finite(&table) {
         return Err(Error::invalid(
@@ -144,15 +150,17 @@ pub fn run_and_write(exp: &Experiment, ctx: &Context, out: &Path) -> Result<Tabl
             "every number in an experiment table must be finite",
         ));
     }
-    // the table and its figure are published together, or neither
+    let [csv, png] = files(exp, out);
     let mut staged = crate::render::io::Staged::new();
-    staged.bytes(&out.join(format!("{}.csv", exp.id)), table.to_csv().as_bytes())?;
-    crate::render::plot::stage_png(
-        &mut staged,
-        exp.id,
-        &ctx.adapt((exp.chart)(ctx, &table)),
-        &out.join(format!("{}.png", exp.id)),
-    )?;
+    staged.bytes(&csv, table.to_csv().as_bytes())?;
+    crate::render::plot::stage_png(&mut staged, exp.id, &ctx.adapt((exp.chart)(ctx, &table)), &png)?;
+    Ok((table, staged))
+}
+
+/// Run one experiment on `ctx` and write `<out>/<id>.csv` and `<out>/<id>.png` (atomically,
+/// the table and its figure together or neither).
+pub fn run_and_write(exp: &Experiment, ctx: &Context, out: &Path) -> Result<Table> {
+    let (table, staged) = run_and_stage(exp, ctx, out)?;
     staged.commit()?;
     Ok(table)
 }

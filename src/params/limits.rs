@@ -13,6 +13,9 @@ pub const MAX_AXIS_VALUES: u64 = 1_000_000;
 pub const MAX_SERIES_ROWS: u64 = 1_000_000;
 /// Variants compared in one `speed` run (tensions or rackets).
 pub const MAX_COMPARED: usize = 50;
+/// Bytes of one config or racket file: a few hundred keys at most, so 1 MiB is far beyond any
+/// real one, and `--config /dev/zero` (or a file of gigabytes) is refused instead of read.
+pub const MAX_INPUT_FILE_BYTES: u64 = 1 << 20;
 
 /// Refuse a count `n` (given as a float, so that an overflowing product is caught too) above
 /// `max`, as an invalid value of `field`: "`what` must be at most `max`".

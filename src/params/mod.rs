@@ -15,6 +15,7 @@
 //! - [`oblique`]: incidence angle, azimuth, incoming spin, friction (beyond the paper).
 //! - [`spec`] and [`keys`]: what a declaration is, and the declarations.
 //! - [`overrides`]: the `--config` file.
+//! - [`inputs`]: the input files a run has read (no output may replace one).
 //! - [`limits`]: the most work a command accepts (sweep sizes, series rows, comparisons).
 //! - [`used`]: which parameters an impact reads (a value given for one it does not is refused).
 //! - [`uncertainty`]: the distribution and source of a parameter's uncertainty.
@@ -23,6 +24,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::Result;
 
+pub mod inputs;
 pub mod keys;
 pub mod limits;
 pub mod numerics;

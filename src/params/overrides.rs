@@ -46,8 +46,33 @@ fn canonical_keys(path: &std::path::Path, bytes: &[u8]) -> Result<Option<String>
 }
 
 /// The bytes of a TOML file; a file that cannot be read is an [`Error::Config`] naming it.
+///
+/// Only a regular file (or a link to one) is read, and at most
+/// [`MAX_INPUT_FILE_BYTES`](super::limits::MAX_INPUT_FILE_BYTES) of it: a device
+/// (`/dev/zero`, `/dev/urandom`) would be read without end and a FIFO with no writer would
+/// block for ever, so both are refused before the file is opened. (A FIFO is not accepted even
+/// with a writer: a config is read once, whole, before any work, and a regular file says so.)
 pub(crate) fn read_file(path: &std::path::Path) -> Result<Vec<u8>> {
-    std::fs::read(path).map_err(|e| Error::Config { path: path.into(), message: e.to_string() })
+    use std::io::Read;
+    let max = super::limits::MAX_INPUT_FILE_BYTES;
+    let err = |message: String| Error::Config { path: path.into(), message };
+    let meta = std::fs::metadata(path).map_err(|e| err(e.to_string()))?;
+    if !meta.is_file() {
+        let kind = if meta.is_dir() { "a directory" } else { "a device, FIFO or socket" };
+        return Err(err(format!("is {kind}, not a regular file (give a TOML file)")));
+    }
+    let too_big = || err(format!("is larger than {} MiB, the most a config or racket file may be", max >> 20));
+    if meta.len() > max {
+        return Err(too_big());
+    }
+    let mut bytes = Vec::new();
+    let file = std::fs::File::open(path).map_err(|e| err(e.to_string()))?;
+    file.take(max + 1).read_to_end(&mut bytes).map_err(|e| err(e.to_string()))?;
+    if bytes.len() as u64 > max {
+        return Err(too_big());
+    }
+    super::inputs::record(path);
+    Ok(bytes)
 }
 
 /// Parse a TOML file's contents (`path` only names it in errors): an empty file (told what to

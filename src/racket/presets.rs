@@ -31,11 +31,20 @@ pub fn preset(name: &str) -> Option<RacketSpec> {
 /// A preset by name, else a racket file at the path `arg`. Neither gives an error listing the
 /// presets.
 pub fn load(arg: &str) -> Result<RacketSpec> {
+    let path = Path::new(arg);
+    // (symlink_metadata: a dangling link or a FIFO is there too, and the reader says what it is)
+    let is_there = std::fs::symlink_metadata(path).is_ok();
     if let Some(spec) = preset(arg) {
+        if is_there {
+            return Err(Error::invalid(
+                "racket",
+                arg,
+                format!("names both a preset and a file here: give ./{arg} for the file, or move the file to use the preset"),
+            ));
+        }
         return Ok(spec);
     }
-    let path = Path::new(arg);
-    if path.is_file() {
+    if is_there {
         return RacketSpec::from_toml_file(path);
     }
     Err(Error::invalid(

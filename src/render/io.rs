@@ -16,11 +16,18 @@
 //! - a directory: refused.
 //!
 //! A command that writes several files and prints stages them in one [`Staged`] and publishes
-//! them around its standard output ([`Staged::publish`]): devices and FIFOs first (the writes
-//! that can fail and cannot be taken back), then the printing, then the renames of the files.
-//! So a failing output (`--series /dev/full`) fails the command before its result is printed,
-//! a failing standard output (`> /dev/full`) leaves no file, and any error before that leaves
-//! no output anywhere. (A rename can still fail halfway through, after the printing.)
+//! them all or none ([`Staged::publish`]): every destination checked again, devices and FIFOs
+//! written first (the writes that can fail and cannot be taken back), then the files renamed
+//! into place, each keeping the file it replaces until the end, then the printing (which may
+//! say "wrote ..."). A failing rename or a failing standard output (`> /dev/full`) puts back
+//! every file already replaced, so any error leaves the old outputs (a device already written
+//! cannot be taken back). The temporary files are known to [`crate::render::temps`], which an
+//! interrupt (SIGINT, SIGTERM) uses to remove them.
+//!
+//! An output is never one of the command's inputs ([`not_an_input`]): a path that is the same
+//! file as a config or racket file the command read (compared by identity, so a link or another
+//! spelling is caught too), or any path ending in `.toml` (the input format: no command writes
+//! one), is refused before any work and again when the file is staged.
 //!
 //! Why not `tempfile::NamedTempFile::persist` or `atomic-write-file` alone: both rename onto
 //! the path they are given, which replaces a symlink or a device by a regular file. They are
@@ -30,9 +37,8 @@ use std::fs::{self, File, OpenOptions};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use tempfile::NamedTempFile;
-
 use crate::error::{Error, Result};
+use crate::render::temps::{Temp, PUBLISHING};
 
 /// The directory a file at `path` lives in (`.` for a bare file name).
 fn parent_dir(path: &Path) -> &Path {
@@ -101,10 +107,27 @@ pub fn resolve(path: &Path) -> Result<Resolved> {
     Err(Error::io(path, "too many levels of symbolic links"))
 }
 
+/// Refuse an output `path` that would replace an input of this run: the same file as a config
+/// or racket file read ([`crate::params::inputs`]), or a `.toml` path (the format of those
+/// inputs, which no command writes). The reason, in words, for the caller's error.
+pub fn not_an_input(path: &Path) -> std::result::Result<(), String> {
+    if let Some(input) = crate::params::inputs::same_as_input(path) {
+        return Err(format!(
+            "is the same file as {}, an input of this command: write the output to another file",
+            input.display()
+        ));
+    }
+    if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("toml")) {
+        return Err("ends in .toml, the format of config and racket files, which no command writes:                     name the output for what it is (.csv, .json, .md)"
+            .to_string());
+    }
+    Ok(())
+}
+
 /// A new empty temporary file for the output `shown`, resolved to `target`: beside a file
 /// target (so the rename stays on one file system), in the system's temporary directory for
 /// a device. Created readable by all (subject to the umask), as a plain file would be.
-fn temp_for(target: &Resolved, shown: &Path, suffix: &str) -> Result<NamedTempFile> {
+fn temp_for(target: &Resolved, shown: &Path, suffix: &str) -> Result<Temp> {
     let (dir, name) = match target {
         Resolved::File(p) => (parent_dir(p).to_path_buf(), p.file_name()),
         Resolved::Through(p) => (std::env::temp_dir(), p.file_name()),
@@ -117,7 +140,7 @@ fn temp_for(target: &Resolved, shown: &Path, suffix: &str) -> Result<NamedTempFi
         use std::os::unix::fs::PermissionsExt;
         builder.permissions(fs::Permissions::from_mode(0o666));
     }
-    builder.tempfile_in(&dir).map_err(|e| Error::io(shown, cannot_create(&dir, &e)))
+    builder.tempfile_in(&dir).map(Temp::new).map_err(|e| Error::io(shown, cannot_create(&dir, &e)))
 }
 
 /// Why no file can be created in `dir`, in a few words (`directory d is not writable: permission
@@ -140,24 +163,62 @@ fn write_through(tmp: &Path, target: &Path, shown: &Path) -> Result<()> {
 /// Rename the finished temporary file `tmp` over the regular file (or nothing) `target`,
 /// giving it first the permissions of the file it replaces (a `chmod 600` output stays 600;
 /// a new file keeps the temporary file's, readable by all subject to the umask).
-fn replace(tmp: NamedTempFile, target: &Path, shown: &Path) -> Result<()> {
+fn replace(tmp: Temp, target: &Path, shown: &Path) -> Result<()> {
     if let Ok(meta) = fs::metadata(target) {
         tmp.as_file().set_permissions(meta.permissions()).map_err(|e| Error::io(shown, e))?;
     }
-    tmp.persist(target).map_err(|e| Error::io(shown, e.error))?;
-    Ok(())
+    tmp.persist(target).map_err(|e| Error::io(shown, e))
 }
 
 /// One staged output: its temporary file, where it goes and the path the user gave.
 struct Pending {
-    tmp: NamedTempFile,
+    tmp: Temp,
     target: Resolved,
     shown: PathBuf,
 }
 
-/// Output files staged together and published together ([`Staged::commit`]); dropped without
-/// a commit (an error, a failed print), every temporary file is removed and no output is
-/// touched.
+/// A file renamed into place, and how to take it back: the file it replaced, kept under a
+/// hidden name beside it (a hard link, or a copy where links are not possible), or nothing
+/// where there was none.
+struct Replaced {
+    target: PathBuf,
+    old: Option<Temp>,
+}
+
+impl Replaced {
+    /// Rename the staged `p` over its target `target`, keeping the file it replaces.
+    fn swap_in(p: Pending, target: &Path) -> Result<Replaced> {
+        let old = match fs::symlink_metadata(target) {
+            Ok(m) if m.file_type().is_file() => {
+                let keep = temp_for(&p.target, &p.shown, ".old")?;
+                let kept = fs::remove_file(keep.path())
+                    .and_then(|()| fs::hard_link(target, keep.path()))
+                    .or_else(|_| fs::copy(target, keep.path()).map(|_| ()));
+                kept.map_err(|e| Error::io(&p.shown, format!("cannot keep the file it replaces: {e}")))?;
+                Some(keep)
+            }
+            _ => None,
+        };
+        replace(p.tmp, target, &p.shown)?;
+        Ok(Replaced { target: target.to_path_buf(), old })
+    }
+
+    /// Put back what was there before (best effort: this runs after another error).
+    fn undo(self) {
+        match self.old {
+            Some(old) => {
+                let _ = old.persist(&self.target);
+            }
+            None => {
+                let _ = fs::remove_file(&self.target);
+            }
+        }
+    }
+}
+
+/// Output files staged together and published together, all or none ([`Staged::publish`]);
+/// dropped without a commit (an error, a failed print), every temporary file is removed and no
+/// output is touched.
 #[derive(Default)]
 pub struct Staged {
     files: Vec<Pending>,
@@ -184,6 +245,7 @@ impl Staged {
     /// Stage the file that `write` writes at the temporary path it is given (which ends in
     /// `suffix`, for writers that choose the format by extension) as the content of `path`.
     pub fn with(&mut self, path: &Path, suffix: &str, write: impl FnOnce(&Path) -> Result<()>) -> Result<()> {
+        not_an_input(path).map_err(|why| Error::io(path, why))?;
         let target = resolve(path)?;
         let tmp = temp_for(&target, path, suffix)?;
         write(tmp.path())?;
@@ -191,31 +253,65 @@ impl Staged {
         Ok(())
     }
 
-    /// Publish every staged file: devices and FIFOs are written through first (the writes that
-    /// can fail), then the files are renamed over their targets.
+    /// Move everything staged in `other` into this set (published with it).
+    pub fn append(&mut self, other: Staged) {
+        self.files.extend(other.files);
+    }
+
+    /// Publish every staged file (see [`Staged::publish`]).
     pub fn commit(self) -> Result<()> {
         self.publish(|| Ok(()))
     }
 
-    /// Publish every staged file around `print` (the command's standard output): the devices
-    /// and FIFOs are written through first, so a failing one (a full device) fails the command
-    /// before anything is printed; then `print` runs; only once it has succeeded are the files
-    /// renamed over their targets, so a failed print leaves no file (a device already written
-    /// cannot be taken back).
+    /// Publish every staged file, all or none, then run `print` (the command's standard
+    /// output, which may say what was written).
+    ///
+    /// Every destination is checked again first (a directory or a missing folder that appeared
+    /// since the files were staged fails the command before anything is replaced). Devices and
+    /// FIFOs are then written through (they cannot be taken back, so they go first: a full
+    /// device fails the command before any file is replaced). Then the files are renamed into
+    /// place, each keeping the file it replaces; if a rename fails, or `print` fails after them
+    /// (`> /dev/full`), every file already renamed is put back as it was. Only when all is done
+    /// are the kept files removed.
     pub fn publish(mut self, print: impl FnOnce() -> Result<()>) -> Result<()> {
         let files = std::mem::take(&mut self.files);
+        for p in &files {
+            not_an_input(&p.shown).map_err(|why| Error::io(&p.shown, why))?;
+            if resolve(&p.shown)? != p.target {
+                return Err(Error::io(&p.shown, "changed while the output was being prepared"));
+            }
+        }
         let (through, renamed): (Vec<Pending>, Vec<Pending>) = files.into_iter().partition(|p| p.target.is_through());
         for p in &through {
             if let Resolved::Through(target) = &p.target {
                 write_through(p.tmp.path(), target, &p.shown)?;
             }
         }
-        print()?;
-        for p in renamed {
-            if let Resolved::File(target) = &p.target {
-                replace(p.tmp, target, &p.shown)?;
+        let undo_all = |done: Vec<Replaced>| {
+            let _whole = PUBLISHING.lock().unwrap_or_else(|e| e.into_inner());
+            done.into_iter().rev().for_each(Replaced::undo);
+        };
+        let mut done = Vec::new();
+        {
+            let _whole = PUBLISHING.lock().unwrap_or_else(|e| e.into_inner());
+            for p in renamed {
+                let Resolved::File(target) = p.target.clone() else { continue };
+                match Replaced::swap_in(p, &target) {
+                    Ok(r) => done.push(r),
+                    Err(e) => {
+                        drop(_whole);
+                        undo_all(done);
+                        return Err(e);
+                    }
+                }
             }
         }
+        if let Err(e) = print() {
+            undo_all(done);
+            return Err(e);
+        }
+        // (dropping the kept files removes them)
+        drop(done);
         Ok(())
     }
 }
@@ -245,6 +341,7 @@ pub fn write_with(path: &Path, suffix: &str, write: impl FnOnce(&Path) -> Result
 /// cannot be written; creates nothing.
 pub fn check_output_dir(field: &'static str, path: &Path) -> Result<()> {
     let refuse = |why: String| Error::invalid(field, path.display(), why);
+    not_an_input(path).map_err(refuse)?;
     let dir = parent_dir(path);
     if !dir.is_dir() {
         return Err(refuse(format!("directory {} does not exist", dir.display())));
@@ -273,13 +370,14 @@ pub struct AtomicFile {
 
 /// Where an [`AtomicFile`]'s bytes go.
 enum Stream {
-    Temp(std::io::BufWriter<NamedTempFile>, PathBuf),
+    Temp(std::io::BufWriter<Temp>, PathBuf),
     Through(std::io::BufWriter<File>),
 }
 
 impl AtomicFile {
     /// Start writing `path` (its directory must exist).
     pub fn create(path: &Path) -> Result<Self> {
+        not_an_input(path).map_err(|why| Error::io(path, why))?;
         let out = match resolve(path)? {
             Resolved::Through(target) => {
                 let file = OpenOptions::new().write(true).open(&target).map_err(|e| Error::io(path, e))?;
@@ -458,6 +556,50 @@ mod tests {
         drop(staged);
         assert_eq!(fs::read(&path).unwrap(), b"old");
         assert_eq!(entries(dir.path()), vec!["out.csv".to_string()]);
+    }
+
+    #[test]
+    fn a_failed_print_puts_back_every_replaced_file() {
+        let dir = scratch();
+        let (a, b) = (dir.path().join("a.csv"), dir.path().join("b.png"));
+        fs::write(&a, b"old a").unwrap();
+        let mut staged = Staged::new();
+        staged.bytes(&a, b"new a").unwrap();
+        staged.bytes(&b, b"new b").unwrap();
+        let e = staged.publish(|| Err(Error::io("<stdout>", "No space left on device"))).unwrap_err();
+        assert!(e.to_string().contains("No space left"), "{e}");
+        assert_eq!(fs::read(&a).unwrap(), b"old a", "replaced file put back");
+        assert!(!b.exists(), "new file removed");
+        assert_eq!(entries(dir.path()), vec!["a.csv".to_string()], "no temporary or kept file left");
+        // and published, the kept files are removed
+        let mut staged = Staged::new();
+        staged.bytes(&a, b"new a").unwrap();
+        staged.bytes(&b, b"new b").unwrap();
+        staged.commit().unwrap();
+        assert_eq!((fs::read(&a).unwrap(), fs::read(&b).unwrap()), (b"new a".to_vec(), b"new b".to_vec()));
+        assert_eq!(entries(dir.path()), vec!["a.csv".to_string(), "b.png".to_string()]);
+    }
+
+    #[test]
+    fn a_destination_that_changed_fails_before_any_rename() {
+        let dir = scratch();
+        let (a, b) = (dir.path().join("a.csv"), dir.path().join("b.png"));
+        fs::write(&a, b"old a").unwrap();
+        let mut staged = Staged::new();
+        staged.bytes(&a, b"new a").unwrap();
+        staged.bytes(&b, b"new b").unwrap();
+        fs::create_dir(&b).unwrap();
+        let mut printed = false;
+        let e = staged
+            .publish(|| {
+                printed = true;
+                Ok(())
+            })
+            .unwrap_err();
+        assert!(e.to_string().contains("is a directory"), "{e}");
+        assert!(!printed, "nothing said written");
+        assert_eq!(fs::read(&a).unwrap(), b"old a");
+        assert_eq!(entries(dir.path()), vec!["a.csv".to_string(), "b.png".to_string()]);
     }
 
     #[test]

@@ -10,6 +10,7 @@
 //! | [`impact`] | one impact as text, CSV and a time-series file |
 //! | [`map_files`] | the three files of a string-face map, written together |
 //! | [`io`] | atomic, deterministic file writes |
+//! | [`temps`] | the temporary files staged, removed on an interrupt |
 //! | [`json`] | every JSON output: pretty, unsigned zeros |
 //!
 //! Nothing here runs a solver: the layers above compute, and hand tables and charts down.
@@ -21,3 +22,4 @@ pub mod json;
 pub mod map_files;
 pub mod plot;
 pub mod table;
+pub mod temps;

@@ -1,0 +1,105 @@
+//! The range grammar of a sweep: a spec is one value (`0.1`), a list (`2e4,4e4`; `node,hat` for
+//! the load rule), a linear range `start:stop:count` (both ends included) or a log range
+//! `start:stop:count:log`, expanded into one [`Axis`] of values.
+
+use crate::error::{Error, Result};
+use crate::params::{limits, Overrides};
+
+/// One varied parameter and its values (as text, parsed like a flag).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axis {
+    /// The parameter key (`x`, `ks`, ...).
+    pub key: String,
+    /// Its values.
+    pub values: Vec<String>,
+}
+
+impl Axis {
+    /// The values that bound the axis: the least and the greatest of a numeric axis (a range
+    /// may hold a million values; every one lies between these), every value of any other.
+    pub fn extremes(&self) -> Vec<&String> {
+        let numbers: Option<Vec<f64>> = self.values.iter().map(|v| v.trim().parse::<f64>().ok()).collect();
+        match numbers {
+            Some(xs) if xs.len() > 2 => {
+                let lo = (0..xs.len()).min_by(|&i, &j| xs[i].total_cmp(&xs[j])).unwrap_or(0);
+                let hi = (0..xs.len()).max_by(|&i, &j| xs[i].total_cmp(&xs[j])).unwrap_or(0);
+                vec![&self.values[lo], &self.values[hi]]
+            }
+            _ => self.values.iter().collect(),
+        }
+    }
+}
+
+/// Expand a spec into values.
+pub fn parse_spec(key: &str, spec: &str) -> Result<Axis> {
+    let bad = |why: &str| Error::invalid("sweep", format!("--{key} {spec}"), why);
+    let values = if spec.contains(':') {
+        let parts: Vec<&str> = spec.split(':').collect();
+        let log = match parts.len() {
+            3 => false,
+            4 if parts[3] == "log" => true,
+            _ => return Err(bad("a range is start:stop:count or start:stop:count:log")),
+        };
+        let a: f64 = parts[0].parse().map_err(|_| bad("start is not a number"))?;
+        let b: f64 = parts[1].parse().map_err(|_| bad("stop is not a number"))?;
+        // (a count reads as digits or as a whole number in exponent form: 50, 1e3)
+        let count: f64 = parts[2].parse().map_err(|_| bad("count is not a number"))?;
+        if !(count.is_finite() && count >= 1.0 && count.fract() == 0.0) {
+            return Err(bad("count must be a whole number >= 1 (as 50 or 1e3)"));
+        }
+        // counted before any value is made
+        limits::check_count("sweep", count, limits::MAX_AXIS_VALUES, &format!("the count of --{key}"))?;
+        let n = count as u64;
+        if !a.is_finite() || !b.is_finite() {
+            return Err(bad("the ends must be finite"));
+        }
+        if log && (a <= 0.0 || b <= 0.0) {
+            return Err(bad("a log range needs positive ends"));
+        }
+        (0..n)
+            .map(|i| {
+                let f = if n == 1 { 0.0 } else { i as f64 / (n - 1) as f64 };
+                let v = if log { 10f64.powf(a.log10() + f * (b.log10() - a.log10())) } else { a + f * (b - a) };
+                if key == "segments" {
+                    format!("{}", v.round())
+                } else {
+                    format!("{v}")
+                }
+            })
+            .collect()
+    } else {
+        spec.split(',').map(|s| s.trim().to_string()).collect::<Vec<_>>()
+    };
+    if values.iter().any(String::is_empty) {
+        return Err(bad("empty value"));
+    }
+    // parse once now so a typo fails before any impact is run
+    let mut probe = Overrides::default();
+    for v in &values {
+        probe.set(key, v)?;
+    }
+    Ok(Axis { key: key.to_string(), values })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn specs_expand_to_lists_and_ranges() {
+        assert_eq!(parse_spec("ks", "2e4,4e4").unwrap().values, vec!["2e4", "4e4"]);
+        assert_eq!(parse_spec("x", "0.1:0.3:3").unwrap().values, vec!["0.1", "0.2", "0.3"]);
+        assert_eq!(parse_spec("ks", "1e3:1e5:3:log").unwrap().values, vec!["1000", "10000", "100000"]);
+        assert_eq!(parse_spec("load", "node,hat").unwrap().values.len(), 2);
+        assert!(parse_spec("ks", "1:2").is_err());
+        assert!(parse_spec("ks", "a,b").is_err());
+        assert!(parse_spec("nope", "1").is_err());
+        assert!(parse_spec("ks", "0:1:3:log").is_err());
+        // a count in exponent form is the same count; a fractional or zero one is refused
+        assert_eq!(parse_spec("x", "0.1:0.3:3e0").unwrap().values, parse_spec("x", "0.1:0.3:3").unwrap().values);
+        assert_eq!(parse_spec("x", "0:1:1e3").unwrap().values.len(), 1000);
+        for bad in ["0.1:0.3:2.5", "0.1:0.3:0", "0.1:0.3:-3", "0.1:0.3:nan", "0.1:0.3:inf"] {
+            assert!(parse_spec("x", bad).is_err(), "{bad}");
+        }
+    }
+}

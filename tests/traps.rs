@@ -1,0 +1,309 @@
+//! The traps a hostile user found, class by class, and the tests that pin each: the one place
+//! that lists them. Each class is fixed as a class (every output path, every input reader,
+//! every list option), and each hostile case that found it is a named test.
+//!
+//! Issue 24 (first passes):
+//! 1. Outputs written, never replaced (links, devices, read-only folders): `tests/outputs.rs`.
+//! 2. Work bounded before it starts: `tests/bounds.rs`.
+//! 3-4. Every option used or refused, help as accepted: `tests/options.rs`.
+//! 5. Bad input: one line naming the field, exit 2, nothing written: `tests/bad_input.rs`.
+//! 6. One vocabulary: `tests/vocabulary.rs`.
+//! 9. The README's examples do what it says: `tests/readme.rs`.
+//!
+//! Issue 32 (third pass), in this file unless named:
+//! 1. Nothing hangs inside the documented ranges, and what runs passes the energy checks:
+//!    [`inertia_factor_1e_30_is_refused_by_every_command`],
+//!    [`tiny_inertia_factors_never_run_to_nonsense`],
+//!    [`modal_stiff_contact_is_refused_like_fd`]; the solvers' step bounds and the tangential
+//!    ledger in `tests/tangential.rs` (`every_accepted_ball_passes_the_energy_check`).
+//! 2. No output is an input: [`an_output_that_is_an_input_is_refused_before_any_work`],
+//!    [`an_output_linked_to_an_input_is_refused`], [`no_command_writes_toml`].
+//! 3. Sets of files published all or none, "wrote" said after:
+//!    [`figures_publish_all_or_none`], [`map_says_wrote_only_after_publishing`]; the rollback
+//!    in `src/render/io.rs` (`a_failed_print_puts_back_every_replaced_file`,
+//!    `a_destination_that_changed_fails_before_any_rename`).
+//! 4. An interrupted run leaves nothing: [`sigint_during_sweep_removes_its_temporary_file`],
+//!    [`sigterm_during_sweep_removes_its_temporary_file`].
+//! 5. Bounded reads: [`config_and_racket_files_must_be_regular_and_small`].
+//! 6. A property this impact does not exercise is noted, an option a method cannot honour is
+//!    refused: `tests/options.rs` and [`unused_properties_are_noted_not_refused`].
+//! 7. Small silent acceptances: [`sweep_ranges_say_what_they_run`],
+//!    [`duplicates_in_lists_are_refused`], [`series_values_too_small_are_refused_as_written`],
+//!    [`a_name_with_a_line_break_is_refused`], [`a_preset_name_shadowed_by_a_file_is_refused`],
+//!    [`an_impact_outside_the_racket_files_head_is_refused`].
+//! 8. Where to start: [`help_names_a_first_command_and_groups_options`],
+//!    [`suggestions_name_the_real_flag_or_nothing`].
+//! 9. A project others can cite: [`licence_citation_and_changelog_are_there`].
+//! 10. `make test` with only the Rust toolchain: `tests/makefile.rs`.
+
+#![cfg(unix)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_racket-impact"))
+}
+
+/// A scratch directory, removed on drop.
+struct Scratch(tempfile::TempDir);
+
+impl Scratch {
+    fn new() -> Self {
+        Scratch(tempfile::tempdir().expect("scratch dir"))
+    }
+    fn path(&self, name: &str) -> PathBuf {
+        self.0.path().join(name)
+    }
+    fn file(&self, name: &str, text: &str) -> PathBuf {
+        let p = self.path(name);
+        std::fs::write(&p, text).unwrap();
+        p
+    }
+    /// Every name in the directory (hidden temporary files too), sorted.
+    fn names(&self) -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(self.0.path())
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        v.sort();
+        v
+    }
+    /// Run the binary in this directory.
+    fn run(&self, args: &[&str]) -> Output {
+        bin().current_dir(self.0.path()).args(args).stdin(Stdio::null()).output().expect("run")
+    }
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+/// Refused: exit 2, one line on stderr containing `says`, nothing on stdout.
+#[track_caller]
+fn refused(o: &Output, says: &str) {
+    let e = stderr(o);
+    assert_eq!(o.status.code(), Some(2), "must be refused: {e}");
+    assert_eq!(e.lines().count(), 1, "one line: {e}");
+    assert!(e.contains(says), "'{says}' expected in: {e}");
+    assert!(o.stdout.is_empty(), "no output when refused: {}", stdout(o));
+}
+
+const CONFIG: &str = "ks = 3e4\n";
+const RACKET: &str = "name = \"g\"\nlength_in = 27\nmass_g = 300\nbalance_cm = 33\nswingweight_kg_cm2 = 320\n\
+                      twistweight_kg_cm2 = 14\nfrequency_hz = 130\nhead_size_sq_in = 100\ntension_lb = 55\n";
+
+// ---- 2. an output that is an input ----
+
+#[test]
+fn an_output_that_is_an_input_is_refused_before_any_work() {
+    let s = Scratch::new();
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["sweep", "--racket", "g.toml", "--out", "g.toml", "--x", "0.1"], "g.toml"),
+        (vec!["sweep", "--config", "c.toml", "--out", "./c.toml", "--x", "0.1"], "c.toml"),
+        (vec!["simulate", "--config", "c.toml", "--solver", "fd", "--series", "c.toml"], "c.toml"),
+        (
+            vec![
+                "uncertainty",
+                "--config",
+                "c.toml",
+                "--vary",
+                "v1=uniform:20:40",
+                "--samples",
+                "8",
+                "--out",
+                "c.toml",
+            ],
+            "c.toml",
+        ),
+        (vec!["map", "--config", "m.json", "--nx", "3", "--nr", "3", "--out", "m.csv"], "m.json"),
+        (vec!["map", "--racket", "h.csv", "--nx", "3", "--nr", "3", "--out", "h.csv"], "h.csv"),
+    ];
+    for (args, input) in cases {
+        s.file("c.toml", CONFIG);
+        s.file("m.json", CONFIG);
+        s.file("g.toml", RACKET);
+        s.file("h.csv", RACKET);
+        let before = std::fs::read(s.path(input)).unwrap();
+        let o = s.run(&args);
+        refused(&o, "an input of this command");
+        assert_eq!(std::fs::read(s.path(input)).unwrap(), before, "{args:?} changed {input}");
+        let left: Vec<String> = s.names().into_iter().filter(|n| n.starts_with('.')).collect();
+        assert!(left.is_empty(), "{args:?} left {left:?}");
+    }
+}
+
+#[test]
+fn an_output_linked_to_an_input_is_refused() {
+    let s = Scratch::new();
+    s.file("c.toml", CONFIG);
+    std::os::unix::fs::symlink("c.toml", s.path("out.csv")).unwrap();
+    std::fs::hard_link(s.path("c.toml"), s.path("hard.csv")).unwrap();
+    for out in ["out.csv", "hard.csv"] {
+        let o = s.run(&["sweep", "--config", "c.toml", "--out", out, "--x", "0.1"]);
+        refused(&o, "is the same file as c.toml");
+        assert_eq!(std::fs::read_to_string(s.path("c.toml")).unwrap(), CONFIG);
+    }
+    // the absolute spelling too
+    let abs = s.path("c.toml");
+    let o = s.run(&["simulate", "--config", "c.toml", "--solver", "fd", "--series", abs.to_str().unwrap()]);
+    refused(&o, "an input of this command");
+}
+
+#[test]
+fn no_command_writes_toml() {
+    let s = Scratch::new();
+    s.file("g.toml", RACKET);
+    for args in [
+        vec!["report", "--out", "g.toml"],
+        vec!["sweep", "--out", "new.toml", "--x", "0.1"],
+        vec!["simulate", "--solver", "fd", "--series", "g.toml"],
+    ] {
+        refused(&s.run(&args), ".toml");
+    }
+    assert_eq!(std::fs::read_to_string(s.path("g.toml")).unwrap(), RACKET);
+    assert!(!s.path("new.toml").exists());
+}
+
+// ---- 3. sets of files published all or none ----
+
+#[test]
+fn figures_publish_all_or_none() {
+    let s = Scratch::new();
+    std::fs::create_dir(s.path("out")).unwrap();
+    std::fs::write(s.path("out/fig4_energy.csv"), "old").unwrap();
+    // the later experiment's figure cannot be written: a directory is in its place
+    std::fs::create_dir(s.path("out/modes.png")).unwrap();
+    let o = s.run(&["figures", "--only", "fig4_energy", "--only", "modes", "--out", "out"]);
+    refused(&o, "modes.png");
+    assert!(!stderr(&o).contains("->"), "nothing said written: {}", stderr(&o));
+    assert_eq!(std::fs::read_to_string(s.path("out/fig4_energy.csv")).unwrap(), "old");
+    let mut names: Vec<String> =
+        std::fs::read_dir(s.path("out")).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into()).collect();
+    names.sort();
+    assert_eq!(names, ["fig4_energy.csv", "modes.png"]);
+    // and when every destination can be written, every file is, then named
+    std::fs::remove_dir(s.path("out/modes.png")).unwrap();
+    let o = s.run(&["figures", "--only", "fig4_energy", "--only", "modes", "--out", "out"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(stderr(&o).lines().filter(|l| l.contains("->")).count(), 2, "{}", stderr(&o));
+    for f in ["fig4_energy.csv", "fig4_energy.png", "modes.csv", "modes.png"] {
+        assert!(s.path("out").join(f).is_file(), "{f}");
+    }
+}
+
+#[test]
+fn map_says_wrote_only_after_publishing() {
+    let s = Scratch::new();
+    let o = s.run(&["map", "--nx", "3", "--nr", "3", "--out", "m.csv"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).contains("wrote m.csv, m.png, m.json"), "{}", stdout(&o));
+    // a failing standard output after the renames puts every file back as it was
+    for f in ["m.csv", "m.png", "m.json"] {
+        std::fs::write(s.path(f), "old").unwrap();
+    }
+    let full = std::fs::OpenOptions::new().write(true).open("/dev/full").unwrap();
+    let o = bin()
+        .current_dir(s.0.path())
+        .args(["map", "--nx", "3", "--nr", "3", "--out", "m.csv"])
+        .stdout(full)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    for f in ["m.csv", "m.png", "m.json"] {
+        assert_eq!(std::fs::read_to_string(s.path(f)).unwrap(), "old", "{f} put back");
+    }
+    assert_eq!(s.names(), ["m.csv", "m.json", "m.png"], "nothing left beside them");
+}
+
+// ---- 4. an interrupted run leaves nothing ----
+
+/// Start a sweep too long to finish (a million impacts) writing `big.csv`, wait until its
+/// temporary file exists, send `signal`, and check the exit status and that nothing is left.
+fn interrupt_sweep(signal: &str, status: i32) {
+    let s = Scratch::new();
+    let mut child = bin()
+        .current_dir(s.0.path())
+        .args(["sweep", "--out", "big.csv", "--x", "0.02:0.6:1000", "--ks", "1e4:6e4:1000"])
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("spawn");
+    // poll for the staged file (no clock: the loop ends when it appears or the run ends)
+    loop {
+        if s.names().iter().any(|n| n.starts_with(".big.csv.tmp.")) {
+            break;
+        }
+        if let Some(st) = child.try_wait().unwrap() {
+            panic!("the sweep ended before it was interrupted: {st}");
+        }
+        std::thread::yield_now();
+    }
+    let sent = Command::new("kill").args([&format!("-{signal}"), &child.id().to_string()]).status().unwrap();
+    assert!(sent.success());
+    let o = child.wait_with_output().unwrap();
+    assert_eq!(o.status.code(), Some(status), "{signal}: {}", stderr(&o));
+    assert!(s.names().is_empty(), "{signal} left {:?}", s.names());
+}
+
+#[test]
+fn sigint_during_sweep_removes_its_temporary_file() {
+    interrupt_sweep("INT", 130);
+}
+
+#[test]
+fn sigterm_during_sweep_removes_its_temporary_file() {
+    interrupt_sweep("TERM", 143);
+}
+
+// ---- 5. bounded reads ----
+
+#[test]
+fn config_and_racket_files_must_be_regular_and_small() {
+    let s = Scratch::new();
+    let fifo = s.path("fifo.toml");
+    assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    let big = s.path("big.toml");
+    let mut text = String::from("# padding\n");
+    while text.len() <= 1 << 20 {
+        text.push_str("# a comment line that makes the file larger than any config needs to be\n");
+    }
+    text.push_str("ks = 3e4\n");
+    std::fs::write(&big, text).unwrap();
+    for (file, says) in [
+        ("/dev/zero", "not a regular file"),
+        ("/dev/urandom", "not a regular file"),
+        ("fifo.toml", "not a regular file"),
+        ("big.toml", "MiB"),
+    ] {
+        refused(&s.run(&["simulate", "--config", file]), says);
+        refused(&s.run(&["simulate", "--racket", file]), says);
+        refused(&s.run(&["sweep", "--config", file, "--x", "0.1"]), says);
+    }
+    refused(&s.run(&["simulate", "--config", "."]), "directory");
+}
+
+// ---- 9. a project others can cite ----
+
+#[test]
+fn licence_citation_and_changelog_are_there() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let read = |f: &str| std::fs::read_to_string(root.join(f)).unwrap_or_else(|e| panic!("{f}: {e}"));
+    let cargo = read("Cargo.toml");
+    assert!(cargo.contains("license = \"MIT OR Apache-2.0\""));
+    assert!(read("LICENSE-MIT").contains("Permission is hereby granted, free of charge"));
+    assert!(read("LICENSE-APACHE").contains("Apache License") && read("LICENSE-APACHE").contains("Version 2.0"));
+    let cff = read("CITATION.cff");
+    assert!(cff.contains("cff-version: 1.2.0") && cff.contains("type: software"), "the software is cited");
+    assert!(cff.contains("Flexible beam analysis") && cff.contains("Sports Engineering"), "the paper is cited");
+    let version = cargo.lines().find(|l| l.starts_with("version")).unwrap().split('"').nth(1).unwrap();
+    assert!(cff.contains(&format!("version: {version}")), "CITATION.cff's version is Cargo.toml's");
+    let log = read("CHANGELOG.md");
+    assert!(log.contains("## Unreleased"));
+    assert!(log.contains("`v2_t` -> `v2_t_m_per_s`"), "the rename that broke scripts is recorded");
+}
