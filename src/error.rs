@@ -133,6 +133,11 @@ pub enum Error {
         /// What failed there.
         source: Box<Error>,
     },
+    /// Several problems found together (a racket description checks every key before it says
+    /// what is wrong), as one line: `N problems: first; second; ...`. Its reader names the file
+    /// ([`crate::racket::RacketSpec::from_toml_bytes`]).
+    #[error("{} problems: {}", .0.len(), one_line(.0))]
+    Several(Vec<Error>),
     /// An unknown experiment id was requested.
     #[error("unknown experiment id '{0}' (see `racket-impact figures --list`)")]
     UnknownExperiment(String),
@@ -146,18 +151,9 @@ pub enum Error {
     },
 }
 
-/// A value as a message shows it: a number to [`MESSAGE_DIGITS`] significant digits (`2.1`,
-/// not `2.0999999999999996`; an integer of up to 15 digits, a count, exactly as it is), any
-/// other text as it is.
-///
-/// [`MESSAGE_DIGITS`]: crate::params::spec::MESSAGE_DIGITS
-pub fn readable(text: &str) -> String {
-    match text.parse::<f64>() {
-        Ok(v) if v.is_finite() && (text.contains('.') || text.len() > 15) => {
-            crate::params::spec::sig(v, crate::params::spec::MESSAGE_DIGITS)
-        }
-        _ => text.to_string(),
-    }
+/// The errors `errors` on one line, `first; second; ...`.
+fn one_line(errors: &[Error]) -> String {
+    errors.iter().map(ToString::to_string).collect::<Vec<_>>().join("; ")
 }
 
 /// Shorthand for `Result<T, racket_impact::Error>`.
@@ -169,9 +165,9 @@ impl Error {
     /// with an exponent where it is very large or small (`1e30`, not 31 digits;
     /// `2.1`, not `2.0999999999999996`); any other text as it is.
     ///
-    /// [`MESSAGE_DIGITS`]: crate::params::spec::MESSAGE_DIGITS
+    /// [`MESSAGE_DIGITS`]: crate::numfmt::MESSAGE_DIGITS
     pub fn invalid(field: &'static str, value: impl std::fmt::Display, allowed: impl Into<String>) -> Self {
-        Error::InvalidParameter { field, value: readable(&value.to_string()), allowed: allowed.into() }
+        Error::InvalidParameter { field, value: crate::numfmt::shown(&value.to_string()), allowed: allowed.into() }
     }
 
     /// Build an [`Error::Io`] from a path and an `std::io::Error`.

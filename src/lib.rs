@@ -38,6 +38,9 @@
 //!                        the contact point's coupling to the frame, free vibration, closed forms
 //!         |
 //! src/params/            every parameter declared once, validation, config overrides
+//!         |
+//! src/error.rs           the crate's errors
+//! src/numfmt.rs          how numbers are written in messages and tables (imports nothing)
 //! ```
 //! Arrows point down only: nothing in `model/` or `solve/` knows of tables, plots, files or the
 //! command line.
@@ -61,6 +64,7 @@
 //! - [`render`]: result tables, the one look of every figure, heat maps, the text of one
 //!   impact, the files of a map, atomic writes.
 //! - [`report`]: the paper's numbers beside ours, collected from the experiments' claims.
+//! - [`numfmt`]: how numbers are written, in messages and in tables, for every layer.
 //!
 //! ## Example
 //! The Fig 4 impact with the paper's numerics:
@@ -83,6 +87,7 @@
 pub mod error;
 pub mod experiments;
 pub mod model;
+pub mod numfmt;
 pub mod params;
 pub mod racket;
 pub mod render;

@@ -15,7 +15,7 @@ mod robustness;
 
 use crate::error::{Error, Result};
 use crate::experiments::{self, Context, Ours, PaperClaim};
-use crate::render::table::fmt_sig;
+use crate::numfmt::fmt_sig;
 
 pub use crate::experiments::claims::{
     claims, Claim, ToleranceKind, Verdict, APPROXIMATE_REL_TOLERANCE, CLAIMS_CSV, MIN_REL_TOLERANCE,

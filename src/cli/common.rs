@@ -4,8 +4,8 @@
 use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
+use racket_impact::numfmt::sig;
 use racket_impact::params::keys;
-use racket_impact::params::spec::sig;
 use racket_impact::params::Params;
 use racket_impact::study::Sources;
 use racket_impact::{Error, Result};

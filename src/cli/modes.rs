@@ -2,7 +2,7 @@
 
 use clap::Args;
 use racket_impact::model::beam::Beam;
-use racket_impact::params::spec::sig;
+use racket_impact::numfmt::sig;
 use racket_impact::{Error, Result};
 
 use super::common::{out, warn_params, Common, Format};

@@ -1,7 +1,8 @@
 //! `racket`: fit a racket description (file or preset) to the model and show the match.
 
 use clap::Args;
-use racket_impact::params::{self, spec::sig};
+use racket_impact::numfmt::sig;
+use racket_impact::params;
 use racket_impact::racket::{self, Fitted};
 use racket_impact::{Error, Result};
 

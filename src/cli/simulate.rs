@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use racket_impact::params::spec::sig;
+use racket_impact::numfmt::sig;
 use racket_impact::solve::{Model, SeriesOptions};
 use racket_impact::{Error, Result};
 

@@ -5,8 +5,8 @@ use clap::{Args, ValueEnum};
 use racket_impact::study::speed::{SpeedRequest, SpeedUnit};
 use racket_impact::Result;
 
+use racket_impact::numfmt::sig;
 use racket_impact::params::keys;
-use racket_impact::params::spec::sig;
 use racket_impact::study::speed::SPEED_SETS;
 
 use super::common::{out, warn, warn_params_except, warn_twist, Common, Format};

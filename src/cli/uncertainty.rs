@@ -191,7 +191,7 @@ fn run_claims(a: UncertaintyArgs) -> Result<()> {
 /// One line per claim: nominal, q05-q95, verdict, the two inputs it hinges on; then the
 /// verdicts counted.
 fn claims_text(rows: &[robustness::ClaimRobustness], samples: u64, seed: u32, runs: usize) -> String {
-    use racket_impact::params::spec::sig;
+    use racket_impact::numfmt::sig;
     let mut s = format!(
         "{samples} base samples x 11 = {runs} evaluations of every claim (modal solver), seed {seed}\n\
          {:<32} {:>10} {:>10} {:>10} {:>10}  {:<11} top inputs (total index)\n",

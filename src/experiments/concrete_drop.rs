@@ -13,9 +13,10 @@ use super::{
 };
 use crate::error::Result;
 use crate::model::reduced::{concrete_drop, DropResult};
+use crate::numfmt::fmt_sig;
 use crate::params::{drop_speed, Ball, DROP_HEIGHT_100_IN};
 use crate::render::plot::{Chart, VLine};
-use crate::render::table::{fmt_sig, Table};
+use crate::render::table::Table;
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {

@@ -11,9 +11,10 @@
 
 use super::{col, fig4_energy, impact, line, paper_label, paper_list, paper_points, styled, Context, Experiment};
 use crate::error::Result;
+use crate::numfmt::fmt_sig;
 use crate::params::{LoadRule, Params};
 use crate::render::plot::{Chart, LineStyle};
-use crate::render::table::{fmt_sig, Table};
+use crate::render::table::Table;
 use crate::solve::Model;
 
 /// The registry entry.

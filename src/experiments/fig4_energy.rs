@@ -12,9 +12,10 @@ use super::{
     col, converged, impact, line, paper_label, paper_value, scaled, styled, Context, Experiment, Ours, PaperClaim,
 };
 use crate::error::Result;
+use crate::numfmt::fmt_sig;
 use crate::params::Params;
 use crate::render::plot::{Chart, Curve, LineStyle, VLine};
-use crate::render::table::{fmt_sig, Table};
+use crate::render::table::Table;
 use crate::solve::{ImpactResult, Model, SeriesOptions};
 
 /// The registry entry.

@@ -7,8 +7,8 @@
 //! is reduced.
 
 use super::off_axis::{chart, paper_gain_point, run, theta_r4};
-use super::speeds::gain_pct;
 use super::{Experiment, Ours, PaperClaim};
+use crate::solve::swing::gain_pct;
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {

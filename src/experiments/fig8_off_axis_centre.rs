@@ -7,10 +7,11 @@
 //! racket to rotate by about 10 deg"; e_A falls with r and rises when k_s is reduced.
 
 use super::off_axis::{chart, paper_gain_point, paper_theta_point, run, theta_r4};
-use super::speeds::{centre_setup, gain_pct};
+use super::speeds::centre_setup;
 use super::{Context, Experiment, Ours, PaperClaim, CENTRE_X};
 use crate::error::Result;
 use crate::params::ks_from_tension_lb;
+use crate::solve::swing::gain_pct;
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {

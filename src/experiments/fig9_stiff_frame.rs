@@ -7,9 +7,10 @@
 //! increase in serve speed".
 
 use super::fig6_string_stiffness::{stiffness_chart, stiffness_sweep, X_TIP};
-use super::speeds::{gain_pct, tip_setup};
+use super::speeds::tip_setup;
 use super::{converged, impact, paper_label, paper_list, paper_points, Context, Experiment, Ours, PaperClaim};
 use crate::error::Result;
+use crate::solve::swing::gain_pct;
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {

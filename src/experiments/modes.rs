@@ -11,9 +11,10 @@
 use super::{col, line, paper_label, paper_list, paper_value, styled, Context, Experiment, Ours, PaperClaim};
 use crate::error::Result;
 use crate::model::beam::{Beam, Modes};
+use crate::numfmt::fmt_sig;
 use crate::params::Racket;
 use crate::render::plot::{Chart, LineStyle, VLine};
-use crate::render::table::{fmt_sig, Table};
+use crate::render::table::Table;
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {

@@ -5,8 +5,8 @@
 
 use super::{col, impact, line, on_right, paper_label, paper_value, scaled, styled, sweep, Context};
 use crate::error::Result;
+use crate::numfmt::fmt_sig;
 use crate::render::plot::{Chart, Curve, LineStyle};
-use crate::render::table::fmt_sig;
 use crate::render::table::Table;
 
 /// The two string stiffnesses of Figs 7-8, N/m.

@@ -10,9 +10,9 @@ use super::{
 };
 use super::{paper_label, paper_points, paper_value};
 use crate::error::Result;
+use crate::numfmt::fmt_sig;
 use crate::params::DEFAULT_FACE_LENGTH;
 use crate::render::plot::{Band, Chart, Curve, LineStyle, VLine};
-use crate::render::table::fmt_sig;
 use crate::render::table::{Table, Value};
 use crate::solve::ImpactResult;
 

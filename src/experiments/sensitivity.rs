@@ -7,13 +7,14 @@
 
 use super::fig6_string_stiffness::X_TIP;
 use super::robustness::{context_at, inputs};
-use super::speeds::{centre_setup, gain_pct, tip_setup};
+use super::speeds::{centre_setup, tip_setup};
 use super::{impact, Context, Experiment};
 use crate::error::Result;
 use crate::params::uncertainty::Dist;
 use crate::params::SolverKind;
 use crate::render::plot::{Chart, Curve, LineStyle};
 use crate::render::table::{Table, Value};
+use crate::solve::swing::gain_pct;
 use crate::study::sensitivity::{self, Design};
 
 /// Base samples: 256 x 11 runs of the six outputs, about 1 s of CPU.

@@ -21,6 +21,7 @@ use crate::error::Result;
 use crate::params::{ks_from_tension_lb, Params};
 use crate::render::plot::{Chart, LineStyle, VLine};
 use crate::render::table::Table;
+use crate::solve::swing::gain_pct;
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {
@@ -133,19 +134,6 @@ pub fn tip_setup(ctx: &Context, ei: f64) -> Result<Setup> {
     p.impact.r = 0.04;
     p.impact.v1 = ctx.v1_off_axis();
     Ok(Setup { e_a: r.e_a, tau_s: r.tau_s, theta_deg: impact(&p)?.theta_end_deg })
-}
-
-/// The paper's frame transformation (p. 5): a ball arriving at `v_in` on a racket swung at
-/// `v_racket` (at the impact point, towards the ball) leaves at `e_A v_in + (1 + e_A) v_racket`,
-/// with `e_A` the apparent coefficient of restitution at the relative speed `v_in + v_racket`.
-/// Serve (`v_in = 0`): `(1 + e_A) v`; forehand (`v_in = v_racket = v`): `(1 + 2 e_A) v`.
-pub fn outgoing_speed(e_a: f64, v_in: f64, v_racket: f64) -> f64 {
-    e_a * v_in + (1.0 + e_a) * v_racket
-}
-
-/// Percentage change of `b` over `a`.
-pub fn gain_pct(a: f64, b: f64) -> f64 {
-    100.0 * (b / a - 1.0)
 }
 
 fn run(ctx: &Context) -> Result<Table> {

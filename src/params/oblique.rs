@@ -42,7 +42,7 @@ pub struct Oblique {
     /// 2/3).
     pub ball_inertia_factor: f64,
     /// The tangential contact law: `elastic` (the grip-slip law of `model::tangential` alone),
-    /// one mechanism of `model::grip` on top of it, or `physical` (all four). Default elastic.
+    /// one mechanism of `model::tangential` on top of it, or `physical` (all four). Default elastic.
     pub tangential: TangentialLaw,
     /// String-to-string friction coefficient (mechanism `bed`); 0..=2. Default 0.08: the
     /// middle of the string-to-string COFs of the polyester strings in the TWU string database

@@ -4,9 +4,10 @@
 use serde::{Deserialize, Serialize};
 
 use super::keys;
-use super::spec::{positive, sig, within};
+use super::spec::{positive, within};
 use super::{drop_speed, DROP_HEIGHT_100_IN};
 use crate::error::{Error, Result};
+use crate::numfmt::sig;
 
 /// Length of the string face of a racket without a head outline (the paper's), m: an ellipse
 /// this long from the tip, whose centre, 16 cm from the tip, is the paper's "centre of the

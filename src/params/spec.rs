@@ -4,6 +4,7 @@
 //! specs, the [`Overrides`](super::Overrides) struct and its key list, setter, merge and apply.
 
 use crate::error::{Error, Result};
+use crate::numfmt::{readable, sig};
 
 /// One impact parameter as the command line, the config files and the validation see it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -119,29 +120,6 @@ impl ParamSpec {
         positive(self.key, v, self.what, self.unit)
     }
 }
-
-/// `v` rounded to `digits` significant digits, in its shortest form (`36666.7`, `0.16`,
-/// `1e30`: see [`readable`]).
-pub fn sig(v: f64, digits: usize) -> String {
-    let rounded: f64 = format!("{:.*e}", digits.saturating_sub(1), v).parse().unwrap_or(v);
-    readable(rounded)
-}
-
-/// `v` as a message shows it: the shortest form that reads back as `v`, plain (`0.16`,
-/// `40000`) or, where the plain form would run to many zeros (`|v| >= 1e7` or `|v| < 1e-4`),
-/// with an exponent (`1e30`, not 31 digits; `1.5e-7`).
-pub fn readable(v: f64) -> String {
-    if v.is_finite() && v != 0.0 && (v.abs() >= 1e7 || v.abs() < 1e-4) {
-        format!("{v:e}")
-    } else {
-        v.to_string()
-    }
-}
-
-/// The digits a value in an error message is shown to ([`Error::invalid`]): enough to tell a
-/// refused value from the bound beside it, not the binary noise of a computed one
-/// (`0.30000000000000004`).
-pub const MESSAGE_DIGITS: usize = 12;
 
 /// "`what` must be a finite number > 0 `unit`", naming `field`.
 pub(crate) fn positive(field: &'static str, v: f64, what: &str, unit: &str) -> Result<()> {

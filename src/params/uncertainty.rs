@@ -44,7 +44,7 @@ impl Dist {
     /// The text form (`uniform:LO:HI`, `normal:MEAN:SD`, `loguniform:LO:HI`), numbers to six
     /// significant digits.
     pub fn text(&self) -> String {
-        use super::spec::sig;
+        use crate::numfmt::sig;
         match *self {
             Dist::Uniform { lo, hi } => format!("uniform:{}:{}", sig(lo, 6), sig(hi, 6)),
             Dist::Normal { mean, sd } => format!("normal:{}:{}", sig(mean, 6), sig(sd, 6)),
@@ -97,7 +97,7 @@ impl Dist {
     /// The values whose plausibility is judged: a uniform's or log-uniform's bounds; a normal's
     /// mean +- [`NORMAL_REACH_SD`] standard deviations. With the words saying which.
     pub fn plausibility_range(&self) -> ((f64, f64), String) {
-        use super::spec::sig;
+        use crate::numfmt::sig;
         match *self {
             Dist::Uniform { lo, hi } | Dist::LogUniform { lo, hi } => ((lo, hi), "its bounds".to_string()),
             Dist::Normal { mean, sd } => (
@@ -112,7 +112,7 @@ impl Dist {
 /// range (the range `simulate` warns with, declared with the parameter); `None` inside it or
 /// for a parameter without one.
 pub fn unusual_draws(spec: &super::spec::ParamSpec, dist: &Dist) -> Option<String> {
-    use super::spec::sig;
+    use crate::numfmt::sig;
     let (ulo, uhi) = spec.usual?;
     let ((lo, hi), which) = dist.plausibility_range();
     if lo >= ulo && hi <= uhi {

@@ -64,7 +64,7 @@ choice_enum! {
 
 choice_enum! {
     /// The tangential contact law of an oblique or spinning impact (SPEC.md section 6): the
-    /// elastic grip-slip law, one mechanism of [`crate::model::grip`] on top of it, or all four.
+    /// elastic grip-slip law, one mechanism of [`crate::model::tangential`] on top of it, or all four.
     TangentialLaw (default Elastic) {
         Elastic = "elastic": "The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the default)",
         Loss = "loss": "Elastic plus a damper on the ball's tangential spring (tangential restitution = the ball's normal one)",

@@ -4,8 +4,8 @@
 use super::spec::{ranges, RacketSpec, BALANCE_POINT_CM, DEFAULT_HANDLE_LENGTH_CM, DEFAULT_HEAD_END_FRACTION};
 use super::spec::{DEFAULT_HEAD_ASPECT, KP_PER_CM, LB_KG, SQ_IN_CM2};
 use crate::error::{Error, Result};
+use crate::numfmt::fmt_sig;
 use crate::params::{self, Ball, Strings};
-use crate::render::table::fmt_sig;
 
 /// How the frame stiffness is given.
 #[derive(Debug, Clone, Copy)]
@@ -73,22 +73,17 @@ fn required<T: Copy>(label: &'static str, keys: &[(&'static str, Option<T>)]) ->
     })
 }
 
-/// Where the problems of a racket description are reported together, before the file is known
-/// (its reader puts in the path).
-pub(super) const SEVERAL: &str = "<racket>";
-
 /// The value, or `None` with the problem kept.
 fn keep<T>(errors: &mut Vec<Error>, r: Result<T>) -> Option<T> {
     r.map_err(|e| errors.push(e)).ok()
 }
 
-/// One problem as it is; several as one line, `N problems: first; second; ...`.
+/// One problem as it is; several as [`Error::Several`] (one line, `N problems: first; ...`).
 fn combine(mut errors: Vec<Error>) -> Error {
     if errors.len() == 1 {
         return errors.remove(0);
     }
-    let lines: Vec<String> = errors.iter().map(ToString::to_string).collect();
-    Error::Config { path: SEVERAL.into(), message: format!("{} problems: {}", lines.len(), lines.join("; ")) }
+    Error::Several(errors)
 }
 
 impl RacketSpec {

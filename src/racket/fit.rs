@@ -10,8 +10,8 @@ use super::report::FitReport;
 use super::spec::{RacketSpec, SWING_AXIS_FROM_BUTT_M};
 use crate::error::{Error, Result};
 use crate::model::beam::Beam;
+use crate::numfmt::fmt_sig;
 use crate::params::{self, Ball, Profile, Racket, Strings, TILT_MAX};
-use crate::render::table::fmt_sig;
 
 /// The model's parameters fitted to a [`RacketSpec`], with the report of the fit.
 #[derive(Debug, Clone, PartialEq)]
@@ -245,8 +245,8 @@ fn fit_ei(racket: &Racket, f_hz: f64, segments: usize) -> Result<f64> {
             format!(
                 "this frequency needs EI = {} N m^2 for this mass and length, outside the model's {}..={} N m^2",
                 fmt_sig(trial.ei, 4),
-                crate::params::spec::readable(lo),
-                crate::params::spec::readable(hi)
+                crate::numfmt::readable(lo),
+                crate::numfmt::readable(hi)
             ),
         ))
     }

@@ -6,8 +6,9 @@ use std::fmt;
 use super::convert::{Resolved, Stiffness};
 use super::spec::{RacketSpec, SWING_AXIS_FROM_BUTT_M};
 use crate::model::beam::Beam;
+use crate::numfmt::fmt_sig;
 use crate::params::Racket;
-use crate::render::table::{fmt_sig, Table, Value};
+use crate::render::table::{Table, Value};
 
 /// One fitted quantity: the target in player units (absent when the spec did not state it)
 /// and the value on the discrete model, same unit.

@@ -173,8 +173,8 @@ impl RacketSpec {
         let spec: RacketSpec =
             params::parse_toml(path, bytes, "give at least length_cm, mass_g, twistweight_kg_cm2, frequency_hz")?;
         spec.validate().map_err(|e| match e {
-            crate::Error::Config { path: several, message } if several.as_os_str() == super::convert::SEVERAL => {
-                crate::Error::Config { path: path.into(), message }
+            several @ crate::Error::Several(_) => {
+                crate::Error::Config { path: path.into(), message: several.to_string() }
             }
             other => other,
         })?;

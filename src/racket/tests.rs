@@ -151,3 +151,17 @@ fn every_preset_parses_and_validates() {
         assert_eq!(s.name.as_deref(), Some(*name));
     }
 }
+
+#[test]
+fn every_problem_of_a_description_is_reported_at_once_naming_the_file() {
+    let text = "length_cm = 6860\nmass_g = 300\ntwistweight_kg_cm2 = -14\nfrequency_hz = 150\n";
+    let parsed: RacketSpec = toml::from_str(text).unwrap();
+    // the checks return the problems as a list, the reader puts in the file
+    match parsed.validate() {
+        Err(crate::Error::Several(problems)) => assert_eq!(problems.len(), 2, "{problems:?}"),
+        other => panic!("expected several problems, got {other:?}"),
+    }
+    let e = spec(text).unwrap_err().to_string();
+    assert!(e.starts_with("config file t.toml: 2 problems: invalid length_cm = 6860: "), "{e}");
+    assert!(e.contains("; invalid twistweight_kg_cm2 = -14: "), "{e}");
+}

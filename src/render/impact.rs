@@ -3,8 +3,9 @@
 use std::path::Path;
 
 use crate::error::Result;
+use crate::numfmt::fmt_sig;
 use crate::params::Params;
-use crate::render::table::{fmt_sig, Table, Value};
+use crate::render::table::{Table, Value};
 use crate::solve::outcome::TEXT_ORDER;
 use crate::solve::{ImpactResult, SeriesRow};
 

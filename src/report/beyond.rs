@@ -5,8 +5,9 @@
 
 use crate::error::Result;
 use crate::experiments::{validation_spin, Context, CENTRE_X};
+use crate::numfmt::fmt_sig;
 use crate::params::ks_from_tension_lb;
-use crate::render::table::{fmt_sig, Table, Value};
+use crate::render::table::{Table, Value};
 use crate::solve::simulate;
 
 /// The model on the paper's conjecture, a friction that depends on the tension
@@ -201,7 +202,7 @@ pub fn section() -> Result<String> {
          The paper leaves oblique impacts to further work. `racket-impact` adds the tangential \
          grip-slip contact of SPEC.md section 6 on the same beam, strings and ball (experiments \
          `oblique_angle`, `oblique_tension`, `topspin_forehand`, `validation_spin`), with four \
-         switchable mechanisms on top of the elastic law (`--tangential`, `model::grip`).\n",
+         switchable mechanisms on top of the elastic law (`--tangential`, `model::tangential`).\n",
     );
     s.push_str(&against_measurement()?);
     s.push_str(&conjecture()?);

@@ -6,8 +6,8 @@
 use crate::error::Result;
 use crate::experiments::robustness::{self, ClaimRobustness, Robust};
 use crate::experiments::Context;
+use crate::numfmt::fmt_sig;
 use crate::params::keys;
-use crate::render::table::fmt_sig;
 
 /// The paper's headline claims, quoted in the section's sentences.
 const HEADLINES: [(&str, &str); 6] = [

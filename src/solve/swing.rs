@@ -15,10 +15,26 @@
 //! An incoming ball with topspin (in its own flight) meets the strings with its front moving
 //! down: in the racket frame that is spin `-sign(b)` times it. Only the translation of the
 //! racket at the impact point is carried; its rotation over the 5 ms of contact is not.
+//!
+//! For a head-on stroke the same transformation is the paper's one line, [`outgoing_speed`]
+//! (`e_A v_in + (1 + e_A) v_racket`), which the `speed` command and the `speeds` experiment use.
 
 use crate::error::{Error, Result};
 use crate::params::Params;
 use crate::solve::{simulate, ImpactResult};
+
+/// The paper's frame transformation (p. 5): a ball arriving at `v_in` on a racket swung at
+/// `v_racket` (at the impact point, towards the ball) leaves at `e_A v_in + (1 + e_A) v_racket`,
+/// with `e_A` the apparent coefficient of restitution at the relative speed `v_in + v_racket`.
+/// Serve (`v_in = 0`): `(1 + e_A) v`; forehand (`v_in = v_racket = v`): `(1 + 2 e_A) v`.
+pub fn outgoing_speed(e_a: f64, v_in: f64, v_racket: f64) -> f64 {
+    e_a * v_in + (1.0 + e_a) * v_racket
+}
+
+/// Percentage change of `b` over `a`.
+pub fn gain_pct(a: f64, b: f64) -> f64 {
+    100.0 * (b / a - 1.0)
+}
 
 /// A stroke: the racket's motion at the impact point and the incoming ball.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -6,10 +6,9 @@
 //! impact point.
 
 use crate::error::{Error, Result};
-use crate::experiments::speeds::{gain_pct, outgoing_speed};
 use crate::params::{ks_from_tension_lb, Params};
 use crate::render::table::{Table, Value};
-use crate::solve::swing::Swing;
+use crate::solve::swing::{gain_pct, outgoing_speed, Swing};
 use crate::solve::ImpactResult;
 use crate::study::{check_comparison, Sources};
 
@@ -111,8 +110,8 @@ impl SpeedRequest {
                 value,
                 format!(
                     "swing + incoming (the impact speed) must satisfy {} <= swing + incoming <= {} {}",
-                    crate::params::spec::sig(lo / u.si, 3),
-                    crate::params::spec::sig(hi / u.si, 3),
+                    crate::numfmt::sig(lo / u.si, 3),
+                    crate::numfmt::sig(hi / u.si, 3),
                     u.label
                 ),
             ));

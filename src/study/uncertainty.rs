@@ -8,7 +8,8 @@ use serde_json::{json, Map, Value};
 
 use super::sensitivity::{self, Design, Summary};
 use crate::error::{Error, Result};
-use crate::params::spec::{readable, sig, Check, Values};
+use crate::numfmt::{exact_finite, readable, sig};
+use crate::params::spec::{Check, Values};
 use crate::params::uncertainty::Dist;
 use crate::params::{keys, Overrides, Params};
 use crate::solve::outcome::{Get, FIELDS};
@@ -284,16 +285,15 @@ impl Study {
                 }
             }
         }
-        let num = |v: f64| if v.is_finite() { ryu::Buffer::new().format(v).to_string() } else { String::new() };
         let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(Vec::new());
         let _ = w.write_record(&head);
         for o in outputs {
             let s = &o.summary;
             let mut row = vec![o.key.to_string(), o.unit.to_string()];
-            row.extend([s.mean, s.sd, s.q05, s.q50, s.q95].map(num));
+            row.extend([s.mean, s.sd, s.q05, s.q50, s.q95].map(exact_finite));
             for k in 0..self.inputs.len() {
                 for ix in [s.first[k], s.total[k]] {
-                    row.extend([ix.value, ix.lo, ix.hi].map(num));
+                    row.extend([ix.value, ix.lo, ix.hi].map(exact_finite));
                 }
             }
             let _ = w.write_record(&row);

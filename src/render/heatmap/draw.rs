@@ -10,8 +10,8 @@ use plotters::style::FontStyle;
 
 use super::{color_range, contour_levels, contour_segments, diverging, fill_rim, viridis, Row, BELOW_FLOOR};
 use super::{ColorScale, HeatMap, CONTOUR_TARGET};
+use crate::numfmt::fmt_sig;
 use crate::render::plot::{self, AXIS_DESC_SIZE, HEIGHT, TICK_SIZE, WIDTH};
-use crate::render::table::fmt_sig;
 
 /// Height of the title block (title and subtitle), pixels.
 const TITLE_AREA: u32 = 92;

@@ -17,7 +17,7 @@ use super::legend::{place_legend, Rect, ToPixel};
 use super::plan::Plan;
 use super::{font, msg, palette, tick_label, tint, title_font, Axis, Chart, LineStyle};
 use super::{AXIS_DESC_SIZE, BAND_ALPHA, BAND_COLOR, CLIPPED_NOTE, LEGEND_GLYPH, TICK_SIZE, VLINE_COLOR, VLINE_DASHES};
-use crate::render::table::fmt_sig;
+use crate::numfmt::fmt_sig;
 
 /// How much white a [`LineStyle::Faint`] curve's colour is mixed with: light enough to sit
 /// behind the main curves, dark enough (with 2 px) to read.

@@ -29,7 +29,7 @@ use plotters::prelude::*;
 use plotters::style::{register_font, FontDesc, FontFamily, FontStyle};
 
 use crate::error::{Error, Result};
-use crate::render::table::fmt_sig;
+use crate::numfmt::fmt_sig;
 use draw::draw_chart;
 pub use legend::place_legend;
 pub use plan::clipped_points;

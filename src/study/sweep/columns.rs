@@ -1,21 +1,10 @@
 //! The column layout of a sweep's CSV: the swept keys, the recorded ones, then the result
 //! fields, and each impact's row of them as text.
 
+use crate::numfmt::exact;
 use crate::params::{keys, Params};
 use crate::solve::outcome::{Field, Get, FIELDS};
 use crate::solve::ImpactResult;
-
-/// A number in its shortest exact form (`ryu`), zero of either sign as "0" as in the other
-/// tables; an undefined one (NaN: `e_t` at too little incoming slip) as an empty field.
-pub(super) fn number_text(v: f64) -> String {
-    if v.is_nan() {
-        String::new()
-    } else if v == 0.0 {
-        "0".to_string()
-    } else {
-        ryu::Buffer::new().format(v).to_string()
-    }
-}
 
 /// The parameters every sweep row records, swept or not (the impact point, the string bed and
 /// the ball speed), and for a sweep of oblique or spinning balls the incidence, azimuth, spin
@@ -57,7 +46,7 @@ pub(super) fn result_fields<'a>(
     solver_swept: bool,
 ) -> impl Iterator<Item = String> + 'a {
     let fields = swept(oblique, losses).map(move |f| match f.get {
-        Get::Number(g) => number_text(g(r)),
+        Get::Number(g) => exact(g(r)),
         Get::Flag(g) => u8::from(g(r)).to_string(),
     });
     fields.chain((!solver_swept).then(|| p.numerics.solver.name().to_string()))

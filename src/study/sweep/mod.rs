@@ -257,7 +257,7 @@ impl Sweep {
             return e;
         }
         let point: Vec<String> =
-            swept.iter().map(|(a, v)| format!("{} = {}", a.key, crate::error::readable(v))).collect();
+            swept.iter().map(|(a, v)| format!("{} = {}", a.key, crate::numfmt::shown(v))).collect();
         Error::AtPoint { point: point.join(", "), source: Box::new(e) }
     }
 }

@@ -2,7 +2,7 @@
 
 use rayon::prelude::*;
 
-use super::columns::{number_text, result_fields};
+use super::columns::result_fields;
 use super::{Sweep, MAX_POINTS};
 use crate::error::Result;
 use crate::params::{keys, limits, Overrides, Params};
@@ -31,7 +31,8 @@ impl Sweep {
                     let (p, vals) = points.at(i);
                     // (`simulate` validates the parameters, as `point` would)
                     let r = simulate(&p).map_err(|e| self.at_point(&vals, e))?;
-                    let fixed = fixed.iter().map(|k| number_text(keys::value_number(k, &p).unwrap_or(f64::NAN)));
+                    let fixed =
+                        fixed.iter().map(|k| crate::numfmt::exact(keys::value_number(k, &p).unwrap_or(f64::NAN)));
                     Ok(vals
                         .into_iter()
                         .map(str::to_string)

@@ -1,11 +1,13 @@
-//! The physical tangential contact (SPEC.md section 6, "Mechanisms"): the grip-slip law of
-//! [`crate::model::tangential`] with switchable mechanisms, each in its own file, that the
-//! elastic law leaves out:
+//! The combined law (`--tangential physical` and each mechanism alone; SPEC.md section 6,
+//! "Mechanisms"): the grip-slip law of [`super::elastic`] with switchable mechanisms, each in
+//! its own file, that the elastic law leaves out:
 //!
-//! - [`loss`]: a damper in parallel with the ball's tangential spring (tangential hysteresis);
+//! - [`loss`](super::loss): a damper in parallel with the ball's tangential spring (tangential
+//!   hysteresis);
 //! - [`offset`]: the normal force acting ahead of the ball's centre, a torque against its spin;
-//! - [`bed`]: the strings sliding sideways over each other and snapping back;
-//! - [`radius`]: the friction force acting at `R - delta`, the deformed ball's contact face.
+//! - [`bed`](super::bed): the strings sliding sideways over each other and snapping back;
+//! - [`radius`](super::radius): the friction force acting at `R - delta`, the deformed ball's
+//!   contact face.
 //!
 //! ```text
 //! ball     m_b dv/dt = -P,   I_b domega/dt = R_c P + tau,   tau = -sign(omega) d F_n  (offset,
@@ -19,24 +21,22 @@
 //! ```
 //! With every mechanism off this is the elastic law (the bed infinitely stiff, `c = 0`,
 //! `tau = 0`, `R_c = R`). The elements are massless, so each mode is a small ODE in
-//! `(v, omega, u, s, q)`; it is advanced with classical Runge-Kutta substeps inside each piece
-//! of the normal force history (a cubic, as for the elastic law), and every switch (grip/slide,
-//! stick/slide of the bed, the sign of the spin) is located by bisection on the substep. The
-//! dissipated energies are integrated with the state, so the ledger
+//! `(v, omega, u, s, q)`; it is advanced by the generic stepper (`stepper.rs`: classical
+//! Runge-Kutta substeps inside each piece of the normal force history, a cubic as for the
+//! elastic law), and every switch (grip/slide, stick/slide of the bed, the sign of the spin) is
+//! located on the substep. The dissipated energies are integrated with the state, so the ledger
 //! `KE_in = KE_out + k_t s^2/2 + k_lat q^2/2 + losses` closes to the integration error.
 
-pub mod bed;
-pub mod loss;
-pub mod offset;
-pub mod radius;
-
-use crate::model::tangential::{ForcePiece, GripSlip};
-use bed::Bed;
-use radius::Compression;
+use super::bed::Bed;
+use super::elastic::GripSlip;
+use super::offset;
+use super::piece::ForcePiece;
+use super::radius::Compression;
+use super::stepper::{self, Switched};
 
 /// The tangential contact law with its mechanisms.
 #[derive(Debug, Clone, Copy)]
-pub struct Law {
+pub struct CombinedLaw {
     /// The elastic grip-slip law underneath: friction, tangential stiffness, ball and frame.
     pub base: GripSlip,
     /// Damper in parallel with `kt`, N s/m (0: mechanism `loss` off).
@@ -51,7 +51,7 @@ pub struct Law {
     pub compression: Compression,
 }
 
-impl Law {
+impl CombinedLaw {
     /// `1 / m_red` at full radius, 1/kg.
     pub fn inv_red(&self) -> f64 {
         let b = &self.base;
@@ -113,17 +113,13 @@ struct Kin {
     capacity: f64,
 }
 
-/// Switches per piece at most (each moves on in time; the count guards rounding).
-const MAX_SWITCHES: usize = 64;
-/// Iterations at most to locate a switch time.
-const BISECTIONS: usize = 100;
 /// Substep length as a fraction of the fastest time scale of the contact.
 const SUBSTEP: f64 = 0.2;
 
-/// The physical tangential contact of one impact in progress.
+/// The combined law's tangential contact of one impact in progress.
 #[derive(Debug, Clone, Copy)]
-pub struct Contact {
-    law: Law,
+pub struct Combined {
+    law: CombinedLaw,
     y: Y,
     modes: Modes,
     /// Largest normal force so far, N.
@@ -135,17 +131,17 @@ pub struct Contact {
     started: bool,
 }
 
-impl Contact {
+impl Combined {
     /// The contact before the ball touches: ball velocity `v` and spin `omega` along `t`, the
     /// frame at rest.
-    pub fn new(law: Law, v: f64, omega: f64) -> Contact {
+    pub fn new(law: CombinedLaw, v: f64, omega: f64) -> Combined {
         let inv_red = law.inv_red();
         let mut rate = (law.base.kt * inv_red).sqrt();
         if law.damping > 0.0 {
             let k = law.base.kt + law.bed.map_or(0.0, |b| b.k_lat);
             rate = rate.max(k / law.damping);
         }
-        Contact {
+        Combined {
             law,
             y: [v, omega, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
             modes: Modes { ball: Ball::Grip, strings: Strings::Stuck, spin: 0.0 },
@@ -196,43 +192,7 @@ impl Contact {
             self.started = true;
             self.modes = self.first_modes(piece);
         }
-        let mut t = 0.0;
-        let mut switches = 0;
-        while t < piece.h {
-            let h = (piece.h - t).min(self.h_max);
-            let f_max = Peak { f_max: self.f_max, from: t };
-            let end = self.step(piece, t, &self.y, h, f_max);
-            match self.violated(piece, t + h, &end, f_max) {
-                None => {
-                    self.commit(piece, t, h, end);
-                    t += h;
-                }
-                Some(_) if switches >= MAX_SWITCHES => {
-                    self.commit(piece, t, h, end);
-                    t += h;
-                }
-                Some(first) => {
-                    // the shortest substep whose end violates a guard, to rounding
-                    let (hi, y) = self.locate(piece, t, h, f_max, first);
-                    let which = self.violated(piece, t + hi, &y, f_max);
-                    self.commit(piece, t, hi, y);
-                    t += hi;
-                    if let Some(g) = which {
-                        self.switch(g, piece, t);
-                    }
-                    switches += 1;
-                }
-            }
-        }
-    }
-
-    /// Accept a substep `[t, t + h]` ending at `y`.
-    fn commit(&mut self, piece: &ForcePiece, t: f64, h: f64, y: Y) {
-        self.y = y;
-        if matches!(self.modes.ball, Ball::Slide(_)) {
-            self.slide_time += h;
-        }
-        self.f_max = Peak { f_max: self.f_max, from: t }.at(piece, t + h);
+        stepper::advance(self, piece);
     }
 
     /// The modes at first contact (`F_n = 0`): the ball slides with its slip unless the spring
@@ -292,6 +252,22 @@ impl Contact {
         };
         Kin { p, sdot, qdot, w, lever, torque, capacity }
     }
+}
+
+impl Switched<9, 3> for Combined {
+    type Frozen = Peak;
+
+    fn state(&self) -> &Y {
+        &self.y
+    }
+
+    fn max_substep(&self) -> f64 {
+        self.h_max
+    }
+
+    fn frozen(&self, _piece: &ForcePiece, t: f64) -> Peak {
+        Peak { f_max: self.f_max, from: t }
+    }
 
     /// The rates of the state.
     fn rates(&self, piece: &ForcePiece, t: f64, y: &Y, peak: Peak) -> Y {
@@ -319,16 +295,6 @@ impl Contact {
         ]
     }
 
-    /// One classical Runge-Kutta step of length `h` from `(t, y)`.
-    fn step(&self, piece: &ForcePiece, t: f64, y: &Y, h: f64, peak: Peak) -> Y {
-        let add = |a: &Y, b: &Y, s: f64| -> Y { std::array::from_fn(|i| a[i] + s * b[i]) };
-        let k1 = self.rates(piece, t, y, peak);
-        let k2 = self.rates(piece, t + 0.5 * h, &add(y, &k1, 0.5 * h), peak);
-        let k3 = self.rates(piece, t + 0.5 * h, &add(y, &k2, 0.5 * h), peak);
-        let k4 = self.rates(piece, t + h, &add(y, &k3, h), peak);
-        std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
-    }
-
     /// The guards of the current modes at state `y` and time `t`, each non-negative while its
     /// mode lasts (infinite where it does not apply): 0 the ball's grip or slide, 1 the
     /// strings' stick or slide, 2 the sign of the spin (or its hold at zero) while the offset
@@ -354,61 +320,13 @@ impl Contact {
         [ball, strings, spin]
     }
 
-    /// The first guard the state `y` at `t` violates, if any ([`Self::guards`]).
-    fn violated(&self, piece: &ForcePiece, t: f64, y: &Y, peak: Peak) -> Option<usize> {
-        self.guards(piece, t, y, peak).iter().position(|&g| g < 0.0)
-    }
-
-    /// The earliest time in `(0, h]` after `t` at which a guard fails (one fails at `h`), to
-    /// rounding: the Illinois variant of regula falsi on the guard that fails, restarted on
-    /// any guard that fails earlier. Returns the time and the state there.
-    fn locate(&self, piece: &ForcePiece, t: f64, h: f64, peak: Peak, first: usize) -> (f64, Y) {
-        let start = self.guards(piece, t, &self.y, peak);
-        let (mut g, mut lo, mut hi) = (first, 0.0, h);
-        let mut at_hi = self.step(piece, t, &self.y, h, peak);
-        for _ in 0..MAX_SWITCHES {
-            let value = |tau: f64, y: &Y| self.guards(piece, t + tau, y, peak)[g];
-            let (mut a, mut fa) = (lo, start[g].max(0.0));
-            if a > 0.0 {
-                fa = value(a, &self.step(piece, t, &self.y, a, peak)).max(0.0);
-            }
-            let (mut b, mut fb) = (hi, value(hi, &at_hi));
-            let mut side = 0;
-            for _ in 0..BISECTIONS {
-                if b - a <= 1e-13 * h {
-                    break;
-                }
-                let mut c = (a * fb - b * fa) / (fb - fa);
-                if !(c > a && c < b) {
-                    c = 0.5 * (a + b);
-                }
-                let y = self.step(piece, t, &self.y, c, peak);
-                let fc = value(c, &y);
-                if fc < 0.0 {
-                    (b, fb, at_hi) = (c, fc, y);
-                    if side == -1 {
-                        fa *= 0.5;
-                    }
-                    side = -1;
-                } else {
-                    (a, fa) = (c, fc);
-                    if side == 1 {
-                        fb *= 0.5;
-                    }
-                    side = 1;
-                }
-            }
-            // another guard failing before this one's root takes over
-            let y = self.step(piece, t, &self.y, a, peak);
-            match self.violated(piece, t + a, &y, peak) {
-                Some(other) if a > 0.0 => {
-                    (g, hi, at_hi) = (other, a, y);
-                    lo = 0.0;
-                }
-                _ => return (b, at_hi),
-            }
+    /// Accept a substep `[t, t + h]` ending at `y`.
+    fn commit(&mut self, piece: &ForcePiece, t: f64, h: f64, y: Y) {
+        self.y = y;
+        if matches!(self.modes.ball, Ball::Slide(_)) {
+            self.slide_time += h;
         }
-        (hi, at_hi)
+        self.f_max = Peak { f_max: self.f_max, from: t }.at(piece, t + h);
     }
 
     /// Change the mode whose guard `g` failed, at `t`.
@@ -437,9 +355,9 @@ impl Contact {
 
 /// The largest normal force up to a time: the largest before a substep and the piece's own
 /// maximum from the substep's start on (the ball's compression follows its expansion branch
-/// after the peak, [`radius::Compression::delta`]).
+/// after the peak, [`Compression::delta`]).
 #[derive(Debug, Clone, Copy)]
-struct Peak {
+pub(super) struct Peak {
     /// Largest force before `from`, N.
     f_max: f64,
     /// Start of the substep, s into the piece.
@@ -468,6 +386,7 @@ fn sign0(x: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::tangential::loss;
 
     /// A smooth single-hump normal force of about 1 kN over 5 ms cut into `n` Hermite pieces.
     fn cut(n: usize) -> Vec<ForcePiece> {
@@ -483,9 +402,9 @@ mod tests {
             .collect()
     }
 
-    fn law(damping: bool, offset: bool, bed: bool, shrink: bool) -> Law {
+    fn law(damping: bool, offset: bool, bed: bool, shrink: bool) -> CombinedLaw {
         let (mb, r) = (0.057, 0.033);
-        let mut law = Law {
+        let mut law = CombinedLaw {
             base: GripSlip { mu: 0.45, kt: 2e4, mb, radius: r, inertia: 0.55 * mb * r * r, racket_inv_mass: 2.0 },
             damping: 0.0,
             offset_loss: if offset { 0.44 } else { 0.0 },
@@ -499,8 +418,8 @@ mod tests {
         law
     }
 
-    fn run(law: Law, v: f64, omega: f64, pieces: &[ForcePiece]) -> Contact {
-        let mut c = Contact::new(law, v, omega);
+    fn run(law: CombinedLaw, v: f64, omega: f64, pieces: &[ForcePiece]) -> Combined {
+        let mut c = Combined::new(law, v, omega);
         for p in pieces {
             c.advance(p);
         }

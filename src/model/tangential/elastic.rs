@@ -1,5 +1,5 @@
-//! Oblique impacts: the tangential grip-slip contact of the ball on the strings, driven by the
-//! normal force (SPEC.md section 6).
+//! The elastic law (`--tangential elastic`): the tangential grip-slip contact of the ball on the
+//! strings, driven by the normal force (SPEC.md section 6), advanced in closed form.
 //!
 //! ```text
 //! ball        m_b dv_t/dt = F_t,   I_b domega/dt = -R F_t,   I_b = alpha m_b R^2
@@ -36,6 +36,8 @@
 //! during the impact (a few centimetres at 30 m/s) is not followed, and the normal force acts
 //! through the ball's centre (no rolling resistance).
 
+use super::piece::ForcePiece;
+
 /// The tangential contact law of one impact.
 #[derive(Debug, Clone, Copy)]
 pub struct GripSlip {
@@ -64,7 +66,7 @@ pub enum Mode {
 
 /// The tangential state, with the impulse from which the ball and frame velocities follow.
 #[derive(Debug, Clone, Copy)]
-pub struct Tangential {
+pub struct Elastic {
     /// The law.
     law: GripSlip,
     /// `1 / m_red`, 1/kg.
@@ -87,79 +89,17 @@ pub struct Tangential {
     started: bool,
 }
 
-/// One piece of the normal force history: `F_n(t0 + tau) = a0 + a1 tau + a2 tau^2 + a3 tau^3`
-/// for `0 <= tau <= h`.
-#[derive(Debug, Clone, Copy)]
-pub struct ForcePiece {
-    /// Length, s.
-    pub h: f64,
-    /// Monomial coefficients.
-    pub a: [f64; 4],
-}
-
-impl ForcePiece {
-    /// The cubic through the force `f0, f1` and its rate `d0, d1` at both ends of a step `h`.
-    pub fn hermite(h: f64, (f0, d0): (f64, f64), (f1, d1): (f64, f64)) -> Self {
-        let a2 = (3.0 * (f1 - f0) - h * (2.0 * d0 + d1)) / (h * h);
-        let a3 = (2.0 * (f0 - f1) + h * (d0 + d1)) / (h * h * h);
-        ForcePiece { h, a: [f0, d0, a2, a3] }
-    }
-
-    /// The force at `tau`.
-    pub fn force(&self, t: f64) -> f64 {
-        let a = &self.a;
-        a[0] + t * (a[1] + t * (a[2] + t * a[3]))
-    }
-
-    /// Its rate at `tau`.
-    pub fn rate(&self, t: f64) -> f64 {
-        let a = &self.a;
-        a[1] + t * (2.0 * a[2] + t * 3.0 * a[3])
-    }
-
-    /// The smallest force over `[t0, t1]`: at an end or where the rate vanishes inside.
-    pub fn min_force(&self, t0: f64, t1: f64) -> f64 {
-        let mut least = self.force(t0).min(self.force(t1));
-        // rate a1 + 2 a2 t + 3 a3 t^2 = 0
-        let (a, b, c) = (3.0 * self.a[3], 2.0 * self.a[2], self.a[1]);
-        let mut consider = |t: f64| {
-            if t > t0 && t < t1 {
-                least = least.min(self.force(t));
-            }
-        };
-        if a == 0.0 {
-            if b != 0.0 {
-                consider(-c / b);
-            }
-        } else {
-            let disc = b * b - 4.0 * a * c;
-            if disc >= 0.0 {
-                let r = disc.sqrt();
-                consider((-b - r) / (2.0 * a));
-                consider((-b + r) / (2.0 * a));
-            }
-        }
-        least
-    }
-
-    /// Its integral from 0 to `tau`.
-    pub fn integral(&self, t: f64) -> f64 {
-        let a = &self.a;
-        t * (a[0] + t * (a[1] / 2.0 + t * (a[2] / 3.0 + t * a[3] / 4.0)))
-    }
-}
-
 /// Samples per piece in the search for a switch (plus one per radian of the grip oscillation).
 const SAMPLES: usize = 8;
 /// Bisection steps for a switch time (the piece length over 2^60: rounding level).
 const BISECTIONS: usize = 60;
 
-impl Tangential {
+impl Elastic {
     /// The state before contact, for a ball whose contact point slips at `w0` (m/s) relative to
     /// the strings.
     pub fn new(law: GripSlip, w0: f64) -> Self {
         let inv_red = 1.0 / law.mb + law.radius * law.radius / law.inertia + law.racket_inv_mass;
-        Tangential {
+        Elastic {
             law,
             inv_red,
             omega_grip: (law.kt * inv_red).sqrt(),
@@ -362,8 +302,8 @@ mod tests {
         GripSlip { mu, kt, mb, radius: r, inertia: 0.55 * mb * r * r, racket_inv_mass: 0.0 }
     }
 
-    fn run(law: GripSlip, w0: f64, pieces: &[ForcePiece]) -> Tangential {
-        let mut t = Tangential::new(law, w0);
+    fn run(law: GripSlip, w0: f64, pieces: &[ForcePiece]) -> Elastic {
+        let mut t = Elastic::new(law, w0);
         for p in pieces {
             t.advance(p);
         }
@@ -415,26 +355,6 @@ mod tests {
         let t = run(ball(0.0, 1e5), 4.0, &pieces);
         assert_eq!(t.impulse, 0.0);
         assert_eq!(t.friction_loss, 0.0);
-    }
-
-    #[test]
-    fn smallest_force_of_a_piece_matches_fine_sampling() {
-        let pieces = [
-            ForcePiece { h: 2.0, a: [1.0, -3.0, 0.5, 0.7] },
-            ForcePiece { h: 1.0, a: [0.0, 2.0, -1.0, 0.0] },
-            ForcePiece { h: 1.0, a: [5.0, 0.0, 0.0, 0.0] },
-            ForcePiece { h: 3.0, a: [-1.0, 4.0, -3.0, 0.6] },
-        ];
-        for p in pieces {
-            for (t0, t1) in [(0.0, p.h), (0.3, p.h), (0.1, 0.2 * p.h)] {
-                let sampled = (0..=100_000).map(|i| p.force(t0 + (t1 - t0) * i as f64 / 1e5)).fold(f64::MAX, f64::min);
-                let least = p.min_force(t0, t1);
-                assert!(
-                    least <= sampled + 1e-12 && least >= sampled - 1e-8,
-                    "{p:?} [{t0}, {t1}]: {least} vs {sampled}"
-                );
-            }
-        }
     }
 
     /// The same cubic force cut into 1, 7 or 50 pieces gives the same result: the switches are

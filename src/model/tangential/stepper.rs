@@ -1,0 +1,159 @@
+//! The stepper of a switched ODE driven by the normal force: a law whose state `y` follows
+//! `dy/dt = f_mode(t, y)` in each of its modes and switches mode where one of its guards
+//! `g_mode(t, y)` (non-negative while the mode lasts) turns negative. Each piece of the normal
+//! force history ([`ForcePiece`]) is crossed in classical Runge-Kutta substeps no longer than
+//! the law's own limit; a substep that ends with a guard violated is cut back to the switch
+//! time, found to rounding by the Illinois variant of regula falsi on the substep (restarted on
+//! any guard that fails earlier), and the law changes the mode whose guard failed there.
+//!
+//! The law supplies its rates, its guards and what happens at a switch ([`Switched`]); this
+//! file knows nothing of balls or strings.
+
+use super::piece::ForcePiece;
+
+/// Switches per piece at most (each moves on in time; the count guards rounding).
+const MAX_SWITCHES: usize = 64;
+/// Iterations at most to locate a switch time.
+const BISECTIONS: usize = 100;
+
+/// A switched law of `N` state variables with `G` guards.
+pub(super) trait Switched<const N: usize, const G: usize> {
+    /// What the law holds fixed over one substep (set at its start).
+    type Frozen: Copy;
+
+    /// The state now.
+    fn state(&self) -> &[f64; N];
+    /// The longest substep, s.
+    fn max_substep(&self) -> f64;
+    /// What is held fixed over a substep that starts at `t` (s into the piece).
+    fn frozen(&self, piece: &ForcePiece, t: f64) -> Self::Frozen;
+    /// The rates of the state `y` at `t` in the current modes.
+    fn rates(&self, piece: &ForcePiece, t: f64, y: &[f64; N], frozen: Self::Frozen) -> [f64; N];
+    /// The guards of the current modes at `(t, y)`, each non-negative while its mode lasts
+    /// (infinite where it does not apply).
+    fn guards(&self, piece: &ForcePiece, t: f64, y: &[f64; N], frozen: Self::Frozen) -> [f64; G];
+    /// Accept the substep `[t, t + h]` ending at `y`.
+    fn commit(&mut self, piece: &ForcePiece, t: f64, h: f64, y: [f64; N]);
+    /// Change the mode whose guard `g` failed, at `t`.
+    fn switch(&mut self, g: usize, piece: &ForcePiece, t: f64);
+}
+
+/// Advance the law over one piece of the normal force history.
+pub(super) fn advance<L: Switched<N, G>, const N: usize, const G: usize>(law: &mut L, piece: &ForcePiece) {
+    let mut t = 0.0;
+    let mut switches = 0;
+    while t < piece.h {
+        let h = (piece.h - t).min(law.max_substep());
+        let frozen = law.frozen(piece, t);
+        let end = step(law, piece, t, law.state(), h, frozen);
+        match violated(law, piece, t + h, &end, frozen) {
+            None => {
+                law.commit(piece, t, h, end);
+                t += h;
+            }
+            Some(_) if switches >= MAX_SWITCHES => {
+                law.commit(piece, t, h, end);
+                t += h;
+            }
+            Some(first) => {
+                // the shortest substep whose end violates a guard, to rounding
+                let (hi, y) = locate(law, piece, t, h, frozen, first);
+                let which = violated(law, piece, t + hi, &y, frozen);
+                law.commit(piece, t, hi, y);
+                t += hi;
+                if let Some(g) = which {
+                    law.switch(g, piece, t);
+                }
+                switches += 1;
+            }
+        }
+    }
+}
+
+/// One classical Runge-Kutta step of length `h` from `(t, y)`.
+fn step<L: Switched<N, G>, const N: usize, const G: usize>(
+    law: &L,
+    piece: &ForcePiece,
+    t: f64,
+    y: &[f64; N],
+    h: f64,
+    frozen: L::Frozen,
+) -> [f64; N] {
+    let add = |a: &[f64; N], b: &[f64; N], s: f64| -> [f64; N] { std::array::from_fn(|i| a[i] + s * b[i]) };
+    let k1 = law.rates(piece, t, y, frozen);
+    let k2 = law.rates(piece, t + 0.5 * h, &add(y, &k1, 0.5 * h), frozen);
+    let k3 = law.rates(piece, t + 0.5 * h, &add(y, &k2, 0.5 * h), frozen);
+    let k4 = law.rates(piece, t + h, &add(y, &k3, h), frozen);
+    std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
+}
+
+/// The first guard the state `y` at `t` violates, if any ([`Switched::guards`]).
+fn violated<L: Switched<N, G>, const N: usize, const G: usize>(
+    law: &L,
+    piece: &ForcePiece,
+    t: f64,
+    y: &[f64; N],
+    frozen: L::Frozen,
+) -> Option<usize> {
+    law.guards(piece, t, y, frozen).iter().position(|&g| g < 0.0)
+}
+
+/// The earliest time in `(0, h]` after `t` at which a guard fails (one fails at `h`), to
+/// rounding: the Illinois variant of regula falsi on the guard that fails, restarted on
+/// any guard that fails earlier. Returns the time and the state there.
+fn locate<L: Switched<N, G>, const N: usize, const G: usize>(
+    law: &L,
+    piece: &ForcePiece,
+    t: f64,
+    h: f64,
+    frozen: L::Frozen,
+    first: usize,
+) -> (f64, [f64; N]) {
+    let y0 = law.state();
+    let start = law.guards(piece, t, y0, frozen);
+    let (mut g, mut lo, mut hi) = (first, 0.0, h);
+    let mut at_hi = step(law, piece, t, y0, h, frozen);
+    for _ in 0..MAX_SWITCHES {
+        let value = |tau: f64, y: &[f64; N]| law.guards(piece, t + tau, y, frozen)[g];
+        let (mut a, mut fa) = (lo, start[g].max(0.0));
+        if a > 0.0 {
+            fa = value(a, &step(law, piece, t, y0, a, frozen)).max(0.0);
+        }
+        let (mut b, mut fb) = (hi, value(hi, &at_hi));
+        let mut side = 0;
+        for _ in 0..BISECTIONS {
+            if b - a <= 1e-13 * h {
+                break;
+            }
+            let mut c = (a * fb - b * fa) / (fb - fa);
+            if !(c > a && c < b) {
+                c = 0.5 * (a + b);
+            }
+            let y = step(law, piece, t, y0, c, frozen);
+            let fc = value(c, &y);
+            if fc < 0.0 {
+                (b, fb, at_hi) = (c, fc, y);
+                if side == -1 {
+                    fa *= 0.5;
+                }
+                side = -1;
+            } else {
+                (a, fa) = (c, fc);
+                if side == 1 {
+                    fb *= 0.5;
+                }
+                side = 1;
+            }
+        }
+        // another guard failing before this one's root takes over
+        let y = step(law, piece, t, y0, a, frozen);
+        match violated(law, piece, t + a, &y, frozen) {
+            Some(other) if a > 0.0 => {
+                (g, hi, at_hi) = (other, a, y);
+                lo = 0.0;
+            }
+            _ => return (b, at_hi),
+        }
+    }
+    (hi, at_hi)
+}

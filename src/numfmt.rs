@@ -1,0 +1,234 @@
+//! How numbers are written, in one place at the bottom of the house (it imports nothing of the
+//! crate, so every layer, the error type included, may use it):
+//!
+//! - in messages: [`sig`] (rounded to some significant digits), [`readable`] (exact), and
+//!   [`shown`] (a value given as text, as an error message shows it);
+//! - in tables, CSV files, plots and the report: [`fmt_sig`] (C's `%g` without trailing zeros);
+//! - in the exact columns of a sweep and of the uncertainty table: [`exact`] and
+//!   [`exact_finite`] (the shortest text that reads back as the same `f64`).
+
+/// The digits a value in an error message is shown to ([`shown`]): enough to tell a refused
+/// value from the bound beside it, not the binary noise of a computed one
+/// (`0.30000000000000004`).
+pub const MESSAGE_DIGITS: usize = 12;
+
+/// `v` rounded to `digits` significant digits, in its shortest form (`36666.7`, `0.16`,
+/// `1e30`: see [`readable`]).
+pub fn sig(v: f64, digits: usize) -> String {
+    let rounded: f64 = format!("{:.*e}", digits.saturating_sub(1), v).parse().unwrap_or(v);
+    readable(rounded)
+}
+
+/// `v` as a message shows it: the shortest form that reads back as `v`, plain (`0.16`,
+/// `40000`) or, where the plain form would run to many zeros (`|v| >= 1e7` or `|v| < 1e-4`),
+/// with an exponent (`1e30`, not 31 digits; `1.5e-7`).
+pub fn readable(v: f64) -> String {
+    if v.is_finite() && v != 0.0 && (v.abs() >= 1e7 || v.abs() < 1e-4) {
+        format!("{v:e}")
+    } else {
+        v.to_string()
+    }
+}
+
+/// A value as a message shows it: a number to [`MESSAGE_DIGITS`] significant digits (`2.1`,
+/// not `2.0999999999999996`; an integer of up to 15 digits, a count, exactly as it is), any
+/// other text as it is.
+pub fn shown(text: &str) -> String {
+    match text.parse::<f64>() {
+        Ok(v) if v.is_finite() && (text.contains('.') || text.len() > 15) => sig(v, MESSAGE_DIGITS),
+        _ => text.to_string(),
+    }
+}
+
+/// Format `x` with `digits` significant digits, like C's `%.{digits}g` with trailing zeros
+/// removed.
+///
+/// * `0` and `-0` give `"0"`, NaN gives `"NaN"`, infinities give `"inf"` / `"-inf"`.
+/// * Plain decimal notation when the decimal exponent of the rounded value is in
+///   `[-4, digits)`, e.g. `0.000123457`, `12.5`, `10`.
+/// * Scientific notation otherwise, e.g. `1.23457e-05`, `1e+06`: trimmed mantissa, signed
+///   exponent with at least two digits.
+///
+/// Rounding is done once, correctly (round-half-even on the exact binary value), by Rust's
+/// `{:e}` formatting. `digits = 0` is treated as 1.
+pub fn fmt_sig(x: f64, digits: usize) -> String {
+    if x.is_nan() {
+        return "NaN".to_string();
+    }
+    if x.is_infinite() {
+        return if x > 0.0 { "inf" } else { "-inf" }.to_string();
+    }
+    if x == 0.0 {
+        return "0".to_string();
+    }
+    let digits = digits.max(1);
+    // Correctly rounded mantissa and exponent, e.g. "-1.23457e-5".
+    let sci = format!("{:.*e}", digits - 1, x);
+    let (mantissa, exp) = match sci.split_once('e') {
+        Some(parts) => parts,
+        None => return sci, // unreachable: `{:e}` always has an exponent
+    };
+    let exp: i64 = match exp.parse() {
+        Ok(e) => e,
+        Err(_) => return sci, // unreachable
+    };
+    let negative = mantissa.starts_with('-');
+    let sign = if negative { "-" } else { "" };
+    // All significant digits, without sign or point: exactly `digits` of them.
+    let sig: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+
+    if exp < -4 || exp >= digits as i64 {
+        let (first, rest) = sig.split_at(1);
+        let rest = rest.trim_end_matches('0');
+        let exp_sign = if exp < 0 { '-' } else { '+' };
+        if rest.is_empty() {
+            format!("{sign}{first}e{exp_sign}{:02}", exp.unsigned_abs())
+        } else {
+            format!("{sign}{first}.{rest}e{exp_sign}{:02}", exp.unsigned_abs())
+        }
+    } else if exp >= 0 {
+        // 0 <= exp < digits, so the integer part takes exp + 1 <= digits digits.
+        let split = (exp as usize + 1).min(sig.len());
+        let (int_part, frac) = sig.split_at(split);
+        let frac = frac.trim_end_matches('0');
+        if frac.is_empty() {
+            format!("{sign}{int_part}")
+        } else {
+            format!("{sign}{int_part}.{frac}")
+        }
+    } else {
+        // -4 <= exp <= -1: leading zeros after the point.
+        let zeros = "0".repeat((-exp - 1) as usize);
+        let frac = sig.trim_end_matches('0');
+        format!("{sign}0.{zeros}{frac}")
+    }
+}
+
+/// A number in its shortest exact form (`ryu`: `0.25`, `1.5e-7`, `3.0`, reading back as the same
+/// `f64`), zero of either sign as "0" as in the other tables; an undefined one (NaN: `e_t` at too
+/// little incoming slip) as an empty field. A sweep's columns.
+pub fn exact(v: f64) -> String {
+    if v.is_nan() {
+        String::new()
+    } else if v == 0.0 {
+        "0".to_string()
+    } else {
+        ryu::Buffer::new().format(v).to_string()
+    }
+}
+
+/// A finite number in its shortest exact form as `ryu` writes it (zero as `0.0`), a non-finite
+/// one (an undefined index) as an empty field. The uncertainty table's columns.
+pub fn exact_finite(v: f64) -> String {
+    if v.is_finite() {
+        ryu::Buffer::new().format(v).to_string()
+    } else {
+        String::new()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn messages_round_then_write_the_shortest_form() {
+        assert_eq!(sig(36666.666, 6), "36666.7");
+        assert_eq!(sig(0.16, 6), "0.16");
+        assert_eq!(sig(1e30, 6), "1e30");
+        assert_eq!(sig(1.5e-7, 3), "1.5e-7");
+        assert_eq!(readable(40000.0), "40000");
+        assert_eq!(readable(1e7), "1e7");
+        assert_eq!(shown("2.0999999999999996"), "2.1");
+        assert_eq!(shown("123456789012345"), "123456789012345");
+        assert_eq!(shown("hat"), "hat");
+    }
+
+    #[test]
+    fn exact_forms_read_back_as_the_same_number() {
+        for v in [0.25, 1.5e-7, 3.0, 0.1 + 0.2, -2.5e30] {
+            assert_eq!(exact(v).parse::<f64>().unwrap(), v);
+            assert_eq!(exact_finite(v).parse::<f64>().unwrap(), v);
+        }
+        assert_eq!((exact(0.0).as_str(), exact(-0.0).as_str(), exact(f64::NAN).as_str()), ("0", "0", ""));
+        assert_eq!((exact_finite(0.0).as_str(), exact_finite(f64::INFINITY).as_str()), ("0.0", ""));
+    }
+
+    #[test]
+    fn fmt_sig_special_values() {
+        assert_eq!(fmt_sig(0.0, 6), "0");
+        assert_eq!(fmt_sig(-0.0, 6), "0");
+        assert_eq!(fmt_sig(f64::NAN, 6), "NaN");
+        assert_eq!(fmt_sig(f64::INFINITY, 6), "inf");
+        assert_eq!(fmt_sig(f64::NEG_INFINITY, 6), "-inf");
+    }
+
+    #[test]
+    fn fmt_sig_plain_decimal() {
+        assert_eq!(fmt_sig(1.0, 6), "1");
+        assert_eq!(fmt_sig(-1.0, 6), "-1");
+        assert_eq!(fmt_sig(0.5, 6), "0.5");
+        assert_eq!(fmt_sig(12.5, 6), "12.5");
+        assert_eq!(fmt_sig(std::f64::consts::PI, 6), "3.14159");
+        assert_eq!(fmt_sig(-std::f64::consts::E, 6), "-2.71828");
+        assert_eq!(fmt_sig(123456.0, 6), "123456");
+        assert_eq!(fmt_sig(123456.4, 6), "123456");
+        assert_eq!(fmt_sig(100.0, 6), "100");
+        assert_eq!(fmt_sig(0.1 + 0.2, 6), "0.3");
+        assert_eq!(fmt_sig(0.0001, 6), "0.0001");
+        assert_eq!(fmt_sig(0.000123456789, 6), "0.000123457");
+        assert_eq!(fmt_sig(-0.000123456789, 6), "-0.000123457");
+        assert_eq!(fmt_sig(0.001, 3), "0.001");
+    }
+
+    #[test]
+    fn fmt_sig_scientific() {
+        assert_eq!(fmt_sig(1234567.0, 6), "1.23457e+06");
+        assert_eq!(fmt_sig(1e6, 6), "1e+06");
+        assert_eq!(fmt_sig(-1e6, 6), "-1e+06");
+        assert_eq!(fmt_sig(0.0000123456789, 6), "1.23457e-05");
+        assert_eq!(fmt_sig(0.00001, 6), "1e-05");
+        assert_eq!(fmt_sig(6.02214076e23, 6), "6.02214e+23");
+        assert_eq!(fmt_sig(1.5e-300, 6), "1.5e-300");
+        assert_eq!(fmt_sig(f64::MAX, 6), "1.79769e+308");
+        assert_eq!(fmt_sig(f64::MIN_POSITIVE, 6), "2.22507e-308");
+        assert_eq!(fmt_sig(5e-324, 6), "4.94066e-324");
+        assert_eq!(fmt_sig(1e100, 6), "1e+100");
+    }
+
+    #[test]
+    fn fmt_sig_rounding_boundaries() {
+        assert_eq!(fmt_sig(9.9999996, 6), "10");
+        assert_eq!(fmt_sig(-9.9999996, 6), "-10");
+        assert_eq!(fmt_sig(99999.95, 6), "99999.9"); // 99999.95 is below .95 in binary
+        assert_eq!(fmt_sig(999999.6, 6), "1e+06"); // rounds up into scientific range
+        assert_eq!(fmt_sig(999999.4, 6), "999999");
+        assert_eq!(fmt_sig(0.000099999996, 6), "0.0001"); // rounds up into decimal range
+        assert_eq!(fmt_sig(0.0000999999, 6), "9.99999e-05");
+        assert_eq!(fmt_sig(1.0000004, 6), "1");
+        assert_eq!(fmt_sig(1.000004, 6), "1");
+        assert_eq!(fmt_sig(1.000006, 6), "1.00001");
+        assert_eq!(fmt_sig(0.30000000000000004, 17), "0.30000000000000004");
+    }
+
+    #[test]
+    fn fmt_sig_other_digit_counts() {
+        assert_eq!(fmt_sig(3.25, 1), "3");
+        assert_eq!(fmt_sig(3.25, 0), "3");
+        assert_eq!(fmt_sig(15.0, 1), "2e+01");
+        assert_eq!(fmt_sig(1234.5, 3), "1.23e+03");
+        assert_eq!(fmt_sig(123.0, 3), "123");
+        assert_eq!(fmt_sig(0.5, 3), "0.5");
+    }
+
+    #[test]
+    fn fmt_sig_matches_round_trip_for_many_values() {
+        // Parsing the output must give the value rounded to 6 significant digits.
+        for &x in &[1.2345678e-7, 2.5e-3, 7.77777777, 42.0, 1.0 / 3.0, 2.0 / 3.0 * 1e9] {
+            let s = fmt_sig(x, 6);
+            let back: f64 = s.parse().expect("parse");
+            let expect: f64 = format!("{x:.5e}").parse().expect("parse");
+            assert_eq!(back, expect, "{x} -> {s}");
+        }
+    }
+}
