@@ -105,6 +105,18 @@ pub enum Error {
         /// The limit on mode-samples.
         limit: f64,
     },
+    /// The tangential contact of an oblique or spinning ball would take too many steps.
+    #[error(
+        "the tangential contact needs up to {steps:.2e} steps over the longest contact allowed \
+         (limit {limit:.0e}): the ball's spin or the tangential spring is too fast for it; check kt, mb, \
+         ball-radius, ball-inertia-factor, ix"
+    )]
+    TooManyTangentialSteps {
+        /// The steps at most.
+        steps: f64,
+        /// The limit.
+        limit: f64,
+    },
     /// A result came out non-finite (guard; parameter ranges are meant to prevent it).
     #[error("the impact produced a non-finite {field}; the parameters are outside the model's range")]
     NonFinite {
