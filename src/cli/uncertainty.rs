@@ -29,7 +29,7 @@ pub struct UncertaintyArgs {
     #[arg(long)]
     pub seed: Option<u32>,
     /// Write the output (in --format) to this file, atomically, instead of standard output
-    #[arg(long)]
+    #[arg(long, help_heading = "Output")]
     pub out: Option<PathBuf>,
     /// Every paper claim under the declared uncertainty of the paper's inputs (the robustness
     /// experiment); takes only --samples, --seed, --format and --out

@@ -125,9 +125,9 @@ declare_params! {
     /// Ball radius, m (1e-3 ..= 1)
     BALL_RADIUS ball_radius: f64 = "ball-radius" at oblique.ball_radius,
         what "ball radius", unit "m", column "ball_radius_m", within(1.0e-3, 1.0), usual(0.015, 0.05);
-    /// Ball moment of inertia over m_b R^2 (0 < alpha <= 1)
+    /// Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55)
     BALL_INERTIA_FACTOR ball_inertia_factor: f64 = "ball-inertia-factor" at oblique.ball_inertia_factor,
-        what "ball inertia factor", unit "", column "ball_inertia_factor", rule;
+        what "ball inertia factor", unit "", column "ball_inertia_factor", rule, usual(0.4, 0.67);
 }
 
 /// The impact point a new user expects when none is given: the centre of the string face on

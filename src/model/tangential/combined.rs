@@ -152,6 +152,12 @@ impl Combined {
         }
     }
 
+    /// The most Runge-Kutta substeps over a contact of `t` seconds (besides those cut at a
+    /// switch).
+    pub fn steps_within(&self, t: f64) -> f64 {
+        t / self.h_max
+    }
+
     /// Ball velocity along `t`, m/s.
     pub fn v(&self) -> f64 {
         self.y[V]
