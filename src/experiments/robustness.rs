@@ -14,11 +14,12 @@ use super::claims::{Check, Claim, ToleranceKind};
 use super::conclusion::Standing;
 use super::{Context, Experiment, PaperClaim};
 use crate::error::{Error, Result};
+use crate::numfmt::fmt_sig;
 use crate::params::spec::ParamSpec;
 use crate::params::uncertainty::Dist;
 use crate::params::{keys, Overrides, SolverKind};
 use crate::render::plot::{Chart, Curve, LineStyle};
-use crate::render::table::{fmt_sig, Table, Value};
+use crate::render::table::{Table, Value};
 use crate::study::sensitivity::{self, Design, Summary};
 
 /// Base samples of the design: 128 x (9 inputs + 2) = 1408 evaluations of every claim, about
