@@ -158,7 +158,7 @@ impl Combined {
     /// The most Runge-Kutta substeps over a contact of `t` seconds (besides those cut at a
     /// switch).
     pub fn steps_within(&self, t: f64) -> f64 {
-        t / self.h_max
+        t / self.h_max.shortest()
     }
 
     /// Ball velocity along `t`, m/s.
@@ -417,6 +417,11 @@ struct Substeps {
 }
 
 impl Substeps {
+    /// The shortest substep of any mode, s.
+    fn shortest(&self) -> f64 {
+        self.grip.min(self.grip_bed).min(self.slide)
+    }
+
     fn of(law: &CombinedLaw) -> Substeps {
         let inv_red = law.inv_red();
         let (kt, c) = (law.base.kt, law.damping);
