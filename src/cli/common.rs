@@ -102,17 +102,17 @@ pub enum Format {
 /// takes ([`KeySet`]).
 #[derive(Args, Debug)]
 pub struct Common<K: KeySet> {
-    /// Racket description file (TOML, player units) or preset name; see `racket-impact racket --list`
-    #[arg(long)]
-    pub racket: Option<String>,
     /// TOML file with any of the parameter flags below as keys (flags win; a key this command
     /// does not use is named in one warning)
-    #[arg(long)]
+    #[arg(long, help_heading = "Impact")]
     pub config: Option<PathBuf>,
+    /// Racket description file (TOML, player units) or preset name; see `racket-impact racket --list`
+    #[arg(long, help_heading = "Racket")]
+    pub racket: Option<String>,
     #[command(flatten)]
     pub overrides: OverrideArgs<K>,
     /// Output format
-    #[arg(long, value_enum, default_value_t = Format::Text)]
+    #[arg(long, value_enum, default_value_t = Format::Text, help_heading = "Output")]
     pub format: Format,
 }
 

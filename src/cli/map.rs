@@ -46,7 +46,7 @@ pub struct MapArgs {
     pub nr: usize,
     /// Output CSV; the PNG and JSON go next to it with the same stem (a symbolic link: its
     /// target is written, the link kept, and the PNG and JSON go next to the target, with its stem)
-    #[arg(long)]
+    #[arg(long, help_heading = "Output")]
     pub out: Option<PathBuf>,
     /// Difference map against this racket (file or preset): B - A with A = --racket
     #[arg(long, conflicts_with = "compare_tension_lb")]

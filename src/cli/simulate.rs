@@ -20,13 +20,13 @@ pub struct SimulateArgs {
     #[command(flatten)]
     pub common: Common<SimulateKeys>,
     /// Also write the impact's time series (t, F, y_b, Y_T, theta, every energy term) as CSV
-    #[arg(long)]
+    #[arg(long, help_heading = "Output")]
     pub series: Option<PathBuf>,
     /// Sample spacing of the time series, s
-    #[arg(long, default_value_t = DEFAULT_SERIES_DT, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = DEFAULT_SERIES_DT, allow_hyphen_values = true, help_heading = "Output")]
     pub series_dt: f64,
     /// Extend the time series to at least this time, s
-    #[arg(long, default_value_t = DEFAULT_SERIES_END, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = DEFAULT_SERIES_END, allow_hyphen_values = true, help_heading = "Output")]
     pub series_end: f64,
 }
 
