@@ -148,6 +148,12 @@ pub fn warn_squash(params: &Params, y0_m: f64) {
     }
 }
 
+/// The clap value parser of every number option that is not a parameter flag (those read
+/// through the same function): a number as written, refused where it does not fit an f64.
+pub fn number(text: &str) -> std::result::Result<f64, String> {
+    racket_impact::params::spec::parse_number(text).map_err(str::to_string)
+}
+
 /// Output format.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Format {
