@@ -379,7 +379,7 @@ fn sweep_ranges_say_what_they_run() {
     refused(&s.run(&["sweep", "--segments", "4:400:1000"]), "give a count of at most 397");
     // a count of 1 on equal ends is the one value; 397 whole segment counts run once each
     assert!(s.run(&["sweep", "--x", "0.1:0.1:1"]).status.success());
-    let o = s.run(&["sweep", "--segments", "4:400:397", "--solver", "modal", "--x", "0.1", "--out", "s.csv"]);
+    let o = s.run(&["sweep", "--out", "s.csv", "--segments", "4:400:397", "--solver", "modal", "--x", "0.1"]);
     assert!(o.status.success(), "{}", stderr(&o));
     assert_eq!(std::fs::read_to_string(s.path("s.csv")).unwrap().lines().count(), 1 + 397);
 }
