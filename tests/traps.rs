@@ -5,7 +5,7 @@
 //! Issue 24 (first passes):
 //! 1. Outputs written, never replaced (links, devices, read-only folders): `tests/outputs.rs`.
 //! 2. Work bounded before it starts: `tests/bounds.rs`.
-//! 3-4. Every option used or refused, help as accepted: `tests/options.rs`.
+//! 3. and 4. Every option used or refused, help as accepted: `tests/options.rs`.
 //! 5. Bad input: one line naming the field, exit 2, nothing written: `tests/bad_input.rs`.
 //! 6. One vocabulary: `tests/vocabulary.rs`.
 //! 9. The README's examples do what it says: `tests/readme.rs`.
