@@ -10,6 +10,7 @@ pub mod coupling;
 pub mod free;
 pub mod rank_one;
 pub mod reduced;
+pub mod root;
 pub mod short_turn;
 pub mod spare;
 pub mod tangential;

@@ -9,9 +9,11 @@
 //! all at `lam = 0`) are first merged into one along their part of `g`; a coordinate with no part
 //! in `g` is not coupled and is left out. Each root is found by the rational iteration of Bunch,
 //! Nielsen and Sorensen (1978; the poles on each side of the root replaced by one pole with the
-//! same value and slope, whose root is a quadratic's), kept inside its interval by bisection, with
-//! `mu` measured from the nearer pole so that no digits are lost next to it: three to seven
-//! iterations a root. The cost is of order `n^2`, against `n^3` for a dense decomposition.
+//! same value and slope, whose root is a quadratic's), kept inside its interval by bisection
+//! ([`super::root::Bracket`]), with `mu` measured from the nearer pole so that no digits are
+//! lost next to it: three to seven iterations a root. The cost is of order `n^2`, against `n^3` for a dense decomposition.
+
+use super::root::Bracket;
 
 /// Poles closer than this fraction of the largest are one pole.
 const SAME_POLE: f64 = 1e-12;
@@ -82,12 +84,12 @@ pub fn coupled_modes(lam: &[f64], g: &[f64], kappa: f64) -> CoupledModes {
         }
         // tau = mu - o within (lo - o, hi - o), on the side of the origin
         let last = k + 1 == m;
-        let (mut a, mut b) = match (origin == k, last) {
-            (true, true) => (0.0, hi - o),
-            (true, false) => (0.0, mid - o),
-            _ => (mid - o, 0.0),
+        let mut bracket = match (origin == k, last) {
+            (true, true) => Bracket::new(0.0, hi - o),
+            (true, false) => Bracket::new(0.0, mid - o),
+            _ => Bracket::new(mid - o, 0.0),
         };
-        let mut tau = 0.5 * (a + b);
+        let mut tau = bracket.mid();
         for _ in 0..100 {
             // the poles left of the root (through k) and right of it, their sums and slopes
             let sums = |range: std::ops::Range<usize>| {
@@ -102,11 +104,7 @@ pub fn coupled_modes(lam: &[f64], g: &[f64], kappa: f64) -> CoupledModes {
             };
             let ((psi, dpsi), (phi, dphi)) = (sums(0..k + 1), sums(k + 1..m));
             let f = 1.0 + psi + phi;
-            if f < 0.0 {
-                a = tau;
-            } else {
-                b = tau;
-            }
+            bracket.narrow(tau, f < 0.0);
             // each side as one pole with the same value and slope, and the root of that
             // (Bunch, Nielsen and Sorensen 1978): a quadratic, solved without cancellation
             // from the origin's side
@@ -140,15 +138,15 @@ pub fn coupled_modes(lam: &[f64], g: &[f64], kappa: f64) -> CoupledModes {
             // converged: the step is at rounding level, or `f` is (its terms cancel to about
             // `m eps` of their size; no step can do better)
             let noise = 8.0 * f64::EPSILON * m as f64 * (1.0 + psi.abs() + phi.abs());
-            if f.abs() <= noise || b - a <= tol {
+            if f.abs() <= noise || bracket.hi - bracket.lo <= tol {
                 break;
             }
-            if next >= a && next <= b && (next - tau).abs() <= tol {
+            if next >= bracket.lo && next <= bracket.hi && (next - tau).abs() <= tol {
                 tau = next;
                 break;
             }
-            tau = if next > a && next < b { next } else { 0.5 * (a + b) };
-            if b <= a {
+            tau = bracket.inside_or_mid(next);
+            if bracket.hi <= bracket.lo {
                 break;
             }
         }

@@ -3,6 +3,8 @@
 //! the values and rates at the step's ends (the modal solver finds maximum compression in
 //! closed form).
 
+use crate::model::root::{bisect, Bracket};
+
 /// Cubic Hermite interpolant on a step of length `h` with values `p0, p1` and derivatives
 /// `m0, m1`, evaluated at the fraction `s` of the step.
 pub(crate) fn hermite_eval(p0: f64, m0: f64, p1: f64, m1: f64, h: f64, s: f64) -> f64 {
@@ -20,24 +22,12 @@ fn hermite_slope(p0: f64, m0: f64, p1: f64, m1: f64, h: f64, s: f64) -> f64 {
         / h
 }
 
-/// Bisection for the sign change of `f` on [0, 1], given f(0) > 0 >= f(1).
-fn bisect(f: impl Fn(f64) -> f64) -> f64 {
-    let (mut lo, mut hi) = (0.0, 1.0);
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if f(mid) > 0.0 {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    0.5 * (lo + hi)
-}
-
 /// The maximum of the Hermite interpolant in a step where the slope goes from > 0 to <= 0:
 /// (fraction of the step, value).
 pub(crate) fn hermite_max(p0: f64, m0: f64, p1: f64, m1: f64, h: f64) -> (f64, f64) {
-    let s = bisect(|s| hermite_slope(p0, m0, p1, m1, h, s));
+    // the slope's fall through zero (zero counts as past), by bisection from the whole step
+    // (60 halvings: to rounding where the maximum is beyond 1/256 of the step)
+    let s = bisect(|s| hermite_slope(p0, m0, p1, m1, h, s) > 0.0, 0.0, 1.0, 60).mid();
     let v = hermite_eval(p0, m0, p1, m1, h, s);
     (s, v.max(p0).max(p1))
 }
@@ -46,29 +36,25 @@ pub(crate) fn hermite_max(p0: f64, m0: f64, p1: f64, m1: f64, h: f64) -> (f64, f
 /// method kept inside the bracket (bisection where a step would leave it), to rounding level.
 pub(crate) fn hermite_root(p0: f64, m0: f64, p1: f64, m1: f64, h: f64) -> f64 {
     let f = |s: f64| hermite_eval(p0, m0, p1, m1, h, s);
-    let (mut lo, mut hi) = (0.0, 1.0);
+    let mut bracket = Bracket::new(0.0, 1.0);
     // the secant's zero first
     let mut s = if p0 > p1 { p0 / (p0 - p1) } else { 0.5 };
     for _ in 0..100 {
         let v = f(s);
-        if v > 0.0 {
-            lo = s;
-        } else {
-            hi = s;
-        }
+        bracket.narrow(s, v > 0.0);
         let slope = hermite_slope(p0, m0, p1, m1, h, s) * h;
         let newton = s - v / slope;
         if newton == s {
             // the Newton step is below rounding: `s` is the root
             return s;
         }
-        let next = if newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
-        if (next - s).abs() <= 2.0 * f64::EPSILON || hi - lo <= 2.0 * f64::EPSILON {
+        let next = bracket.inside_or_mid(newton);
+        if (next - s).abs() <= 2.0 * f64::EPSILON || bracket.hi - bracket.lo <= 2.0 * f64::EPSILON {
             return next;
         }
         s = next;
     }
-    0.5 * (lo + hi)
+    bracket.mid()
 }
 
 #[cfg(test)]
