@@ -28,7 +28,8 @@ pub struct Diagnostic {
     /// What kind of doubt.
     pub kind: Kind,
     /// The parameter key or result field it is about (`ks`, `theta_end_deg`; `f1`, `density`
-    /// or `string` for the frame frequency, the racket's mass density and the named string).
+    /// or `string` for the frame frequency, the racket's mass density and the named string;
+    /// `config` for a config file's keys).
     pub field: String,
     /// One line, as the command line prints it after `warning: `.
     pub sentence: String,

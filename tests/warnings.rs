@@ -217,3 +217,39 @@ fn json_output_carries_the_warnings_quiet_or_not() {
     let calm: serde_json::Value = serde_json::from_str(&stdout(&run(&["simulate", "--format", "json"]))).unwrap();
     assert_eq!(calm["diagnostics"], serde_json::json!([]));
 }
+
+/// A property the impact does not exercise is a note among the diagnostics (kind `not_used`,
+/// field its key; a config file's unused keys field `config`): printed as before, one
+/// `warning:` line each, and carried by the JSON under `diagnostics`, with `--quiet` too.
+#[test]
+fn notes_about_what_the_impact_does_not_exercise_are_diagnostics() {
+    let dir = tempfile::tempdir().unwrap();
+    let cfg = dir.path().join("c.toml");
+    // at the default impact point, on the long axis, the moment of inertia is not exercised
+    std::fs::write(&cfg, "ix = 0.0012\n").unwrap();
+    let cfg = cfg.to_str().unwrap();
+    let simulate = ["simulate", "--config", cfg, "--mu", "0.4", "--format", "json"];
+    let uncertainty =
+        ["uncertainty", "--mu", "0.4", "--vary", "ks=uniform:2e4:6e4", "--samples", "64", "--format", "json"];
+    let speed = ["speed", "--swing", "100", "--mu", "0.4", "--format", "json"];
+    for (args, fields) in [(&simulate[..], &["mu", "config"][..]), (&uncertainty, &["mu"]), (&speed, &["mu"])] {
+        let loud = run(args);
+        assert_eq!(loud.status.code(), Some(0), "{args:?}: {}", stderr(&loud));
+        let quiet = run(&[&["--quiet"][..], args].concat());
+        assert_eq!(stdout(&loud), stdout(&quiet), "{args:?}");
+        assert!(stderr(&quiet).is_empty(), "{args:?}: {}", stderr(&quiet));
+        let v: serde_json::Value = serde_json::from_str(&stdout(&quiet)).unwrap();
+        // (speed: each variant's row carries the notes, which hold for every variant)
+        let d = if v.is_array() { v[0]["diagnostics"].clone() } else { v["diagnostics"].clone() };
+        let notes: Vec<&serde_json::Value> = d.as_array().unwrap().iter().filter(|d| d["kind"] == "not_used").collect();
+        let noted: Vec<&str> = notes.iter().map(|d| d["field"].as_str().unwrap()).collect();
+        assert_eq!(noted, fields, "{args:?}: {d}");
+        let err = stderr(&loud);
+        let printed: Vec<&str> = err.lines().collect();
+        for n in &notes {
+            let line = format!("warning: {}", n["sentence"].as_str().unwrap());
+            assert_eq!(printed.iter().filter(|l| **l == line).count(), 1, "{args:?}: {line} in {printed:?}");
+        }
+        assert!(notes[0]["sentence"].as_str().unwrap().starts_with("--mu 0.4 is not exercised by this impact"), "{d}");
+    }
+}

@@ -135,21 +135,19 @@ impl<K: KeySet> Common<K> {
         }
     }
 
-    /// Refuse a parameter flag none of `params` uses; warn (one line) about config-file keys
-    /// the command does not use.
-    pub fn check_used<'a>(&self, params: impl IntoIterator<Item = &'a Params>) -> Result<()> {
+    /// Refuse a parameter flag for an option none of `params` can honour; return the notes
+    /// about flags of properties they do not exercise and config-file keys the command does not
+    /// use ([`Sources::check_used`]), to be printed with the run's other diagnostics.
+    pub fn check_used<'a>(&self, params: impl IntoIterator<Item = &'a Params>) -> Result<Vec<Diagnostic>> {
         check_used(&self.sources(), params)
     }
 }
 
 /// [`Common::check_used`] for the parameters of `sources` (a command's own, where its options
 /// set some parameters: [`Sources::set_by_options`]).
-pub fn check_used<'a>(sources: &Sources, params: impl IntoIterator<Item = &'a Params>) -> Result<()> {
+pub fn check_used<'a>(sources: &Sources, params: impl IntoIterator<Item = &'a Params>) -> Result<Vec<Diagnostic>> {
     let params: Vec<Params> = params.into_iter().copied().collect();
-    if let Some(note) = sources.check_used(&params)? {
-        warn(&note);
-    }
-    Ok(())
+    sources.check_used(&params)
 }
 
 /// A progress bar on stderr for long runs: hidden, and shown only on a terminal once the run

@@ -84,7 +84,7 @@ pub fn run(a: MapArgs) -> Result<()> {
             p
         })
         .collect();
-    super::common::check_used(&sources, &solved)?;
+    let noted = super::common::check_used(&sources, &solved)?;
 
     let bar = Progress::new(total as u64);
     let started = bar.started;
@@ -116,6 +116,6 @@ pub fn run(a: MapArgs) -> Result<()> {
         }
         Ok(())
     })?;
-    print_diagnostics(&map.diagnostics(configs.iter().map(|(_, p)| p)));
+    print_diagnostics(noted.iter().chain(&map.diagnostics(configs.iter().map(|(_, p)| p))));
     Ok(())
 }

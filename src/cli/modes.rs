@@ -20,7 +20,7 @@ pub struct ModesArgs {
 /// The free racket's eigenfrequencies and mode-1 nodes.
 pub fn run(a: ModesArgs) -> Result<()> {
     let params = a.common.sources().params()?;
-    a.common.check_used([&params])?;
+    let noted = a.common.check_used([&params])?;
     let n = params.numerics.segments;
     if a.count == 0 || a.count > 20 || a.count > n - 1 {
         return Err(Error::invalid("count", a.count, format!("must satisfy 1 <= count <= min(20, N-1 = {})", n - 1)));
@@ -29,7 +29,8 @@ pub fn run(a: ModesArgs) -> Result<()> {
     let modes = beam.modes();
     let freqs: Vec<f64> = (1..=a.count).map(|k| modes.frequency_hz(k)).collect();
     let nodes = modes.node_positions(1, &beam.x);
-    let diagnostics = racket_impact::study::diagnose::parameters([&params], &[]);
+    let diagnostics: Vec<_> =
+        noted.into_iter().chain(racket_impact::study::diagnose::parameters([&params], &[])).collect();
     let text = match a.common.format {
         Format::Json => {
             let v = serde_json::json!({

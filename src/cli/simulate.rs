@@ -34,7 +34,7 @@ pub struct SimulateArgs {
 /// exist.
 pub fn run(a: SimulateArgs) -> Result<()> {
     let params = a.common.sources().params()?;
-    a.common.check_used([&params])?;
+    let noted = a.common.check_used([&params])?;
     if let Some(path) = &a.series {
         racket_impact::render::io::check_output_dir("series", path)?;
     }
@@ -92,7 +92,8 @@ pub fn run(a: SimulateArgs) -> Result<()> {
     // (from the cached modes: the modal solver runs where the explicit one would refuse)
     let f1_hz = racket_impact::model::basis::Basis::of(&params.racket, params.numerics.segments).omega[0]
         / (2.0 * std::f64::consts::PI);
-    let diagnostics = racket_impact::study::diagnose::impact(&params, &result);
+    let diagnostics: Vec<_> =
+        noted.into_iter().chain(racket_impact::study::diagnose::impact(&params, &result)).collect();
     let text = match a.common.format {
         Format::Json => {
             let mut v = racket_impact::render::impact::result_json(&params, &result);

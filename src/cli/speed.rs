@@ -78,7 +78,6 @@ pub fn run(a: SpeedArgs) -> Result<()> {
         incoming_spin_rpm: a.incoming_spin_rpm,
     };
     let comparison = request.run()?;
-    super::common::check_used(&sources, comparison.rows.iter().map(|r| &r.params))?;
     let text = match a.common.format {
         Format::Csv => comparison.table()?.to_csv(),
         Format::Json => comparison.json()?,

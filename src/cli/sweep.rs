@@ -69,28 +69,10 @@ fn keys_with_defaults() -> String {
 /// Run the sweep, writing the header and then each finished chunk's rows.
 pub fn run(a: SweepArgs) -> Result<()> {
     let sweep = Sweep::from_pairs(a.racket.as_deref(), a.config.as_deref(), &a.specs)?;
-    // a swept parameter none of the impacts uses is refused; a config file's unused keys named
+    // a swept option no impact can honour is refused; a swept property none exercises and a
+    // config file's unused keys are noted (printed with the other diagnostics at the end)
     let representatives = sweep.representatives()?;
-    let swept: Vec<&str> = sweep.axes.iter().filter_map(|ax| keys::find(&ax.key).map(|s| s.key)).collect();
-    for key in &swept {
-        if let Some((key, why)) = racket_impact::params::used::first_unused(&[key], &representatives) {
-            let values = sweep.axes.iter().find(|ax| ax.key == key).map(|ax| ax.values.join(",")).unwrap_or_default();
-            let field = keys::find(key).map_or("sweep", |s| s.key);
-            // (a property no point exercises is noted; a method's option refused, as for simulate)
-            if representatives.first().is_some_and(|p| racket_impact::params::used::is_refused(key, p)) {
-                return Err(racket_impact::Error::invalid(field, values, why));
-            }
-            super::common::warn(&format!("--{field} {values} is not exercised by these impacts ({why})"));
-        }
-    }
-    if let Some(path) = &a.config {
-        let config = racket_impact::study::config_file(Some(path))?;
-        if let Some(note) =
-            racket_impact::study::unused_config_note(path, &config, &swept, &[], "sweep", &representatives)
-        {
-            super::common::warn(&note);
-        }
-    }
+    let noted = sweep.check_used(&representatives, a.config.as_deref())?;
     if let Some(path) = &a.out {
         racket_impact::render::io::check_output_dir("out", path)?;
     }
@@ -128,7 +110,7 @@ pub fn run(a: SweepArgs) -> Result<()> {
     }
     use racket_impact::study::diagnose;
     print_diagnostics(
-        &diagnose::parameters(&representatives, &[]).into_iter().chain(diagnose::twist(theta_max)).collect::<Vec<_>>(),
+        noted.iter().chain(&diagnose::parameters(&representatives, &[])).chain(&diagnose::twist(theta_max)),
     );
     Ok(())
 }

@@ -5,6 +5,7 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use racket_impact::diagnostic::{Diagnostic, Kind};
 use racket_impact::experiments::robustness;
 use racket_impact::params::keys;
 use racket_impact::study::sensitivity::Design;
@@ -80,21 +81,24 @@ pub fn run(a: UncertaintyArgs) -> Result<()> {
             unused_in_config.push(key);
         }
     }
+    let mut noted = Vec::new();
     if let (Some(path), false) = (&sources.config, unused_in_config.is_empty()) {
         // a shared config file may set what this run draws: said once, not refused
-        warn(&format!(
+        let sentence = format!(
             "config file {} sets {}, which --vary draws: the file's value is not used",
             path.display(),
             unused_in_config.join(", ")
-        ));
+        );
+        noted.push(Diagnostic::new(Kind::NotUsed, "config", sentence));
     }
     let mut base = sources.params()?;
     if let Some(solver) = racket_impact::study::sweep::default_solver(&given, &[]) {
         base.numerics.solver = solver;
     }
     // with the solver the runs use: --dt is refused with the modal one
-    a.common.check_used([&base])?;
-    let study = Study::new(base, &a.vary, samples, a.seed.unwrap_or(0))?;
+    noted.extend(a.common.check_used([&base])?);
+    let mut study = Study::new(base, &a.vary, samples, a.seed.unwrap_or(0))?;
+    study.noted = noted;
     if let Some(path) = &a.out {
         racket_impact::render::io::check_output_dir("out", path)?;
     }

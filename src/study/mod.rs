@@ -14,6 +14,7 @@ pub mod uncertainty;
 
 use std::path::{Path, PathBuf};
 
+use crate::diagnostic::{Diagnostic, Kind};
 use crate::error::{Error, Result};
 use crate::params::{Overrides, Params};
 use crate::racket::Fitted;
@@ -88,11 +89,12 @@ impl Sources {
         Ok((config, dropped))
     }
 
-    /// Refuse a flag that none of the command's impacts `params` uses
-    /// ([`crate::params::used`]); return one note naming the config file's keys that the
-    /// command does not take or its impacts do not use (a config file may be shared between
-    /// commands, so these are not refused), or `None`.
-    pub fn check_used(&self, params: &[Params]) -> Result<Option<String>> {
+    /// Refuse a flag for a method's option that none of the command's impacts `params` can
+    /// honour ([`crate::params::used::is_refused`]); return the notes ([`Kind::NotUsed`]): one
+    /// for each flag of a property none of them exercises (field: its key), and one naming the
+    /// config file's keys that the command does not take or its impacts do not use (a config
+    /// file may be shared between commands, so these are not refused; field `config`).
+    pub fn check_used(&self, params: &[Params]) -> Result<Vec<Diagnostic>> {
         use crate::params::used::{first_unused, is_refused};
         // a method's option it cannot honour is refused; a property this impact does not
         // exercise is noted (crate::params::used::is_refused)
@@ -104,22 +106,25 @@ impl Sources {
                 if params.first().is_some_and(|p| is_refused(key, p)) {
                     return Err(Error::invalid(field, value, why));
                 }
-                noted.push(format!("--{field} {value} is not exercised by this impact ({why})"));
+                noted.push(Diagnostic::new(
+                    Kind::NotUsed,
+                    field,
+                    format!("--{field} {value} is not exercised by this impact ({why})"),
+                ));
             }
         }
         let (config, dropped) = self.config()?;
         let path = self.config.as_deref().unwrap_or(Path::new(""));
         let overridden: Vec<&str> = self.flags.given().into_iter().chain(self.set_by_options.iter().copied()).collect();
-        let config_note = unused_config_note(path, &config, &overridden, &dropped, self.command, params);
-        let notes: Vec<String> = noted.into_iter().chain(config_note).collect();
-        Ok((!notes.is_empty()).then(|| notes.join("; ")))
+        noted.extend(unused_config_note(path, &config, &overridden, &dropped, self.command, params));
+        Ok(noted)
     }
 }
 
-/// One note naming the keys of the config file at `path` (values `config`) that are not used:
-/// those the command does not take (`dropped`), and those none of its impacts `params` uses
-/// ([`crate::params::used`]) unless set otherwise (`overridden`: by a flag, or swept). `None`
-/// when every key is used.
+/// One note ([`Kind::NotUsed`], field `config`) naming the keys of the config file at `path`
+/// (values `config`) that are not used: those the command does not take (`dropped`), and those
+/// none of its impacts `params` uses ([`crate::params::used`]) unless set otherwise
+/// (`overridden`: by a flag, or swept). `None` when every key is used.
 pub fn unused_config_note(
     path: &Path,
     config: &Overrides,
@@ -127,7 +132,7 @@ pub fn unused_config_note(
     dropped: &[&str],
     command: &str,
     params: &[Params],
-) -> Option<String> {
+) -> Option<Diagnostic> {
     use crate::params::used::{first_unused, unused_reason};
     let mut notes: Vec<String> = Vec::new();
     if !dropped.is_empty() {
@@ -143,7 +148,10 @@ pub fn unused_config_note(
             notes.push(format!("{key} ({why})"));
         }
     }
-    (!notes.is_empty()).then(|| format!("config file {}: not used here: {}", path.display(), notes.join("; ")))
+    (!notes.is_empty()).then(|| {
+        let sentence = format!("config file {}: not used here: {}", path.display(), notes.join("; "));
+        Diagnostic::new(Kind::NotUsed, "config", sentence)
+    })
 }
 
 /// The overrides of a `--config` file, or none.
@@ -205,4 +213,35 @@ pub fn check_comparison(tensions_lb: &[f64], rackets_given: bool, flags: &Overri
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sources(flags: &[(&str, &str)]) -> (Sources, Params) {
+        let mut o = Overrides::default();
+        for (key, value) in flags {
+            o.set(key, value).unwrap();
+        }
+        let mut p = Params::default();
+        o.apply(&mut p);
+        (Sources { flags: o, command: "simulate", ..Sources::default() }, p)
+    }
+
+    #[test]
+    fn a_property_the_impact_does_not_exercise_is_a_note_an_option_it_cannot_honour_refused() {
+        // friction at normal incidence: accepted, returned as a note about its key
+        let (s, p) = sources(&[("mu", "0.4"), ("ks", "3e4")]);
+        let notes = s.check_used(&[p]).unwrap();
+        assert_eq!(notes.len(), 1, "{notes:?}");
+        assert_eq!((notes[0].kind, notes[0].field.as_str()), (Kind::NotUsed, "mu"));
+        assert!(notes[0].sentence.starts_with("--mu 0.4 is not exercised by this impact ("), "{}", notes[0]);
+        // everything used: nothing to say
+        let (s, p) = sources(&[("ks", "3e4")]);
+        assert_eq!(s.check_used(&[p]).unwrap(), vec![]);
+        // a step size the modal solver cannot honour: refused
+        let (s, p) = sources(&[("solver", "modal"), ("dt", "1e-6")]);
+        assert!(s.check_used(&[p]).unwrap_err().to_string().starts_with("invalid dt"));
+    }
 }

@@ -88,6 +88,9 @@ pub struct SpeedComparison {
     pub request: SpeedRequest,
     /// One row per variant.
     pub rows: Vec<SpeedRow>,
+    /// The notes about flags of properties no variant exercises and config-file keys the
+    /// command does not use ([`crate::study::Sources::check_used`]).
+    pub noted: Vec<Diagnostic>,
 }
 
 impl SpeedRequest {
@@ -167,7 +170,9 @@ impl SpeedRequest {
             let v_out = outgoing_speed(r.e_a, v_in, v_racket);
             rows.push(SpeedRow { label, params: p, result: r, v_out, launch: None });
         }
-        Ok(SpeedComparison { request: self.clone(), rows })
+        // a flag no variant can honour refused, one none exercises noted
+        let noted = self.sources.check_used(&rows.iter().map(|r| r.params).collect::<Vec<_>>())?;
+        Ok(SpeedComparison { request: self.clone(), rows, noted })
     }
 
     /// Whether the swing brushes the ball (a tilted path) or the ball spins: the impact is then
@@ -291,16 +296,18 @@ impl SpeedComparison {
         crate::render::json::pretty(&v)
     }
 
-    /// The comparison's diagnostics, once each: the variants' parameters but those the stroke
-    /// sets (said in its own terms: the impact speed, the incoming spin, the incidence), the
-    /// largest twist. Each variant's own are in its JSON row.
+    /// The comparison's diagnostics, once each: the notes about what no variant uses, the
+    /// variants' parameters but those the stroke sets (said in its own terms: the impact speed,
+    /// the incoming spin, the incidence), the largest twist. Each variant's own are in its JSON
+    /// row (with the notes, which hold for every variant).
     pub fn diagnostics(&self) -> Vec<Diagnostic> {
         self.diagnostics_of(&self.rows.iter().collect::<Vec<_>>())
     }
 
     fn diagnostics_of(&self, rows: &[&SpeedRow]) -> Vec<Diagnostic> {
         let (req, u) = (&self.request, self.request.unit);
-        let mut out = diagnose::parameters(rows.iter().map(|r| &r.params), &SPEED_SETS);
+        let mut out = self.noted.clone();
+        out.extend(diagnose::parameters(rows.iter().map(|r| &r.params), &SPEED_SETS));
         if let Some((lo, hi)) = keys::V1.usual {
             let v = (req.swing + req.incoming) * u.si;
             if !(lo..=hi).contains(&v) {

@@ -110,6 +110,10 @@ pub struct Study {
     pub inputs: Vec<Input>,
     /// The design.
     pub design: Design,
+    /// The notes about what the run does not use (a flag of a property the impact does not
+    /// exercise, a config key: [`crate::study::Sources::check_used`]), first among its
+    /// [`diagnostics`](Study::diagnostics); none unless the caller gives them.
+    pub noted: Vec<Diagnostic>,
 }
 
 /// A result field summarised: its key, unit and value.
@@ -146,7 +150,7 @@ impl Study {
             }
             inputs.push(input);
         }
-        let study = Study { base, inputs, design };
+        let study = Study { base, inputs, design, noted: Vec::new() };
         study.check_each_input_is_read(varies)?;
         Ok(study)
     }
@@ -225,12 +229,13 @@ impl Study {
         Ok(fields.iter().zip(summaries).map(|(&(key, unit, _), summary)| Output { key, unit, summary }).collect())
     }
 
-    /// The study's diagnostics: its base parameters outside their usual ranges, but those drawn
-    /// (their base value is not used: their draws are judged instead), and each input whose
-    /// draws reach outside its usual range.
+    /// The study's diagnostics: its notes ([`Study::noted`]), its base parameters outside their
+    /// usual ranges, but those drawn (their base value is not used: their draws are judged
+    /// instead), and each input whose draws reach outside its usual range.
     pub fn diagnostics(&self) -> Vec<Diagnostic> {
         let drawn: Vec<&str> = self.inputs.iter().map(|i| i.key).collect();
-        let mut out = crate::study::diagnose::parameters([&self.base], &drawn);
+        let mut out = self.noted.clone();
+        out.extend(crate::study::diagnose::parameters([&self.base], &drawn));
         for input in &self.inputs {
             let line =
                 keys::find(input.key).and_then(|spec| crate::params::uncertainty::unusual_draws(spec, &input.dist));
