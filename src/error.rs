@@ -87,6 +87,36 @@ pub enum Error {
         /// The limit on steps x nodes.
         limit: f64,
     },
+    /// The modal solver's closed-form free vibration would take too long to search for its
+    /// peak: too many samples of too many modes over two fundamental periods.
+    #[error(
+        "these parameters need about {work:.2e} mode-samples (limit {limit:.0e}) to follow the free \
+         vibration of {modes} modes over two fundamental periods (f1 = {f1_hz:.3e} Hz) at the fastest \
+         kept mode: the frame is too flexible, or the contact too stiff, for the modal solver; check \
+         ei, mass, length, segments, ks, k1"
+    )]
+    TooManySamples {
+        /// Estimated mode-samples.
+        work: f64,
+        /// Retained flexible modes.
+        modes: usize,
+        /// First frame frequency, Hz.
+        f1_hz: f64,
+        /// The limit on mode-samples.
+        limit: f64,
+    },
+    /// The tangential contact of an oblique or spinning ball would take too many steps.
+    #[error(
+        "the tangential contact needs up to {steps:.2e} steps over the longest contact allowed \
+         (limit {limit:.0e}): the ball's spin or the tangential spring is too fast for it; check kt, mb, \
+         ball-radius, ball-inertia-factor, ix"
+    )]
+    TooManyTangentialSteps {
+        /// The steps at most.
+        steps: f64,
+        /// The limit.
+        limit: f64,
+    },
     /// A result came out non-finite (guard; parameter ranges are meant to prevent it).
     #[error("the impact produced a non-finite {field}; the parameters are outside the model's range")]
     NonFinite {

@@ -39,7 +39,7 @@
 //!         |
 //! src/params/            every parameter declared once, validation, config overrides
 //!         |
-//! src/error.rs           the crate's errors
+//! src/error.rs           the crate's errors; src/diagnostic.rs, warnings as data
 //! src/numfmt.rs          how numbers are written in messages and tables (imports nothing)
 //! ```
 //! Arrows point down only: nothing in `model/` or `solve/` knows of tables, plots, files or the
@@ -65,6 +65,7 @@
 //!   impact, the files of a map, atomic writes.
 //! - [`report`]: the paper's numbers beside ours, collected from the experiments' claims.
 //! - [`numfmt`]: how numbers are written, in messages and in tables, for every layer.
+//! - [`diagnostic`]: warnings as data, returned with a result ([`study::diagnose`] checks a run).
 //!
 //! ## Example
 //! The Fig 4 impact with the paper's numerics:
@@ -84,6 +85,7 @@
 //! assert_eq!(msg, "invalid p = 0.9: hysteresis exponent must satisfy 1 < p <= 10");
 //! ```
 
+pub mod diagnostic;
 pub mod error;
 pub mod experiments;
 pub mod model;

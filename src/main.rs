@@ -54,6 +54,15 @@ fn main() -> ExitCode {
                 let _ = e.print();
                 return ExitCode::from(2);
             }
+            // an unknown flag: where its concept lives, or clap's suggestion only if it is near
+            let args: Vec<String> = std::env::args().collect();
+            let names: Vec<String> =
+                <Cli as clap::CommandFactory>::command().get_subcommands().map(|c| c.get_name().to_string()).collect();
+            let names: Vec<&str> = names.iter().map(String::as_str).collect();
+            if let Some(line) = cli::hints::unknown_flag(&e, &cli::hints::command_of(&args, &names)) {
+                cli::common::stderr_line(&line);
+                return ExitCode::from(2);
+            }
             // clap's message spreads over several lines (the allowed values, usage, a hint):
             // keep what names the field and the allowed values, on one line
             let text = e.render().to_string();

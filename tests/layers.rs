@@ -12,9 +12,10 @@ use std::path::{Path, PathBuf};
 /// `cli` (with `main.rs`) is the binary on top: the library never names it, and the test
 /// checks that too (no `crate::cli` anywhere in the library).
 const LAYERS: &[&[&str]] = &[
-    // how numbers are written; the one error type
+    // how numbers are written; the one error type; warnings as data
     &["numfmt"],
     &["error"],
+    &["diagnostic"],
     &["params"],
     &["model"],
     &["solve"],

@@ -73,3 +73,61 @@ fn paper_claims_of_section_4_are_all_listed() {
         assert!(ids.iter().any(|i| i == id), "claim {id} missing");
     }
 }
+
+/// The committed `figures/robustness.csv` (tests/golden.rs holds it to what the code computes).
+fn robustness_rows() -> Vec<std::collections::HashMap<String, String>> {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/figures/robustness.csv");
+    let mut rdr = csv::Reader::from_path(path).unwrap();
+    rdr.deserialize().map(|r| r.unwrap()).collect()
+}
+
+#[test]
+fn every_claim_has_its_conclusion_judged_beside_its_number() {
+    let rows = robustness_rows();
+    assert_eq!(rows.len(), check_claims_file().unwrap().len());
+    for r in &rows {
+        let (share, verdict) = (&r["conclusion_share"], r["conclusion_verdict"].as_str());
+        assert!(!r["conclusion"].is_empty(), "{}: no conclusion", r["id"]);
+        // an empty share is exactly an independent conclusion
+        assert_eq!(share.is_empty(), verdict == "independent", "{}: share {share:?}, verdict {verdict}", r["id"]);
+        if let Ok(s) = share.parse::<f64>() {
+            assert!((0.0..=1.0).contains(&s), "{}: share {s}", r["id"]);
+        }
+    }
+}
+
+#[test]
+fn the_headline_conclusions_stand_where_their_numbers_do_not() {
+    let rows = robustness_rows();
+    let row = |id: &str| rows.iter().find(|r| r["id"] == id).unwrap_or_else(|| panic!("{id} missing"));
+    // the paper's headline claims: (id, conclusion share, verdict on the number)
+    for (id, share, number) in [
+        ("speeds_ks_half_e_a_gain", "1", "part"),
+        ("speeds_ks_half_serve_gain", "1", "holds"),
+        ("speeds_60_50_serve_gain", "1", "not at all"),
+        ("speeds_60_50_forehand_gain", "1", "not at all"),
+        ("fig8_theta_r4_50lb", "1", "part"),
+        ("fig9_serve_gain", "1", "part"),
+    ] {
+        let r = row(id);
+        assert_eq!((r["conclusion_share"].as_str(), r["conclusion_verdict"].as_str()), (share, "holds"), "{id}");
+        assert_eq!(r["verdict"], number, "{id}");
+    }
+    // where the conclusion is contested, pinned as computed
+    assert_eq!(row("fig4_e_a")["conclusion_verdict"], "contested");
+    assert_eq!(row("fig6_vibration_gone_at_10ms")["conclusion_verdict"], "contested");
+}
+
+#[test]
+fn arithmetic_on_inputs_or_other_claims_is_a_consistency_check() {
+    use racket_impact::report::Kind;
+    let claims = check_claims_file().unwrap();
+    for id in ["concrete_e", "ball_p_for_e_0_762", "modes_period", "intro_swing_angle", "fig9_serve_gain"] {
+        let c = claims.iter().find(|c| c.id == id).unwrap();
+        assert_eq!(c.kind, Kind::Consistency, "{id}");
+    }
+    for id in ["concrete_tau", "fig4_e_a", "speeds_60_50_serve_gain", "fig8_theta_r4_50lb"] {
+        let c = claims.iter().find(|c| c.id == id).unwrap();
+        assert_eq!(c.kind, Kind::Reproduction, "{id}");
+    }
+}

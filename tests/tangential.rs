@@ -294,3 +294,28 @@ fn the_string_option_is_used_or_refused() {
     let (code, _, err) = cli(&["sweep", "--string", "tcs-16,nxt-16", "--angle-deg", "30"]);
     assert_eq!(code, Some(0), "{err}");
 }
+
+/// Issue 32, trap class 1: over the whole accepted range of the ball's inertia factor (0.1 to
+/// the thin shell's 2/3), soft to stiff tangential springs, light to heavy balls, both solvers
+/// and both laws, every impact comes back with a result whose energy error (the normal ledger's
+/// and the tangential one's) is within the limit every result is held to; none is refused.
+#[test]
+fn every_accepted_ball_passes_the_energy_check() {
+    let limit = racket_impact::solve::fd::ENERGY_ERROR_LIMIT;
+    for solver in [SolverKind::Fd, SolverKind::Modal] {
+        for law in [TangentialLaw::Elastic, TangentialLaw::Physical] {
+            for alpha in [0.1, 0.4, 0.55, 2.0 / 3.0] {
+                for (kt, mb) in [(1.0e3, 0.057), (2.0e4, 0.057), (1.0e8, 0.057), (2.0e4, 0.01), (2.0e4, 0.3)] {
+                    let mut p = Params::default();
+                    p.numerics.solver = solver;
+                    p.oblique.tangential = law;
+                    (p.oblique.angle_deg, p.oblique.spin_rpm) = (30.0, 2000.0);
+                    (p.oblique.ball_inertia_factor, p.oblique.kt, p.ball.mass) = (alpha, kt, mb);
+                    let r = simulate(&p).unwrap_or_else(|e| panic!("{solver:?} {law:?} {alpha} {kt} {mb}: {e}"));
+                    assert!(r.energy_error <= limit, "{solver:?} {law:?} {alpha} {kt} {mb}: {}", r.energy_error);
+                    assert!(r.spin_out_rpm.abs() < 1e5, "{solver:?} {law:?} {alpha}: spin {}", r.spin_out_rpm);
+                }
+            }
+        }
+    }
+}

@@ -97,6 +97,67 @@ const CONFIG: &str = "ks = 3e4\n";
 const RACKET: &str = "name = \"g\"\nlength_in = 27\nmass_g = 300\nbalance_cm = 33\nswingweight_kg_cm2 = 320\n\
                       twistweight_kg_cm2 = 14\nfrequency_hz = 130\nhead_size_sq_in = 100\ntension_lb = 55\n";
 
+// ---- 1. hangs and nonsense inside the documented ranges ----
+
+#[test]
+fn inertia_factor_1e_30_is_refused_by_every_command() {
+    let s = Scratch::new();
+    for args in [
+        vec!["simulate", "--angle-deg", "30", "--ball-inertia-factor", "1e-30"],
+        vec!["sweep", "--angle-deg", "30", "--ball-inertia-factor", "1e-30", "--x", "0.1,0.2"],
+        vec!["speed", "--swing", "100", "--ball-inertia-factor", "1e-30"],
+    ] {
+        refused(&s.run(&args), "invalid ball-inertia-factor = 1e-30");
+    }
+}
+
+#[test]
+fn tiny_inertia_factors_never_run_to_nonsense() {
+    let s = Scratch::new();
+    for alpha in ["1e-25", "1e-100", "1e-300", "0.05", "0.7", "1"] {
+        let o = s.run(&["simulate", "--angle-deg", "30", "--ball-inertia-factor", alpha]);
+        refused(&o, "ball-inertia-factor");
+        assert!(stderr(&o).contains("2/3"), "the range is stated: {}", stderr(&o));
+    }
+    // the ends of the range run and pass the energy check
+    for alpha in ["0.1", "0.4", "0.55", "0.6666"] {
+        let o = s.run(&["simulate", "--angle-deg", "30", "--ball-inertia-factor", alpha, "--format", "json"]);
+        assert!(o.status.success(), "{alpha}: {}", stderr(&o));
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        let err = v["energy_error"].as_f64().unwrap();
+        assert!(err < 1e-4, "{alpha}: energy_error {err}");
+    }
+}
+
+/// Accepted: exit 0 with a result that passes the energy and momentum checks of any impact;
+/// or refused in one line naming the limit.
+#[track_caller]
+fn bounded(o: &Output, what: &str) {
+    if o.status.success() {
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
+        let (e, m) = (v["energy_error"].as_f64().unwrap(), v["momentum_error"].as_f64().unwrap());
+        assert!(e < 1e-4 && m < 1e-6, "{what}: energy_error {e}, momentum_error {m}");
+    } else {
+        assert_eq!(o.status.code(), Some(2), "{what}: {}", stderr(o));
+        assert_eq!(stderr(o).lines().count(), 1, "{what}: {}", stderr(o));
+        assert!(stderr(o).contains("limit"), "{what}: {}", stderr(o));
+    }
+}
+
+#[test]
+fn modal_stiff_contact_is_refused_like_fd() {
+    let s = Scratch::new();
+    let stiff = ["--v1", "1e-3", "--k1", "1e9", "--ks", "1e12", "--segments", "400", "--ei", "1e-2"];
+    let mut args = vec!["simulate", "--solver", "fd"];
+    args.extend(stiff);
+    refused(&s.run(&args), "limit");
+    // the modal solver takes no time step: its contact steps and its search of the free
+    // vibration are bounded (solve::modal::MAX_MODE_SAMPLES), so it finishes or refuses
+    let mut args = vec!["simulate", "--solver", "modal", "--format", "json"];
+    args.extend(stiff);
+    bounded(&s.run(&args), "simulate --solver modal");
+}
+
 // ---- 2. an output that is an input ----
 
 #[test]

@@ -102,7 +102,9 @@ fn claims_give_every_claim_a_verdict() {
     let mut lines = csv.lines();
     let head = lines.next().unwrap();
     assert!(
-        head.starts_with("id,unit,paper,band_lo,band_hi,nominal,numerical,q05,q50,q95,verdict,top_input"),
+        head.starts_with(
+            "id,unit,paper,band_lo,band_hi,nominal,numerical,q05,q50,q95,verdict,conclusion,conclusion_share,conclusion_verdict,top_input"
+        ),
         "{head}"
     );
     let rows: Vec<&str> = lines.collect();
@@ -123,7 +125,8 @@ fn claims_that_no_sampled_input_moves_are_independent_not_holding_or_failing() {
     for id in ["ball_p_for_e_0_762", "strings_ks_40lb", "strings_ks_80lb"] {
         assert_eq!(verdict(id), "independent", "{id}");
     }
-    assert_eq!(csv.matches(",independent,").count(), 3, "{csv}");
+    let independent = csv.lines().skip(1).filter(|l| l.split(',').nth(10) == Some("independent")).count();
+    assert_eq!(independent, 3, "{csv}");
     assert_ne!(verdict("serve_peak_force"), "independent");
     // the text output counts the verdicts, the independent ones apart
     let out = bin(&["uncertainty", "--claims", "--samples", "2"]);
@@ -132,6 +135,10 @@ fn claims_that_no_sampled_input_moves_are_independent_not_holding_or_failing() {
     let json = bin(&["uncertainty", "--claims", "--samples", "2", "--format", "json"]);
     let v: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
     assert_eq!(v["outputs"]["strings_ks_40lb"]["verdict"], "independent");
+    // so are their conclusions: no share
+    assert_eq!(v["outputs"]["strings_ks_40lb"]["conclusion_verdict"], "independent");
+    assert!(v["outputs"]["strings_ks_40lb"]["conclusion_share"].is_null());
+    assert!(v["outputs"]["serve_peak_force"]["conclusion_share"].is_number());
     assert_eq!(v["verdicts"]["independent"], 3);
     let total: u64 =
         ["holds", "part", "not at all", "independent"].iter().map(|k| v["verdicts"][k].as_u64().unwrap()).sum();

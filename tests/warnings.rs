@@ -198,3 +198,22 @@ fn the_racket_command_warns_as_simulate_does() {
     assert_eq!(out.status.code(), Some(0));
     assert!(stderr(&out).is_empty(), "{}", stderr(&out));
 }
+
+/// The warnings are data: the JSON output carries each under `diagnostics` (kind, field, the
+/// sentence stderr prints), with `--quiet` too, which silences only the printing.
+#[test]
+fn json_output_carries_the_warnings_quiet_or_not() {
+    let loud = run(&["simulate", "--ks", "40", "--format", "json"]);
+    let quiet = run(&["--quiet", "simulate", "--ks", "40", "--format", "json"]);
+    assert_eq!(stdout(&loud), stdout(&quiet));
+    assert!(stderr(&quiet).is_empty(), "{}", stderr(&quiet));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&quiet)).unwrap();
+    let d = v["diagnostics"].as_array().unwrap();
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert_eq!((d[0]["kind"].as_str(), d[0]["field"].as_str()), (Some("unusual"), Some("ks")));
+    let line = stderr(&loud).lines().find(|l| l.starts_with("warning:")).unwrap().to_string();
+    assert_eq!(line, format!("warning: {}", d[0]["sentence"].as_str().unwrap()));
+    // a plausible run says nothing, as an empty list
+    let calm: serde_json::Value = serde_json::from_str(&stdout(&run(&["simulate", "--format", "json"]))).unwrap();
+    assert_eq!(calm["diagnostics"], serde_json::json!([]));
+}

@@ -4,8 +4,7 @@
 use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
-use racket_impact::numfmt::sig;
-use racket_impact::params::keys;
+use racket_impact::diagnostic::Diagnostic;
 use racket_impact::params::Params;
 use racket_impact::study::Sources;
 use racket_impact::{Error, Result};
@@ -78,74 +77,17 @@ pub fn warn(message: &str) {
     }
 }
 
-/// Warn, once each, about every parameter of `params` outside its usual range (the ranges are
-/// declared with the parameters) and a first frame frequency no racket has.
-pub fn warn_params<'a>(params: impl IntoIterator<Item = &'a Params>) {
-    warn_params_except(params, &[]);
-}
-
-/// [`warn_params`] but for the parameters `skip`, which the command sets itself from its own
-/// options and warns about in their terms.
-pub fn warn_params_except<'a>(params: impl IntoIterator<Item = &'a Params>, skip: &[&str]) {
-    let mut said: Vec<String> = skip.iter().map(|k| k.to_string()).collect();
-    for p in params {
-        let f1 = racket_impact::model::basis::Basis::of(&p.racket, p.numerics.segments).omega[0]
-            / (2.0 * std::f64::consts::PI);
-        let (lo, hi) = keys::USUAL_F1_HZ;
-        let frequency = (!(lo..=hi).contains(&f1)).then(|| {
-            format!(
-                "first frame frequency f1 = {} Hz is outside the usual {lo}..{hi} Hz of rackets (from EI, mass and length; computed anyway)",
-                sig(f1, 4)
-            )
-        });
-        let density = racket_impact::racket::density_warning(&p.racket);
-        for line in keys::unusual(p)
-            .into_iter()
-            .chain(frequency)
-            .chain(density)
-            .chain(racket_impact::params::strings::missing_data_note(&p.oblique))
-        {
-            // one line per parameter, the first unusual value it takes
-            let key = line.split(' ').next().unwrap_or_default().to_string();
-            if !said.contains(&key) {
-                warn(&line);
-                said.push(key);
-            }
-        }
+/// Print each diagnostic as one `warning:` line, unless `--quiet` (the only place the library's
+/// diagnostics are printed).
+pub fn print_diagnostics<'a>(diagnostics: impl IntoIterator<Item = &'a Diagnostic>) {
+    for d in diagnostics {
+        warn(&d.sentence);
     }
 }
 
-/// Warn when the largest twist at the end of an impact is beyond the small-angle model.
-pub fn warn_twist(theta_end_deg: f64) {
-    if theta_end_deg.abs() > keys::SMALL_TWIST_DEG {
-        warn(&format!(
-            "twist theta_end = {} deg is beyond the small-angle model's usual |theta| <= {} deg (computed anyway; check ks, ix and r)",
-            sig(theta_end_deg, 3),
-            keys::SMALL_TWIST_DEG
-        ));
-    }
-}
-
-/// Warn when the ball's largest compression `y0_m` exceeds its radius: the paper's linear ball
-/// (F = k1 y) is then outside its range, and the radius law's friction lever `R - delta` is
-/// clamped at zero.
-pub fn warn_squash(params: &Params, y0_m: f64) {
-    let radius = params.oblique.ball_radius;
-    if y0_m > radius {
-        let lever = if !params.oblique.is_normal()
-            && params.oblique.tangential.has(racket_impact::params::TangentialLaw::Radius)
-        {
-            "; the radius law's friction lever R - delta is clamped at 0, so the spin results rest on that clamp"
-        } else {
-            ""
-        };
-        warn(&format!(
-            "ball compression y0 = {} mm exceeds the ball's radius {} mm: the paper's linear ball (F = k1 y) is \
-             outside its range (computed anyway; check v1 and k1){lever}",
-            sig(1e3 * y0_m, 3),
-            sig(1e3 * radius, 3)
-        ));
-    }
+/// The diagnostics as the JSON outputs carry them, under the key `diagnostics`.
+pub fn diagnostics_json(diagnostics: &[Diagnostic]) -> Result<serde_json::Value> {
+    serde_json::to_value(diagnostics).map_err(|e| Error::io("<json>", e))
 }
 
 /// Output format.
@@ -160,17 +102,17 @@ pub enum Format {
 /// takes ([`KeySet`]).
 #[derive(Args, Debug)]
 pub struct Common<K: KeySet> {
-    /// Racket description file (TOML, player units) or preset name; see `racket-impact racket --list`
-    #[arg(long)]
-    pub racket: Option<String>,
     /// TOML file with any of the parameter flags below as keys (flags win; a key this command
     /// does not use is named in one warning)
-    #[arg(long)]
+    #[arg(long, help_heading = "Impact")]
     pub config: Option<PathBuf>,
+    /// Racket description file (TOML, player units) or preset name; see `racket-impact racket --list`
+    #[arg(long, help_heading = "Racket")]
+    pub racket: Option<String>,
     #[command(flatten)]
     pub overrides: OverrideArgs<K>,
     /// Output format
-    #[arg(long, value_enum, default_value_t = Format::Text)]
+    #[arg(long, value_enum, default_value_t = Format::Text, help_heading = "Output")]
     pub format: Format,
 }
 

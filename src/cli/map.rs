@@ -9,7 +9,7 @@ use racket_impact::render::map_files::Outputs;
 use racket_impact::study::map::{MapRequest, Quantity};
 use racket_impact::Result;
 
-use super::common::{out, outln, warn, warn_params, warn_twist, Common, Format, Progress};
+use super::common::{out, outln, print_diagnostics, Common, Format, Progress};
 use super::overrides::MapKeys;
 
 /// What each quantity is, in the help.
@@ -46,7 +46,7 @@ pub struct MapArgs {
     pub nr: usize,
     /// Output CSV; the PNG and JSON go next to it with the same stem (a symbolic link: its
     /// target is written, the link kept, and the PNG and JSON go next to the target, with its stem)
-    #[arg(long)]
+    #[arg(long, help_heading = "Output")]
     pub out: Option<PathBuf>,
     /// Difference map against this racket (file or preset): B - A with A = --racket
     #[arg(long, conflicts_with = "compare_tension_lb")]
@@ -116,19 +116,6 @@ pub fn run(a: MapArgs) -> Result<()> {
         }
         Ok(())
     })?;
-    warn_params(configs.iter().map(|(_, p)| p));
-    let theta = ["theta_end_deg", "theta_end_deg_a", "theta_end_deg_b"]
-        .iter()
-        .filter_map(|c| map.table.column(c))
-        .flatten()
-        .filter(|v| v.is_finite())
-        .max_by(|a, b| a.abs().total_cmp(&b.abs()));
-    if let Some(theta) = theta {
-        warn_twist(theta);
-    }
-    let n_re = map.recontacts();
-    if n_re > 0 {
-        warn(&format!("{n_re} map points have a re-contact after separation (flagged in the recontact column)"));
-    }
+    print_diagnostics(&map.diagnostics(configs.iter().map(|(_, p)| p)));
     Ok(())
 }

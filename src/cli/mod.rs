@@ -7,6 +7,7 @@ use clap::{Parser, Subcommand};
 
 pub mod common;
 pub mod figures;
+pub mod hints;
 pub mod map;
 pub mod modes;
 pub mod overrides;
@@ -18,7 +19,18 @@ pub mod sweep;
 pub mod uncertainty;
 
 #[derive(Parser, Debug)]
-#[command(name = "racket-impact", version, about = "Ball on a flexible tennis racket: R. Cross (2000) replicated")]
+#[command(
+    name = "racket-impact",
+    version,
+    about = "Ball on a flexible tennis racket: R. Cross (2000) replicated",
+    after_help = "Start here: racket-impact simulate (one ball on the paper's racket at the centre of its strings: e_A, contact time, twist, where the energy went)\n\
+                  Examples:\n  \
+                  racket-impact simulate --x 0.1 --ks 3e4\n  \
+                  racket-impact simulate --racket tweener --angle-deg 30 --spin-rpm 2000\n  \
+                  racket-impact map --racket tweener --quantity power\n  \
+                  racket-impact speed --racket tweener --swing 100 --incoming 60 --compare-tension-lb 50,60\n\
+                  Each command's --help groups its options (impact, racket, ball, strings, oblique impact, numerics, output)."
+)]
 pub struct Cli {
     /// No warnings on stderr (an implausible but valid value still runs, unremarked)
     #[arg(long, global = true)]

@@ -5,7 +5,7 @@ use racket_impact::model::beam::Beam;
 use racket_impact::numfmt::sig;
 use racket_impact::{Error, Result};
 
-use super::common::{out, warn_params, Common, Format};
+use super::common::{diagnostics_json, out, print_diagnostics, Common, Format};
 use super::overrides::ModesKeys;
 
 #[derive(Args, Debug)]
@@ -29,6 +29,7 @@ pub fn run(a: ModesArgs) -> Result<()> {
     let modes = beam.modes();
     let freqs: Vec<f64> = (1..=a.count).map(|k| modes.frequency_hz(k)).collect();
     let nodes = modes.node_positions(1, &beam.x);
+    let diagnostics = racket_impact::study::diagnose::parameters([&params], &[]);
     let text = match a.common.format {
         Format::Json => {
             let v = serde_json::json!({
@@ -36,6 +37,7 @@ pub fn run(a: ModesArgs) -> Result<()> {
                 "mode1_nodes_m": nodes,
                 "segments": n,
                 "params": params.racket,
+                "diagnostics": diagnostics_json(&diagnostics)?,
             });
             racket_impact::render::json::pretty(&v)?
         }
@@ -63,6 +65,6 @@ pub fn run(a: ModesArgs) -> Result<()> {
         }
     };
     out!("{text}");
-    warn_params([&params]);
+    print_diagnostics(&diagnostics);
     Ok(())
 }

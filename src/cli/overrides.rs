@@ -62,11 +62,29 @@ impl<K: KeySet> Default for OverrideArgs<K> {
     }
 }
 
-/// The clap argument of one parameter: `--KEY <KEY>` with its help; numbers may be negative
-/// (the validation names the range), choices list their names.
+/// The help headings of the parameter flags, in the order the help shows them (the options a
+/// command has of its own come first, under clap's "Options", and the output options last).
+pub const HEADINGS: [&str; 6] = ["Impact", "Racket", "Ball", "Strings", "Oblique impact", "Numerics"];
+
+/// The heading a parameter's flag is listed under in the help: what it describes.
+pub fn heading(key: &str) -> &'static str {
+    match key {
+        "x" | "r" | "v1" => "Impact",
+        "ei" | "mass" | "length" | "ix" | "half-width" | "frame" | "grip" | "hand-stiffness" | "hand-damping"
+        | "grip-length" => "Racket",
+        "mb" | "k1" | "p" | "ball-radius" | "ball-inertia-factor" => "Ball",
+        "ks" | "strings" | "string-stiffening" | "stiffening-deflection" | "string" | "mu-ss" => "Strings",
+        "angle-deg" | "azimuth-deg" | "spin-rpm" | "mu" | "kt" | "tangential" => "Oblique impact",
+        _ => "Numerics",
+    }
+}
+
+/// The clap argument of one parameter: `--KEY <KEY>` with its help under its [`heading`];
+/// numbers may be negative (the validation names the range), choices list their names.
 fn arg(spec: &ParamSpec, defaults: &Params, command: &str) -> Arg {
     let arg = Arg::new(spec.key)
         .long(spec.key)
+        .help_heading(heading(spec.key))
         .value_name(spec.key.to_uppercase().replace('-', "_"))
         .action(ArgAction::Set)
         .help(help(spec, defaults, command));
@@ -114,7 +132,10 @@ impl<K: KeySet> clap::Args for OverrideArgs<K> {
             Ok((p, _)) => p,
             Err(_) => Params::default(),
         };
-        keys::ALL.iter().filter(|s| K::takes(s.key)).fold(cmd, |cmd, spec| cmd.arg(arg(spec, &defaults, K::COMMAND)))
+        // grouped by heading, in the order of HEADINGS, each group in the declarations' order
+        let mut specs: Vec<&ParamSpec> = keys::ALL.iter().filter(|s| K::takes(s.key)).collect();
+        specs.sort_by_key(|s| HEADINGS.iter().position(|h| *h == heading(s.key)));
+        specs.into_iter().fold(cmd, |cmd, spec| cmd.arg(arg(spec, &defaults, K::COMMAND)))
     }
 
     fn augment_args_for_update(cmd: Command) -> Command {

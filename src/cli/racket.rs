@@ -6,7 +6,7 @@ use racket_impact::params;
 use racket_impact::racket::{self, Fitted};
 use racket_impact::{Error, Result};
 
-use super::common::{out, outln, warn_params, Format};
+use super::common::{diagnostics_json, out, outln, print_diagnostics, Format};
 
 #[derive(Args, Debug)]
 pub struct RacketArgs {
@@ -40,11 +40,12 @@ pub fn run(a: RacketArgs) -> Result<()> {
     let numerics = params::Numerics { segments: a.segments, ..Default::default() };
     let mut p = fitted.params(params::Impact::default(), numerics);
     params::keys::face_centre_impact(&mut p);
-    warn_params([&p]);
+    let diagnostics = racket_impact::study::diagnose::parameters([&p], &[]);
+    print_diagnostics(&diagnostics);
     let text = match a.format {
         Format::Text => text(&fitted),
         Format::Csv => fitted.report.table().to_csv(),
-        Format::Json => json(&fitted)?,
+        Format::Json => json(&fitted, &diagnostics)?,
     };
     out!("{text}");
     Ok(())
@@ -168,7 +169,7 @@ fn text(fitted: &Fitted) -> String {
 
 /// The fit report's rows as objects (numbers as numbers), with the model's racket, strings and
 /// ball.
-fn json(fitted: &Fitted) -> Result<String> {
+fn json(fitted: &Fitted, diagnostics: &[racket_impact::diagnostic::Diagnostic]) -> Result<String> {
     let mut t = fitted.report.table();
     t.name = "fit".to_string();
     let value = |v: serde_json::Result<serde_json::Value>| v.map_err(|e| Error::io("<json>", e));
@@ -178,6 +179,7 @@ fn json(fitted: &Fitted) -> Result<String> {
             ("racket", value(serde_json::to_value(fitted.racket))?),
             ("strings", value(serde_json::to_value(fitted.strings))?),
             ("ball", value(serde_json::to_value(fitted.ball))?),
+            ("diagnostics", diagnostics_json(diagnostics)?),
         ],
     )
 }

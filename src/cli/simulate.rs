@@ -7,7 +7,7 @@ use racket_impact::numfmt::sig;
 use racket_impact::solve::{Model, SeriesOptions};
 use racket_impact::{Error, Result};
 
-use super::common::{out, warn, warn_params, warn_squash, warn_twist, Common, Format};
+use super::common::{diagnostics_json, out, print_diagnostics, Common, Format};
 use super::overrides::SimulateKeys;
 
 /// Sample spacing of the time series unless given, s.
@@ -20,13 +20,13 @@ pub struct SimulateArgs {
     #[command(flatten)]
     pub common: Common<SimulateKeys>,
     /// Also write the impact's time series (t, F, y_b, Y_T, theta, every energy term) as CSV
-    #[arg(long)]
+    #[arg(long, help_heading = "Output")]
     pub series: Option<PathBuf>,
     /// Sample spacing of the time series, s
-    #[arg(long, default_value_t = DEFAULT_SERIES_DT, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = DEFAULT_SERIES_DT, allow_hyphen_values = true, help_heading = "Output")]
     pub series_dt: f64,
     /// Extend the time series to at least this time, s
-    #[arg(long, default_value_t = DEFAULT_SERIES_END, allow_hyphen_values = true)]
+    #[arg(long, default_value_t = DEFAULT_SERIES_END, allow_hyphen_values = true, help_heading = "Output")]
     pub series_end: f64,
 }
 
@@ -84,6 +84,7 @@ pub fn run(a: SimulateArgs) -> Result<()> {
     // (from the cached modes: the modal solver runs where the explicit one would refuse)
     let f1_hz = racket_impact::model::basis::Basis::of(&params.racket, params.numerics.segments).omega[0]
         / (2.0 * std::f64::consts::PI);
+    let diagnostics = racket_impact::study::diagnose::impact(&params, &result);
     let text = match a.common.format {
         Format::Json => {
             let mut v = racket_impact::render::impact::result_json(&params, &result);
@@ -92,6 +93,7 @@ pub fn run(a: SimulateArgs) -> Result<()> {
                 v["spin_convention"] = racket_impact::render::impact::SIMULATE_SPIN_CONVENTION.into();
             }
             v["f1_hz"] = f1_hz.into();
+            v["diagnostics"] = diagnostics_json(&diagnostics)?;
             racket_impact::render::json::pretty(&v)?
         }
         Format::Csv => racket_impact::render::impact::result_csv(&params, &result),
@@ -106,11 +108,6 @@ pub fn run(a: SimulateArgs) -> Result<()> {
         out!("{text}");
         Ok(())
     })?;
-    warn_params([&params]);
-    warn_twist(result.theta_end_deg);
-    warn_squash(&params, result.y0_m);
-    if result.recontact {
-        warn("the vibrating frame met the ball again after separation (re-contact not modelled)");
-    }
+    print_diagnostics(&diagnostics);
     Ok(())
 }

@@ -5,11 +5,7 @@ use clap::{Args, ValueEnum};
 use racket_impact::study::speed::{SpeedRequest, SpeedUnit};
 use racket_impact::Result;
 
-use racket_impact::numfmt::sig;
-use racket_impact::params::keys;
-use racket_impact::study::speed::SPEED_SETS;
-
-use super::common::{out, warn, warn_params_except, warn_twist, Common, Format};
+use super::common::{out, print_diagnostics, Common, Format};
 use super::overrides::SpeedKeys;
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
@@ -89,38 +85,7 @@ pub fn run(a: SpeedArgs) -> Result<()> {
         Format::Text => comparison.text(),
     };
     out!("{text}");
-    // the impact speed, incidence and spin come from this command's options: said in them
-    warn_params_except(comparison.rows.iter().map(|r| &r.params), &SPEED_SETS);
-    let u = a.unit.unit();
-    if let Some((lo, hi)) = keys::V1.usual {
-        let v = (a.swing + a.incoming) * u.si;
-        if !(lo..=hi).contains(&v) {
-            warn(&format!(
-                "swing + incoming = {} {} (the impact speed) is outside the usual {}..{} {} (computed anyway)",
-                sig(a.swing + a.incoming, 4),
-                u.label,
-                sig(lo / u.si, 3),
-                sig(hi / u.si, 3),
-                u.label
-            ));
-        }
-    }
-    if let Some(line) = keys::SPIN_RPM.unusual(a.incoming_spin_rpm) {
-        warn(&line.replacen(keys::SPIN_RPM.key, "incoming-spin-rpm", 1));
-    }
-    if let Some(angle) =
-        comparison.rows.iter().map(|r| r.params.oblique.angle_deg).find(|&d| keys::ANGLE_DEG.unusual(d).is_some())
-    {
-        warn(&format!(
-            "the swing path of {} deg meets the face at {} deg from its normal, beyond the usual incidences (computed anyway)",
-            a.swing_path_deg,
-            sig(angle, 3)
-        ));
-    }
-    if let Some(theta) =
-        comparison.rows.iter().map(|r| r.result.theta_end_deg).max_by(|a, b| a.abs().total_cmp(&b.abs()))
-    {
-        warn_twist(theta);
-    }
+    // (the impact speed, incidence and spin come from this command's options: said in them)
+    print_diagnostics(&comparison.diagnostics());
     Ok(())
 }

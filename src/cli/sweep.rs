@@ -9,7 +9,7 @@ use racket_impact::params::{keys, Overrides};
 use racket_impact::study::sweep::Sweep;
 use racket_impact::Result;
 
-use super::common::{stream_stdout, warn_params, warn_twist, Progress};
+use super::common::{print_diagnostics, stream_stdout, Progress};
 
 #[derive(Args, Debug)]
 pub struct SweepArgs {
@@ -119,8 +119,10 @@ pub fn run(a: SweepArgs) -> Result<()> {
     if let Some(f) = file {
         f.commit()?;
     }
-    warn_params(representatives.iter());
-    warn_twist(theta_max);
+    use racket_impact::study::diagnose;
+    print_diagnostics(
+        &diagnose::parameters(&representatives, &[]).into_iter().chain(diagnose::twist(theta_max)).collect::<Vec<_>>(),
+    );
     Ok(())
 }
 

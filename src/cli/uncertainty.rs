@@ -7,12 +7,11 @@ use std::path::PathBuf;
 use clap::Args;
 use racket_impact::experiments::robustness;
 use racket_impact::params::keys;
-use racket_impact::params::uncertainty::unusual_draws;
 use racket_impact::study::sensitivity::Design;
 use racket_impact::study::uncertainty::{few_samples, not_meaningful, summary_json, Study, DEFAULT_SAMPLES};
 use racket_impact::{Error, Result};
 
-use super::common::{out, warn, warn_params_except, Common, Format, Progress};
+use super::common::{out, print_diagnostics, warn, Common, Format, Progress};
 use super::overrides::UncertaintyKeys;
 
 #[derive(Args, Debug)]
@@ -31,7 +30,7 @@ pub struct UncertaintyArgs {
     #[arg(long)]
     pub seed: Option<u32>,
     /// Write the output (in --format) to this file, atomically, instead of standard output
-    #[arg(long)]
+    #[arg(long, help_heading = "Output")]
     pub out: Option<PathBuf>,
     /// Every paper claim under the declared uncertainty of the paper's inputs (the robustness
     /// experiment); takes only --samples, --seed, --format and --out
@@ -116,14 +115,7 @@ pub fn run(a: UncertaintyArgs) -> Result<()> {
     if let Some(line) = few_samples(samples) {
         warn(&line);
     }
-    // the base value of a drawn parameter is not used: its draws are judged instead
-    let drawn: Vec<&str> = study.inputs.iter().map(|i| i.key).collect();
-    warn_params_except([&study.base], &drawn);
-    for input in &study.inputs {
-        if let Some(line) = keys::find(input.key).and_then(|spec| unusual_draws(spec, &input.dist)) {
-            warn(&line);
-        }
-    }
+    print_diagnostics(&study.diagnostics());
     Ok(())
 }
 
@@ -168,6 +160,9 @@ fn run_claims(a: UncertaintyArgs) -> Result<()> {
                 v["nominal"] = r.nominal.into();
                 v["numerical"] = r.numerical.into();
                 v["verdict"] = r.verdict.name().into();
+                v["conclusion"] = r.claim.conclusion.clone().into();
+                v["conclusion_share"] = r.conclusion_share.into();
+                v["conclusion_verdict"] = r.conclusion.name().into();
                 outputs.insert(r.claim.id.clone(), v);
             }
             let inputs: Vec<serde_json::Value> = inputs
@@ -178,11 +173,17 @@ fn run_claims(a: UncertaintyArgs) -> Result<()> {
                     })
                 })
                 .collect();
-            let verdicts: serde_json::Map<String, serde_json::Value> =
-                robustness::tally(&rows).iter().map(|(v, n)| (v.name().to_string(), (*n).into())).collect();
+            let (counts, borderline) = robustness::tally(&rows);
+            let mut verdicts: serde_json::Map<String, serde_json::Value> =
+                counts.iter().map(|(v, n)| (v.name().to_string(), (*n).into())).collect();
+            verdicts.insert("borderline".into(), borderline.into());
+            let (counts, borderline) = robustness::conclusion_tally(&rows);
+            let mut conclusion_verdicts: serde_json::Map<String, serde_json::Value> =
+                counts.iter().map(|(v, n)| (v.name().to_string(), (*n).into())).collect();
+            conclusion_verdicts.insert("borderline".into(), borderline.into());
             json_text(&serde_json::json!({
                 "samples": samples, "seed": seed, "runs": design.runs(), "inputs": inputs, "outputs": outputs,
-                "verdicts": verdicts
+                "verdicts": verdicts, "conclusion_verdicts": conclusion_verdicts
             }))?
         }
     };
@@ -199,8 +200,8 @@ fn claims_text(rows: &[robustness::ClaimRobustness], samples: u64, seed: u32, ru
     use racket_impact::numfmt::sig;
     let mut s = format!(
         "{samples} base samples x 11 = {runs} evaluations of every claim (modal solver), seed {seed}\n\
-         {:<32} {:>10} {:>10} {:>10} {:>10}  {:<11} top inputs (total index)\n",
-        "claim", "nominal", "q05", "q50", "q95", "verdict"
+         {:<32} {:>10} {:>10} {:>10} {:>10}  {:<11} {:<11} {:>10}  top inputs (total index)\n",
+        "claim", "nominal", "q05", "q50", "q95", "verdict", "conclusion", "share"
     );
     if let Some(line) = not_meaningful(samples) {
         s.insert_str(s.find('\n').unwrap_or(0) + 1, &line);
@@ -209,13 +210,15 @@ fn claims_text(rows: &[robustness::ClaimRobustness], samples: u64, seed: u32, ru
         let top: Vec<String> =
             robustness::top_two(&r.summary).iter().map(|(k, v)| format!("{k} {}", sig(*v, 2))).collect();
         s.push_str(&format!(
-            "{:<32} {:>10} {:>10} {:>10} {:>10}  {:<11} {}\n",
+            "{:<32} {:>10} {:>10} {:>10} {:>10}  {:<11} {:<11} {:>10}  {}\n",
             r.claim.id,
             sig(r.nominal, 4),
             sig(r.summary.q05, 4),
             sig(r.summary.q50, 4),
             sig(r.summary.q95, 4),
             r.verdict.name(),
+            r.conclusion.name(),
+            r.conclusion_share.map_or("-".to_string(), |v| sig(v, 3)),
             top.join(", ")
         ));
     }

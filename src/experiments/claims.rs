@@ -7,6 +7,7 @@
 
 use serde::Deserialize;
 
+pub use super::conclusion::Check;
 use super::Context;
 use crate::error::{Error, Result};
 
@@ -48,6 +49,29 @@ pub const MIN_REL_TOLERANCE: f64 = 0.005;
 /// Smallest relative tolerance for values the paper itself calls approximate ("about", "~").
 pub const APPROXIMATE_REL_TOLERANCE: f64 = 0.10;
 
+/// What agreement on a claim shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Kind {
+    /// Our number comes from running the model on something no other claim already checks:
+    /// agreement is independent evidence.
+    Reproduction,
+    /// Our number is arithmetic on the paper's inputs or on other claims' values (Eq 12 on p,
+    /// 1/f1, a ratio of two claimed e_A, 30 rad/s times a claimed duration): agreement checks
+    /// the paper's arithmetic, not its model.
+    Consistency,
+}
+
+impl Kind {
+    /// The word used in the report and the claims file.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Reproduction => "reproduction",
+            Kind::Consistency => "consistency",
+        }
+    }
+}
+
 /// One row of `golden/paper_claims.csv`.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -70,6 +94,12 @@ pub struct Claim {
     pub abs_tolerance: Option<f64>,
     /// The verdict we expect (pinned).
     pub expected: Verdict,
+    /// An independent reproduction or a consistency check.
+    pub kind: Kind,
+    /// What the paper concludes from the number, in words.
+    pub conclusion: String,
+    /// The same in a form [`Check`] evaluates (`> 0 and < 1`, `< other_id`, `> 1.5 * other_id`).
+    pub conclusion_check: String,
     /// Why it differs, or how it is computed (one line; shown in the report).
     pub note: String,
 }
@@ -80,19 +110,50 @@ impl Claim {
         self.paper.parse().map_err(|_| Error::invalid("paper", &self.paper, format!("claim {}: not a number", self.id)))
     }
 
-    /// The tolerance within which we call the claim reproduced: an absolute bound for claims of
-    /// "about zero"; otherwise half a unit of the last printed digit relative to the value, at
-    /// least [`MIN_REL_TOLERANCE`], or [`APPROXIMATE_REL_TOLERANCE`] for approximate values.
+    /// The tolerance within which we call the claim reproduced ([`tolerance_rule`] in words):
+    /// an absolute bound for claims of "about zero"; otherwise half a unit of the last printed
+    /// digit ([`last_digit_unit`]) relative to the value, at least [`MIN_REL_TOLERANCE`], or
+    /// [`APPROXIMATE_REL_TOLERANCE`] for approximate values.
     pub fn tolerance(&self) -> Result<(ToleranceKind, f64)> {
         if let Some(a) = self.abs_tolerance {
             return Ok((ToleranceKind::Absolute, a));
         }
         let v = self.paper_value()?;
-        let decimals = self.paper.split_once('.').map(|(_, d)| d.len()).unwrap_or(0) as i32;
-        let half_unit = 0.5 * 10f64.powi(-decimals) / v.abs();
+        let half_unit = 0.5 * last_digit_unit(&self.paper) / v.abs();
         let floor = if self.approximate { APPROXIMATE_REL_TOLERANCE } else { MIN_REL_TOLERANCE };
         Ok((ToleranceKind::Relative, half_unit.max(floor)))
     }
+
+    /// The conclusion's checkable form, parsed.
+    pub fn check(&self) -> Result<Check> {
+        Check::parse(&self.id, &self.conclusion_check)
+    }
+}
+
+/// The place value of the last digit of a number as printed: 0.01 for "0.44", 1 for "16",
+/// 1e4 for "2e4" (the mantissa's last digit, scaled by the exponent), so "2e4" gets the same
+/// relative half unit as "2".
+pub fn last_digit_unit(printed: &str) -> f64 {
+    let (mantissa, exponent) = match printed.split_once(['e', 'E']) {
+        Some((m, e)) => (m, e.parse::<i32>().unwrap_or(0)),
+        None => (printed, 0),
+    };
+    let decimals = mantissa.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
+    10f64.powi(exponent - decimals)
+}
+
+/// The tolerance rule in words, stated once: the report's head gives it, the robustness
+/// section refers to it.
+pub fn tolerance_rule() -> String {
+    format!(
+        "a claim is reproduced when ours is within half a unit of the last digit the paper prints (in \
+         scientific notation, of the mantissa's last digit: \"2e4\" is 2 +- 0.5 e4, as \"2\" is 2 +- 0.5), relative \
+         to the paper's value and at least {} %; for a value the paper calls approximate (\"about\", \"~\", \
+         \"typically\") at least {} %; and for a claim of \"about zero\" within the absolute bound the claims \
+         file states with it",
+        100.0 * MIN_REL_TOLERANCE,
+        100.0 * APPROXIMATE_REL_TOLERANCE
+    )
 }
 
 /// Parse the compiled-in claims.
@@ -138,5 +199,42 @@ pub struct PaperClaim {
 impl std::fmt::Debug for PaperClaim {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("PaperClaim").field("id", &self.id).finish()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_tolerance_rule_for_every_way_of_printing_a_digit() {
+        assert_eq!(last_digit_unit("0.44"), 0.01);
+        assert_eq!(last_digit_unit("16"), 1.0);
+        assert_eq!(last_digit_unit("5.90"), 0.01);
+        assert_eq!(last_digit_unit("2e4"), 1e4);
+        assert!((last_digit_unit("3.33e4") - 100.0).abs() < 1e-9);
+        let claim = |paper: &str, approximate: bool| Claim {
+            id: "c".into(),
+            experiment: "speeds".into(),
+            claim: String::new(),
+            source: String::new(),
+            unit: String::new(),
+            paper: paper.into(),
+            approximate,
+            abs_tolerance: None,
+            expected: Verdict::Reproduced,
+            kind: Kind::Reproduction,
+            conclusion: String::new(),
+            conclusion_check: "> 0".into(),
+            note: String::new(),
+        };
+        // "2 %" and "2e4" are both one significant digit: the same 25 %
+        let (_, two) = claim("2", false).tolerance().unwrap();
+        let (_, two_e4) = claim("2e4", true).tolerance().unwrap();
+        assert_eq!(two, 0.25);
+        assert_eq!(two_e4, two);
+        // the floors
+        assert_eq!(claim("125", false).tolerance().unwrap().1, MIN_REL_TOLERANCE);
+        assert_eq!(claim("19", true).tolerance().unwrap().1, APPROXIMATE_REL_TOLERANCE);
     }
 }

@@ -95,5 +95,6 @@ fn chart(_: &Context, t: &Table) -> Chart {
         bands: vec![],
         // the paper's markers stand at ks 2e4 and 4e4
         vlines: vec![],
+        ..Chart::default()
     }
 }

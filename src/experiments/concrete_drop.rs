@@ -87,5 +87,6 @@ fn chart(_: &Context, t: &Table) -> Chart {
         ],
         bands: vec![],
         vlines: vec![VLine { x: DROP_HEIGHT_100_IN, label: "100 inches".into() }],
+        ..Chart::default()
     }
 }

@@ -107,5 +107,6 @@ fn chart(_: &Context, t: &Table) -> Chart {
         ],
         bands: vec![],
         vlines: vec![],
+        ..Chart::default()
     }
 }

@@ -122,5 +122,6 @@ fn chart(_: &Context, t: &Table) -> Chart {
         ],
         bands: vec![],
         vlines: vec![VLine { x: tau_ms, label: "end of impact".into() }],
+        ..Chart::default()
     }
 }

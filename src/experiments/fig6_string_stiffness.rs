@@ -111,5 +111,6 @@ pub fn stiffness_chart(t: &Table, title: &str, faint_ei: Option<f64>) -> Chart {
         curves,
         bands: vec![],
         vlines: vec![],
+        ..Chart::default()
     }
 }

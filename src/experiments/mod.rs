@@ -41,6 +41,7 @@ use crate::render::plot::Chart;
 use crate::render::table::{Table, Value};
 
 pub mod claims;
+pub mod conclusion;
 pub mod curves;
 pub mod setup;
 

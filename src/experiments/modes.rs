@@ -133,5 +133,6 @@ fn chart(_: &Context, t: &Table) -> Chart {
         curves,
         vlines,
         bands: vec![],
+        ..Chart::default()
     }
 }

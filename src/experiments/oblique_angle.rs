@@ -13,6 +13,7 @@
 
 use super::{col, fit_range, line, on_right, styled, sweep, Context, Experiment, CENTRE_X, V1_OFF_AXIS};
 use crate::error::Result;
+use crate::params::TangentialLaw;
 use crate::render::plot::{Chart, LineStyle};
 use crate::render::table::Table;
 
@@ -77,7 +78,38 @@ fn run(ctx: &Context) -> Result<Table> {
     Ok(t)
 }
 
-fn chart(_: &Context, t: &Table) -> Chart {
+/// A spin below this share of the stiffer bed's, at the same angle, is "about zero".
+const ABOUT_ZERO: f64 = 0.05;
+
+/// Where the softer bed leaves the ball with about no spin at small angles while the stiffer
+/// one spins it, the points (angle, spin) and the note that says why, from the data and the
+/// tangential law in use: a ball that keeps its incoming tangential speed (out/in within
+/// [`ABOUT_ZERO`] of 1) was given back all the tangential spring took (the elastic law's spring
+/// is lossless), one that lost it was slowed by the friction without being spun. `None` where
+/// the data show no such thing.
+fn spin_about_zero(t: &Table, law: TangentialLaw) -> Option<(Vec<f64>, Vec<f64>, String)> {
+    let (soft, stiff) = (t.filter_num("ks_n_per_m", KS[0]), t.filter_num("ks_n_per_m", KS[1]));
+    let (a, spin, vt) = (col(&soft, "angle_deg"), col(&soft, "spin_out_rpm"), col(&soft, "v2_t_m_per_s"));
+    let stiff_spin = col(&stiff, "spin_out_rpm");
+    // the run of small angles (from the first oblique one) where the soft bed's spin is about zero
+    let run: Vec<usize> = (0..a.len())
+        .skip_while(|&k| a[k] <= 0.0)
+        .take_while(|&k| stiff_spin.get(k).is_some_and(|s| spin[k].abs() < ABOUT_ZERO * s.abs()))
+        .collect();
+    let kept: Vec<f64> = run.iter().map(|&k| vt[k] / (V1_OFF_AXIS * a[k].to_radians().sin())).collect();
+    let ratio = kept.iter().sum::<f64>() / kept.len() as f64;
+    let note = if (ratio - 1.0).abs() <= ABOUT_ZERO && law == TangentialLaw::Elastic {
+        "lossless elastic spring gives all back".to_string()
+    } else if (ratio - 1.0).abs() <= ABOUT_ZERO {
+        format!("`{}` law's spring gives all back", law.name())
+    } else {
+        format!("friction slows, `{}` law", law.name())
+    };
+    let note = format!("spin ~0 (ks {}e4): {note}", KS[0] / 1e4);
+    Some((run.iter().map(|&k| a[k]).collect(), run.iter().map(|&k| spin[k]).collect(), note))
+}
+
+fn chart(ctx: &Context, t: &Table) -> Chart {
     let mut curves = Vec::new();
     for (i, ks) in KS.into_iter().enumerate() {
         let s = t.filter_num("ks_n_per_m", ks);
@@ -95,15 +127,21 @@ fn chart(_: &Context, t: &Table) -> Chart {
         line("angle of incidence (mirror rebound)", vec![0.0, 70.0], vec![0.0, 70.0], 0),
         LineStyle::Faint,
     ));
+    let law = ctx.paper_params(CENTRE_X, KS[0]).oblique.tangential;
+    if let Some((a, spin, note)) = spin_about_zero(t, law) {
+        curves.push(styled(on_right(line(note, a, spin, 3)), LineStyle::Points));
+    }
     // both axes fit their curves (from 0)
     let on = |right: bool| {
         let cs = curves.iter().filter(move |c| (c.axis == crate::render::plot::Axis::Right) == right);
         fit_range(cs.flat_map(|c| c.y.clone()), true)
     };
     Chart {
-        title: "Oblique impact at the centre (x 15.8 cm): 30 m/s across the face (azimuth 90 deg), \
-                no incoming spin, mu 0.4, kt 2e4 N/m"
-            .into(),
+        title: format!(
+            "Oblique impact at the centre (x 15.8 cm): 30 m/s across the face (azimuth 90 deg), \
+             no incoming spin, mu 0.4, kt 2e4 N/m, {} law",
+            law.name()
+        ),
         x_label: "incidence angle from the normal (deg)".into(),
         y_label: "rebound angle from the normal (deg),  100 e_A".into(),
         y2_label: Some("outgoing spin (rpm; > 0 topspin along the strings)".into()),
@@ -114,5 +152,6 @@ fn chart(_: &Context, t: &Table) -> Chart {
         curves,
         bands: vec![],
         vlines: vec![],
+        ..Chart::default()
     }
 }

@@ -126,5 +126,6 @@ fn chart(_: &Context, t: &Table) -> Chart {
         curves,
         bands: vec![],
         vlines: vec![],
+        ..Chart::default()
     }
 }

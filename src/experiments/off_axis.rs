@@ -97,6 +97,7 @@ pub fn chart(t: &Table, title: &str, paper: Vec<Curve>) -> Chart {
         curves,
         bands: vec![],
         vlines: vec![],
+        ..Chart::default()
     }
 }
 

@@ -103,6 +103,7 @@ pub fn chart(t: &Table, title: &str, paper: PaperCentre) -> Chart {
             format!("string face (tip to {} cm)", fmt_sig(STRING_FACE_LENGTH * 100.0, 3)),
         )],
         vlines: vec![VLine { x: centre, label: "centre of the strings (15.8 cm)".into() }],
+        ..Chart::default()
     }
 }
 

@@ -10,9 +10,11 @@
 //! `numerical` column is the converged value (`hat` load, N = 320) less it, where the claim
 //! has one: the paper's numerics beside the physical uncertainty.
 
-use super::claims::{Claim, ToleranceKind};
+use super::claims::{Check, Claim, ToleranceKind};
+use super::conclusion::Standing;
 use super::{Context, Experiment, PaperClaim};
 use crate::error::{Error, Result};
+use crate::numfmt::fmt_sig;
 use crate::params::spec::ParamSpec;
 use crate::params::uncertainty::Dist;
 use crate::params::{keys, Overrides, SolverKind};
@@ -85,7 +87,7 @@ impl Robust {
 /// One claim under uncertainty.
 #[derive(Debug, Clone)]
 pub struct ClaimRobustness {
-    /// The claim (paper value, tolerance).
+    /// The claim (paper value, tolerance, conclusion).
     pub claim: Claim,
     /// Our value with the paper's inputs (explicit solver), as in the report.
     pub nominal: f64,
@@ -95,11 +97,43 @@ pub struct ClaimRobustness {
     pub summary: Summary,
     /// The band within which the paper's value counts as reproduced.
     pub band: (f64, f64),
-    /// The verdict.
+    /// The verdict on the number.
     pub verdict: Robust,
+    /// The share of the samples in which the paper's conclusion holds (`None`: no sampled
+    /// input moves what it compares).
+    pub conclusion_share: Option<f64>,
+    /// The verdict on the conclusion.
+    pub conclusion: Standing,
+    /// Whether the conclusion holds at the paper's inputs (the report's values).
+    pub conclusion_nominal: bool,
     /// The same at twice the base samples (same seed: the first half of its rows are these),
     /// where asked for.
-    pub doubled: Option<(Summary, Robust)>,
+    pub doubled: Option<Doubled>,
+}
+
+/// A claim's spread and verdicts at twice the base samples.
+#[derive(Debug, Clone)]
+pub struct Doubled {
+    /// The spread and indices.
+    pub summary: Summary,
+    /// The verdict on the number.
+    pub verdict: Robust,
+    /// The conclusion's share.
+    pub conclusion_share: Option<f64>,
+    /// The verdict on the conclusion.
+    pub conclusion: Standing,
+}
+
+impl ClaimRobustness {
+    /// The verdict on the number changes when the samples double: it is counted apart.
+    pub fn borderline(&self) -> bool {
+        self.doubled.as_ref().is_some_and(|d| d.verdict != self.verdict)
+    }
+
+    /// The verdict on the conclusion changes when the samples double.
+    pub fn conclusion_borderline(&self) -> bool {
+        self.doubled.as_ref().is_some_and(|d| d.conclusion != self.conclusion)
+    }
 }
 
 /// The inputs: every parameter with a declared uncertainty that the paper's impacts use (the
@@ -190,47 +224,97 @@ pub fn study(
     )?;
     let (small, small_rows) = sensitivity::prefix(&design, &rows, samples as usize)?;
     let summaries = sensitivity::summarise_all(&small, &small_rows);
-    let mut twice: Vec<Option<Summary>> = vec![None; claims.len()];
+    let checks: Vec<Check> = claims.iter().map(Claim::check).collect::<Result<_>>()?;
+    let owned_ids: Vec<String> = claims.iter().map(|c| c.id.clone()).collect();
+    let ids: Vec<&str> = owned_ids.iter().map(String::as_str).collect();
+    let small_shares = shares(&ids, &checks, &small_rows[..2 * small.samples()]);
+    let mut twice: Vec<Option<(Summary, Option<f64>)>> = vec![None; claims.len()];
     if doubled {
-        twice = sensitivity::summarise_all(&design, &rows).into_iter().map(Some).collect();
+        let twice_shares = shares(&ids, &checks, &rows[..2 * design.samples()]);
+        twice = sensitivity::summarise_all(&design, &rows).into_iter().zip(twice_shares).map(Some).collect();
     }
+    let ours: Vec<_> = fns.iter().map(|f| (f.ours)(base)).collect::<Result<_>>()?;
+    let nominal: Vec<f64> = ours.iter().map(|o| o.value).collect();
+    let nominal_of = |id: &str| ids.iter().position(|i| *i == id).map(|j| nominal[j]);
     claims
         .into_iter()
-        .zip(fns)
-        .zip(summaries.into_iter().zip(twice))
-        .map(|((claim, f), (summary, twice))| {
-            let ours = (f.ours)(base)?;
+        .zip(ours)
+        .zip(checks)
+        .zip(summaries.into_iter().zip(small_shares).zip(twice))
+        .map(|(((claim, ours), check), ((summary, share), twice))| {
             let band = band(&claim)?;
             let verdict = Robust::of(summary.q05, summary.q95, band);
-            let doubled = twice.map(|s| {
-                let v = Robust::of(s.q05, s.q95, band);
-                (s, v)
+            let doubled = twice.map(|(s, share)| Doubled {
+                verdict: Robust::of(s.q05, s.q95, band),
+                summary: s,
+                conclusion_share: share,
+                conclusion: Standing::of(share),
             });
             Ok(ClaimRobustness {
+                conclusion_nominal: check.holds(ours.value, nominal_of),
                 claim,
                 nominal: ours.value,
                 numerical: ours.converged.map(|c| c - ours.value),
                 summary,
                 band,
                 verdict,
+                conclusion_share: share,
+                conclusion: Standing::of(share),
                 doubled,
             })
         })
         .collect()
 }
 
-/// How many claims have each verdict, in [`Robust::ALL`]'s order.
-pub fn tally(rows: &[ClaimRobustness]) -> [(Robust, usize); 4] {
-    Robust::ALL.map(|v| (v, rows.iter().filter(|r| r.verdict == v).count()))
+/// The share of `runs` (one row of every claim's value per run, claims in `ids`' order) in
+/// which each claim's conclusion holds; `None` for a claim whose conclusion compares only
+/// values no run changes.
+pub fn shares(ids: &[&str], checks: &[Check], runs: &[Vec<f64>]) -> Vec<Option<f64>> {
+    let column = |id: &str| ids.iter().position(|i| *i == id);
+    ids.iter()
+        .zip(checks)
+        .enumerate()
+        .map(|(k, (_, check))| {
+            let compared: Vec<usize> =
+                std::iter::once(Some(k)).chain(check.references().map(column)).flatten().collect();
+            let first = runs.first()?;
+            if runs.iter().all(|r| compared.iter().all(|&j| r[j] == first[j])) {
+                return None;
+            }
+            let held = runs.iter().filter(|r| check.holds(r[k], |id| column(id).map(|j| r[j]))).count();
+            Some(held as f64 / runs.len() as f64)
+        })
+        .collect()
 }
 
-/// The counts in words: "9 hold over the whole interval, 28 over part of it, 4 not at all; 3
-/// do not depend on the sampled inputs (independent)".
+/// How many claims have each verdict on the number, in [`Robust::ALL`]'s order, and how many
+/// are borderline (a verdict that twice the samples changes; counted apart, not under their
+/// verdict).
+pub fn tally(rows: &[ClaimRobustness]) -> ([(Robust, usize); 4], usize) {
+    let counts = Robust::ALL.map(|v| (v, rows.iter().filter(|r| r.verdict == v && !r.borderline()).count()));
+    (counts, rows.iter().filter(|r| r.borderline()).count())
+}
+
+/// How many claims have each verdict on the conclusion, in [`Standing::ALL`]'s order, and how
+/// many are borderline (counted apart).
+pub fn conclusion_tally(rows: &[ClaimRobustness]) -> ([(Standing, usize); 5], usize) {
+    let counts =
+        Standing::ALL.map(|v| (v, rows.iter().filter(|r| r.conclusion == v && !r.conclusion_borderline()).count()));
+    (counts, rows.iter().filter(|r| r.conclusion_borderline()).count())
+}
+
+/// The counts in words: "Conclusions: 30 hold, 5 mostly, ...; numbers: 8 hold over the whole
+/// interval, ...".
 pub fn tally_text(rows: &[ClaimRobustness]) -> String {
-    let [(_, holds), (_, part), (_, none), (_, independent)] = tally(rows);
+    let ([(_, holds), (_, mostly), (_, contested), (_, fails), (_, c_independent)], c_borderline) =
+        conclusion_tally(rows);
+    let ([(_, whole), (_, part), (_, none), (_, independent)], borderline) = tally(rows);
     format!(
-        "{holds} hold over the whole interval, {part} over part of it, {none} not at all; {independent} do not \
-         depend on the sampled inputs (independent)"
+        "Conclusions: {holds} hold in every sample, {mostly} mostly, {contested} contested, {fails} fail; \
+         {c_independent} independent; {c_borderline} borderline (the verdict changes at twice the samples).\n\
+         Numbers: {whole} hold over the whole interval, {part} over part of it, {none} not at all; {independent} \
+         do not depend on the sampled inputs (independent); {borderline} borderline (the verdict changes at \
+         twice the samples)"
     )
 }
 
@@ -253,7 +337,7 @@ pub fn top_two(s: &Summary) -> Vec<(&'static str, f64)> {
 }
 
 /// The table columns.
-pub const COLUMNS: [&str; 19] = [
+pub const COLUMNS: [&str; 24] = [
     "id",
     "unit",
     "paper",
@@ -265,6 +349,9 @@ pub const COLUMNS: [&str; 19] = [
     "q50",
     "q95",
     "verdict",
+    "conclusion",
+    "conclusion_share",
+    "conclusion_verdict",
     "top_input",
     "top_total",
     "second_input",
@@ -273,6 +360,8 @@ pub const COLUMNS: [&str; 19] = [
     "q50_2x",
     "q95_2x",
     "verdict_2x",
+    "conclusion_share_2x",
+    "conclusion_verdict_2x",
 ];
 
 /// The claims as a table, one row each in the claims file's order.
@@ -296,14 +385,19 @@ pub fn table(rows: &[ClaimRobustness]) -> Result<Table> {
             Value::Num(s.q50),
             Value::Num(s.q95),
             Value::Text(r.verdict.name().to_string()),
+            Value::Text(r.claim.conclusion.clone()),
+            num(r.conclusion_share),
+            Value::Text(r.conclusion.name().to_string()),
             name(0),
             total(0),
             name(1),
             total(1),
-            num(r.doubled.as_ref().map(|d| d.0.q05)),
-            num(r.doubled.as_ref().map(|d| d.0.q50)),
-            num(r.doubled.as_ref().map(|d| d.0.q95)),
-            Value::Text(r.doubled.as_ref().map_or(String::new(), |d| d.1.name().to_string())),
+            num(r.doubled.as_ref().map(|d| d.summary.q05)),
+            num(r.doubled.as_ref().map(|d| d.summary.q50)),
+            num(r.doubled.as_ref().map(|d| d.summary.q95)),
+            Value::Text(r.doubled.as_ref().map_or(String::new(), |d| d.verdict.name().to_string())),
+            num(r.doubled.as_ref().and_then(|d| d.conclusion_share)),
+            Value::Text(r.doubled.as_ref().map_or(String::new(), |d| d.conclusion.name().to_string())),
         ])?;
     }
     Ok(t)
@@ -314,53 +408,86 @@ fn run(ctx: &Context) -> Result<Table> {
 }
 
 /// Where a value sits against the claim's band, `asinh` of the distance from the paper's value
-/// in half tolerances: 0 at the paper's value, `asinh(+-1)` at the band's edges, and values
-/// tens of tolerances away still on the chart.
+/// in tolerances (half the band): 0 at the paper's value, `asinh(+-1)` at the band's edges,
+/// and values tens of tolerances away still on the chart.
 fn in_band(v: f64, (lo, hi): (f64, f64)) -> f64 {
     ((2.0 * v - lo - hi) / (hi - lo)).asinh()
 }
 
-/// Verdict colours (palette indices).
-const COLOURS: [(&str, usize); 4] = [("holds", 3), ("part", 1), ("not at all", 5), ("independent", 6)];
+/// Verdict colours (palette indices); an `independent` claim has no interval to draw.
+const COLOURS: [(&str, usize); 3] = [("holds", 3), ("part", 1), ("not at all", 4)];
+
+/// The x axis' named ticks: distances from the paper's value in tolerances, on the asinh
+/// scale.
+fn tolerance_ticks() -> Vec<(f64, String)> {
+    [-100.0f64, -10.0, -3.0, -1.0, 0.0, 1.0, 3.0, 10.0, 100.0]
+        .iter()
+        .map(|&t| {
+            let name = if t == 0.0 { "0 (paper)".to_string() } else { format!("{t:+}") };
+            (t.asinh(), name)
+        })
+        .collect()
+}
+
+/// The y range of `n` claims' rows.
+fn rows_range(n: usize) -> (f64, f64) {
+    (0.3, n as f64 + 0.7)
+}
 
 fn chart(_: &Context, t: &Table) -> Chart {
     let col = |name: &str| super::col(t, name);
     let (lo, hi, q05, q95, nominal) = (col("band_lo"), col("band_hi"), col("q05"), col("q95"), col("nominal"));
+    let share = col("conclusion_share");
+    let ids = t.column_text("id").unwrap_or_default();
     let verdicts = t.column_text("verdict").unwrap_or_default();
+    let conclusions = t.column_text("conclusion_verdict").unwrap_or_default();
     let n = t.rows.len();
+    // the first claim at the top
+    let row = |k: usize| (n - k) as f64;
     let mut curves = Vec::new();
     let mut labelled = Vec::new();
     for k in 0..n {
-        let band = (lo[k], hi[k]);
-        let colour = COLOURS.iter().find(|(v, _)| *v == verdicts[k]).map_or(0, |c| c.1);
+        let Some(&(_, colour)) = COLOURS.iter().find(|(v, _)| *v == verdicts[k]) else { continue };
         let label = if labelled.contains(&colour) {
             String::new()
         } else {
             labelled.push(colour);
-            format!("q05-q95: {}", verdicts[k])
+            format!("q05-q95 of the number: {}", verdicts[k])
         };
-        let x = (k + 1) as f64;
-        let (a, b) = (in_band(q05[k], band), in_band(q95[k], band));
-        // a claim that does not vary is a short bar, so it is seen
-        let (a, b) = if (b - a).abs() < 0.1 { (a - 0.05, b + 0.05) } else { (a, b) };
-        curves.push(Curve::new(label, vec![x, x], vec![a, b]).with_color(colour));
+        let band = (lo[k], hi[k]);
+        curves.push(
+            Curve::new(label, vec![in_band(q05[k], band), in_band(q95[k], band)], vec![row(k), row(k)])
+                .with_color(colour),
+        );
     }
-    let x: Vec<f64> = (1..=n).map(|k| k as f64).collect();
-    let y: Vec<f64> = (0..n).map(|k| in_band(nominal[k], (lo[k], hi[k]))).collect();
-    curves.push(Curve::new("nominal (the paper's inputs, fd)", x, y).with_style(LineStyle::Points).with_color(0));
+    let x: Vec<f64> = (0..n).map(|k| in_band(nominal[k], (lo[k], hi[k]))).collect();
+    let y: Vec<f64> = (0..n).map(row).collect();
+    curves.push(Curve::new("at the paper's inputs (fd)", x, y).with_style(LineStyle::Points).with_color(0));
     for edge in [-1.0f64, 1.0] {
         let label = if edge > 0.0 { "edges of the claim's tolerance" } else { "" };
-        let y = edge.asinh();
-        curves
-            .push(Curve::new(label, vec![0.0, n as f64 + 1.0], vec![y, y]).with_style(LineStyle::Dashed).with_color(0));
+        let x = edge.asinh();
+        let (y0, y1) = rows_range(n);
+        curves.push(Curve::new(label, vec![x, x], vec![y0, y1]).with_style(LineStyle::Dashed).with_color(0));
     }
+    let y_ticks = (0..n)
+        .map(|k| {
+            let said = if share[k].is_finite() {
+                format!("{} {} %", conclusions[k], fmt_sig(100.0 * share[k], 3))
+            } else {
+                conclusions[k].clone()
+            };
+            (row(k), format!("{}  [{said}]", ids[k]))
+        })
+        .collect();
     Chart {
-        x_range: Some((0.0, n as f64 + 1.0)),
+        y_range: Some(rows_range(n)),
         curves,
+        x_ticks: tolerance_ticks(),
+        y_ticks,
         ..Chart::new(
-            format!("Claims under input uncertainty ({SAMPLES} x 11 samples, modal solver)"),
-            "claim (row of figures/robustness.csv)",
-            "asinh((value - paper) / half tolerance)",
+            format!("Paper claims under input uncertainty ({SAMPLES} x 11 samples, modal solver)"),
+            "our value's distance from the paper's, in tolerances (asinh scale)",
+            "claim  [conclusion: verdict, share of samples in which it holds]",
         )
     }
 }
@@ -379,6 +506,7 @@ mod tests {
         assert_eq!(Robust::of(2.0, 2.0, (0.0, 3.0)), Robust::Independent);
         assert_eq!(Robust::of(4.0, 4.0, (0.0, 3.0)), Robust::Independent);
         assert_eq!(in_band(3.0, (1.0, 3.0)), 1.0f64.asinh());
+        assert!(tolerance_ticks().iter().any(|(x, name)| *x == 0.0 && name == "0 (paper)"));
     }
 
     #[test]

@@ -223,5 +223,6 @@ fn chart(_: &Context, t: &Table) -> Chart {
         ],
         bands: vec![],
         vlines: vec![VLine { x: 30.0, label: "30 lb = ks 2e4 N/m".into() }],
+        ..Chart::default()
     }
 }

@@ -62,23 +62,31 @@ fn run(ctx: &Context) -> Result<Table> {
 /// km/h per m/s: the figure speaks in the `speed` command's default unit.
 const KMH: f64 = 3.6;
 
+/// Angles on the left axis, spin on the right; the ball speed, in km/h on neither scale, is
+/// told in the title (its first and last value; the CSV has every one).
 fn chart(_: &Context, t: &Table) -> Chart {
     let x = col(t, "path_deg");
+    let speed = scaled(col(t, "ball_speed_m_per_s"), KMH);
     let curves = vec![
-        line("ball speed (km/h)", x.clone(), scaled(col(t, "ball_speed_m_per_s"), KMH), 1),
         line("launch angle (deg)", x.clone(), col(t, "launch_deg"), 2),
         styled(line("path angle (deg)", x.clone(), x.clone(), 0), LineStyle::Faint),
-        on_right(line("topspin (rpm), court frame", x, col(t, "spin_rpm"), 3)),
+        on_right(line("topspin (rpm), court frame", x.clone(), col(t, "spin_rpm"), 3)),
     ];
-    let left = fit_range(curves[..3].iter().flat_map(|c| c.y.clone()), true);
+    let left = fit_range(curves[..2].iter().flat_map(|c| c.y.clone()), true);
+    let ends = match (x.first().zip(speed.first()), x.last().zip(speed.last())) {
+        (Some((x0, v0)), Some((x1, v1))) => {
+            format!(": ball out at {v0:.0} km/h ({x0:.0} deg path) to {v1:.0} km/h ({x1:.0} deg)")
+        }
+        _ => String::new(),
+    };
     Chart {
         title: format!(
-            "Topspin forehand: racket {:.0} km/h along the path, ball in at {:.0} km/h, centre, 60 lb, mu 0.4",
+            "Topspin forehand (racket {:.0} km/h, ball in {:.0} km/h, centre, 60 lb, mu 0.4){ends}",
             RACKET_SPEED * KMH,
             INCOMING * KMH
         ),
         x_label: "swing path angle above the horizontal (deg)".into(),
-        y_label: "ball speed (km/h),  launch angle (deg)".into(),
+        y_label: "launch angle and path angle (deg)".into(),
         y2_label: Some("topspin in the court's frame (rpm)".into()),
         x_log: false,
         x_range: Some((0.0, 40.0)),
@@ -87,5 +95,6 @@ fn chart(_: &Context, t: &Table) -> Chart {
         curves,
         bands: vec![],
         vlines: vec![],
+        ..Chart::default()
     }
 }

@@ -497,6 +497,7 @@ fn chart(_: &Context, t: &Table) -> Chart {
         curves,
         bands: vec![Band::new(lo, hi, "measured spread over the seven strings")],
         vlines: vec![],
+        ..Chart::default()
     }
 }
 

@@ -98,5 +98,6 @@ fn chart(ctx: &Context, t: &Table) -> Chart {
         ],
         bands: vec![],
         vlines: vec![VLine { x: CENTRE_X * 100.0, label: "mode-1 node (15.8 cm)".into() }],
+        ..Chart::default()
     }
 }

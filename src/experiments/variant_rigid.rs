@@ -49,5 +49,6 @@ fn chart(_: &Context, t: &Table) -> Chart {
         ],
         bands: vec![],
         vlines: vec![VLine { x: CENTRE_X * 100.0, label: "mode-1 node (15.8 cm)".into() }],
+        ..Chart::default()
     }
 }

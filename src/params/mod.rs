@@ -56,7 +56,8 @@ pub fn drop_speed(height: f64) -> f64 {
     (2.0 * G * height).sqrt()
 }
 
-/// Calibration of SPEC.md section 3: `k_s` is proportional to the tension, 60 lb = 4e4 N/m.
+/// Calibration of SPEC.md section 3: `k_s` is proportional to the tension, 60 lb = 4e4 N/m (ours,
+/// inferred from the paper's 60 -> 50 lb arithmetic; the paper states no calibration).
 pub fn ks_from_tension_lb(tension_lb: f64) -> f64 {
     4.0e4 * tension_lb / 60.0
 }

@@ -36,8 +36,10 @@ pub struct Oblique {
     pub kt: f64,
     /// Ball radius `R`, m; 1e-3..=1.
     pub ball_radius: f64,
-    /// Ball moment of inertia over `m_b R^2` (`alpha`); 0 < alpha <= 1 (solid sphere 0.4,
-    /// thin shell 2/3).
+    /// Ball moment of inertia over `m_b R^2` (`alpha`);
+    /// [`MIN_BALL_INERTIA_FACTOR`]..=[`MAX_BALL_INERTIA_FACTOR`]. Default 0.55, a tennis ball
+    /// (a hollow rubber shell with felt: between the solid sphere's 2/5 and the thin shell's
+    /// 2/3).
     pub ball_inertia_factor: f64,
     /// The tangential contact law: `elastic` (the grip-slip law of `model::tangential` alone),
     /// one mechanism of `model::tangential` on top of it, or `physical` (all four). Default
@@ -78,6 +80,17 @@ pub const fn kdyn_from_drop(mb: f64, compression: f64) -> f64 {
 /// The default [`Oblique::ball_kdyn`]: the paper's 57 g ball compressed 6 mm by the drop on
 /// concrete (data/measured M081), 7.89e4 N/m.
 pub const BALL_KDYN: f64 = kdyn_from_drop(0.057, 0.006);
+
+/// The largest ball inertia factor `I / (m_b R^2)`: 2/3, a thin hollow shell, with all its
+/// mass at the radius `R` (no mass distribution within `R` has more).
+pub const MAX_BALL_INERTIA_FACTOR: f64 = 2.0 / 3.0;
+
+/// The smallest ball inertia factor accepted: 0.1, a ball whose whole mass is in a uniform core
+/// of half its radius (`0.4 / 4`). No sports ball is that centre-heavy (solid balls are near
+/// the uniform sphere's 0.4, hollow ones above it); below it the spin's time scale
+/// `sqrt(alpha m_b / k_t)` shrinks without bound and the tangential contact needs ever more
+/// steps (a factor of 1e-30 never finished) for a ball that cannot exist.
+pub const MIN_BALL_INERTIA_FACTOR: f64 = 0.1;
 
 impl Default for Oblique {
     fn default() -> Self {
@@ -133,9 +146,16 @@ impl Oblique {
             spec.check(v)?;
         }
         let alpha = self.ball_inertia_factor;
-        if !(alpha.is_finite() && alpha > 0.0 && alpha <= 1.0) {
+        if !(alpha.is_finite() && (MIN_BALL_INERTIA_FACTOR..=MAX_BALL_INERTIA_FACTOR).contains(&alpha)) {
             let key = keys::BALL_INERTIA_FACTOR.key;
-            return Err(Error::invalid(key, alpha, format!("ball inertia factor must satisfy 0 < {key} <= 1")));
+            return Err(Error::invalid(
+                key,
+                alpha,
+                format!(
+                    "ball inertia factor I / (m_b R^2) must satisfy 0.1 <= {key} <= 2/3 (a thin hollow shell, the \
+                     most any ball of radius R has, is 2/3; a solid sphere 0.4; a tennis ball about 0.55)"
+                ),
+            ));
         }
         Ok(())
     }

@@ -12,6 +12,7 @@
 //! | [`io`] | atomic, deterministic file writes |
 //! | [`temps`] | the temporary files staged, removed on an interrupt |
 //! | [`json`] | every JSON output: pretty, unsigned zeros |
+//! | [`place`] | where a label or legend goes, in charts and heat maps alike |
 //!
 //! Nothing here runs a solver: the layers above compute, and hand tables and charts down.
 
@@ -20,6 +21,7 @@ pub mod impact;
 pub mod io;
 pub mod json;
 pub mod map_files;
+pub mod place;
 pub mod plot;
 pub mod table;
 pub mod temps;

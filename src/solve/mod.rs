@@ -37,9 +37,12 @@ pub trait Solver: Sized {
     fn run(&self) -> Result<ImpactResult>;
 }
 
-/// Prepare and run one impact with the solver `S`.
+/// Prepare and run one impact with the solver `S`; a result whose energy error exceeds the
+/// limit is an error, whichever solver made it ([`oblique::check_energy`]).
 pub fn solve<S: Solver>(params: &Params) -> Result<ImpactResult> {
-    S::prepare(params)?.run()
+    let r = S::prepare(params)?.run()?;
+    oblique::check_energy(&r)?;
+    Ok(r)
 }
 
 /// Validate, prepare and run one impact with the solver (and model variant) the parameters name.

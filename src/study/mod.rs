@@ -5,6 +5,7 @@
 //! sensitivity for any model). [`Sources`] resolves a command's parameters from a racket, a config
 //! file and the flags.
 
+pub mod diagnose;
 pub mod map;
 pub mod sensitivity;
 pub mod speed;

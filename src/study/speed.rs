@@ -5,11 +5,15 @@
 //! computed at the relative speed `v_in + v_racket` and the racket's swing speed taken at the
 //! impact point.
 
+use crate::diagnostic::{Diagnostic, Kind};
 use crate::error::{Error, Result};
+use crate::numfmt::sig;
+use crate::params::keys;
 use crate::params::{ks_from_tension_lb, Params};
 use crate::render::table::{Table, Value};
 use crate::solve::swing::{gain_pct, outgoing_speed, Swing};
 use crate::solve::ImpactResult;
+use crate::study::diagnose;
 use crate::study::{check_comparison, Sources};
 
 /// The sign conventions of the spins a stroke's JSON prints.
@@ -254,10 +258,12 @@ impl SpeedComparison {
         let v: Vec<serde_json::Value> = self
             .rows
             .iter()
-            .map(|SpeedRow { label, params: p, result: r, v_out, launch }| {
+            .map(|row| {
+                let SpeedRow { label, params: p, result: r, v_out, launch } = row;
                 let mut v = serde_json::json!({
                     "variant": label, "params": p, "result": crate::render::impact::result_json(p, r),
                     "ball_speed_out": v_out / unit.si, "change_pct": gain_pct(self.v_ref(), *v_out), "unit": unit.label,
+                    "diagnostics": self.diagnostics_of(&[row]),
                 });
                 if let (Some((launch_deg, spin_rpm)), Some(o)) = (launch, v.as_object_mut()) {
                     o.insert("launch_deg".into(), (*launch_deg).into());
@@ -269,6 +275,58 @@ impl SpeedComparison {
             })
             .collect();
         crate::render::json::pretty(&v)
+    }
+
+    /// The comparison's diagnostics, once each: the variants' parameters but those the stroke
+    /// sets (said in its own terms: the impact speed, the incoming spin, the incidence), the
+    /// largest twist. Each variant's own are in its JSON row.
+    pub fn diagnostics(&self) -> Vec<Diagnostic> {
+        self.diagnostics_of(&self.rows.iter().collect::<Vec<_>>())
+    }
+
+    fn diagnostics_of(&self, rows: &[&SpeedRow]) -> Vec<Diagnostic> {
+        let (req, u) = (&self.request, self.request.unit);
+        let mut out = diagnose::parameters(rows.iter().map(|r| &r.params), &SPEED_SETS);
+        if let Some((lo, hi)) = keys::V1.usual {
+            let v = (req.swing + req.incoming) * u.si;
+            if !(lo..=hi).contains(&v) {
+                out.push(Diagnostic::new(
+                    Kind::Unusual,
+                    "v1",
+                    format!(
+                        "swing + incoming = {} {} (the impact speed) is outside the usual {}..{} {} (computed anyway)",
+                        sig(req.swing + req.incoming, 4),
+                        u.label,
+                        sig(lo / u.si, 3),
+                        sig(hi / u.si, 3),
+                        u.label
+                    ),
+                ));
+            }
+        }
+        if let Some(line) = keys::SPIN_RPM.unusual(req.incoming_spin_rpm) {
+            out.push(Diagnostic::new(
+                Kind::Unusual,
+                "incoming-spin-rpm",
+                line.replacen(keys::SPIN_RPM.key, "incoming-spin-rpm", 1),
+            ));
+        }
+        if let Some(angle) =
+            rows.iter().map(|r| r.params.oblique.angle_deg).find(|&d| keys::ANGLE_DEG.unusual(d).is_some())
+        {
+            out.push(Diagnostic::new(
+                Kind::Unusual,
+                "angle-deg",
+                format!(
+                    "the swing path of {} deg meets the face at {} deg from its normal, beyond the usual incidences (computed anyway)",
+                    req.path_deg,
+                    sig(angle, 3)
+                ),
+            ));
+        }
+        let theta = rows.iter().map(|r| r.result.theta_end_deg).max_by(|a, b| a.abs().total_cmp(&b.abs()));
+        out.extend(theta.and_then(diagnose::twist));
+        out
     }
 
     /// The comparison as text: the swing, then one line per variant.

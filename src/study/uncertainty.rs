@@ -7,6 +7,7 @@
 use serde_json::{json, Map, Value};
 
 use super::sensitivity::{self, Design, Summary};
+use crate::diagnostic::{Diagnostic, Kind};
 use crate::error::{Error, Result};
 use crate::numfmt::{exact_finite, readable, sig};
 use crate::params::spec::{Check, Values};
@@ -282,7 +283,22 @@ impl Study {
             "confidence": sensitivity::CONFIDENCE,
             "inputs": inputs,
             "outputs": out,
+            "diagnostics": serde_json::to_value(self.diagnostics()).unwrap_or_default(),
         })
+    }
+
+    /// The study's diagnostics: its base parameters outside their usual ranges, but those drawn
+    /// (their base value is not used: their draws are judged instead), and each input whose
+    /// draws reach outside its usual range.
+    pub fn diagnostics(&self) -> Vec<Diagnostic> {
+        let drawn: Vec<&str> = self.inputs.iter().map(|i| i.key).collect();
+        let mut out = crate::study::diagnose::parameters([&self.base], &drawn);
+        for input in &self.inputs {
+            let line =
+                keys::find(input.key).and_then(|spec| crate::params::uncertainty::unusual_draws(spec, &input.dist));
+            out.extend(line.map(|s| Diagnostic::new(Kind::Unusual, input.key, s)));
+        }
+        out
     }
 
     /// The CSV table: one row per output; per input `first_KEY`, `first_KEY_lo`,

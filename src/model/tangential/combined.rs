@@ -114,8 +114,14 @@ struct Kin {
     capacity: f64,
 }
 
-/// Substep length as a fraction of the fastest time scale of the contact.
+/// Substep length as a fraction of the time scale of a relaxation through the damper.
 const SUBSTEP: f64 = 0.2;
+/// Substep length as a fraction of the grip oscillation's time scale `sqrt(m_red / k_t)`:
+/// finer than for a relaxation, as the oscillation carries the spin handed back and the
+/// offset torque's switches ride on it (chosen so that the outcomes over the mechanisms' test
+/// grid come at least as close to a ten times finer integration as with the former single
+/// limit, 0.2 of the fastest time scale of any mode).
+const GRIP_SUBSTEP: f64 = 0.05;
 
 /// The combined law's tangential contact of one impact in progress.
 #[derive(Debug, Clone, Copy)]
@@ -125,8 +131,10 @@ pub struct Combined {
     modes: Modes,
     /// Largest normal force so far, N.
     f_max: f64,
-    /// Longest substep, s.
-    h_max: f64,
+    /// The turning points of the piece in progress.
+    turning: [f64; 2],
+    /// Longest substep in each mode, s ([`Substeps`]).
+    h_max: Substeps,
     /// Time spent sliding, s.
     pub slide_time: f64,
     started: bool,
@@ -136,25 +144,22 @@ impl Combined {
     /// The contact before the ball touches: ball velocity `v` and spin `omega` along `t`, the
     /// frame at rest.
     pub fn new(law: CombinedLaw, v: f64, omega: f64) -> Combined {
-        let inv_red = law.inv_red();
-        let mut rate = (law.base.kt * inv_red).sqrt();
-        if law.damping > 0.0 {
-            let k = law.base.kt + law.bed.map_or(0.0, |b| b.k_lat);
-            // a damped grip oscillation (the measured e_x damps it to a ratio of about 0.5)
-            // dissipates most of its energy within one half cycle: substeps 1 + 2 zeta times
-            // shorter keep the ledger closing to 1e-6 as for the undamped spring
-            let zeta = law.damping / (2.0 * (law.base.kt / inv_red).sqrt());
-            rate = rate.max(k / law.damping) * (1.0 + 2.0 * zeta);
-        }
         Combined {
             law,
             y: [v, omega, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
             modes: Modes { ball: Ball::Grip, strings: Strings::Stuck, spin: 0.0 },
             f_max: 0.0,
-            h_max: SUBSTEP / rate,
+            turning: [f64::NAN; 2],
+            h_max: Substeps::of(&law),
             slide_time: 0.0,
             started: false,
         }
+    }
+
+    /// The most Runge-Kutta substeps over a contact of `t` seconds (besides those cut at a
+    /// switch).
+    pub fn steps_within(&self, t: f64) -> f64 {
+        t / self.h_max.shortest()
     }
 
     /// Ball velocity along `t`, m/s.
@@ -197,6 +202,7 @@ impl Combined {
             self.started = true;
             self.modes = self.first_modes(piece);
         }
+        self.turning = piece.turning_points();
         stepper::advance(self, piece);
     }
 
@@ -218,13 +224,26 @@ impl Combined {
         Modes { ball, strings, spin: sign0(self.y[OM]) }
     }
 
-    /// The contact's forces and rates in the current modes.
-    fn kin(&self, piece: &ForcePiece, t: f64, y: &Y, peak: Peak) -> Kin {
+    /// What the normal force makes of the contact at `t`: the force, its rate, the lever of
+    /// the friction and the offset torque's capacity.
+    fn drive_at(&self, piece: &ForcePiece, t: f64, peak: Peak) -> Drive {
         let law = &self.law;
         let (f, df) = (piece.force(t).max(0.0), piece.rate(t));
         let needs_delta = law.shrink || law.offset_loss > 0.0;
         let delta = if needs_delta { law.compression.delta(f, peak.at(piece, t)) } else { 0.0 };
         let lever = if law.shrink { law.base.radius - delta } else { law.base.radius };
+        let arm = if law.offset_loss > 0.0 {
+            offset::moment_arm(law.offset_loss, law.compression.contact_radius(delta)) * f
+        } else {
+            0.0
+        };
+        Drive { f, df, lever, arm }
+    }
+
+    /// The contact's forces and rates in the current modes.
+    fn kin(&self, y: &Y, d: &Drive) -> Kin {
+        let law = &self.law;
+        let (f, df, lever) = (d.f, d.df, d.lever);
         let w = y[V] - lever * y[OM] - y[U];
         let (kt, c) = (law.base.kt, law.damping);
         let (p, sdot, qdot) = match (self.modes.ball, self.modes.strings, law.bed) {
@@ -247,7 +266,7 @@ impl Combined {
             }
         };
         let (torque, capacity) = if law.offset_loss > 0.0 && self.modes.ball == Ball::Grip {
-            let arm = offset::moment_arm(law.offset_loss, law.compression.contact_radius(delta)) * f;
+            let arm = d.arm;
             match self.modes.spin {
                 0.0 => (-lever * p, arm),
                 sign => (-sign * arm, arm),
@@ -261,24 +280,33 @@ impl Combined {
 
 impl Switched<9, 3> for Combined {
     type Frozen = Peak;
+    type Drive = Drive;
 
     fn state(&self) -> &Y {
         &self.y
     }
 
     fn max_substep(&self) -> f64 {
-        self.h_max
+        match (self.modes.ball, self.modes.strings) {
+            (Ball::Slide(_), _) => self.h_max.slide,
+            (Ball::Grip, Strings::Stuck) => self.h_max.grip,
+            (Ball::Grip, Strings::Slide(_)) => self.h_max.grip_bed,
+        }
     }
 
     fn frozen(&self, _piece: &ForcePiece, t: f64) -> Peak {
-        Peak { f_max: self.f_max, from: t }
+        Peak { f_max: self.f_max, from: t, turning: self.turning }
     }
 
     /// The rates of the state.
-    fn rates(&self, piece: &ForcePiece, t: f64, y: &Y, peak: Peak) -> Y {
+    fn drive(&self, piece: &ForcePiece, t: f64, peak: Peak) -> Drive {
+        self.drive_at(piece, t, peak)
+    }
+
+    fn rates(&self, y: &Y, d: &Drive) -> Y {
         let law = &self.law;
-        let k = self.kin(piece, t, y, peak);
-        let f = piece.force(t).max(0.0);
+        let k = self.kin(y, d);
+        let f = d.f;
         let friction = match self.modes.ball {
             Ball::Slide(sign) => sign * law.base.mu * f * (k.w - k.sdot - k.qdot),
             Ball::Grip => 0.0,
@@ -304,10 +332,10 @@ impl Switched<9, 3> for Combined {
     /// mode lasts (infinite where it does not apply): 0 the ball's grip or slide, 1 the
     /// strings' stick or slide, 2 the sign of the spin (or its hold at zero) while the offset
     /// torque acts.
-    fn guards(&self, piece: &ForcePiece, t: f64, y: &Y, peak: Peak) -> [f64; 3] {
+    fn guards(&self, y: &Y, d: &Drive) -> [f64; 3] {
         let law = &self.law;
-        let k = self.kin(piece, t, y, peak);
-        let f = piece.force(t).max(0.0);
+        let k = self.kin(y, d);
+        let f = d.f;
         let ball = match self.modes.ball {
             Ball::Grip => law.base.mu * f - k.p.abs(),
             Ball::Slide(sign) => sign * (k.w - k.sdot - k.qdot),
@@ -331,12 +359,12 @@ impl Switched<9, 3> for Combined {
         if matches!(self.modes.ball, Ball::Slide(_)) {
             self.slide_time += h;
         }
-        self.f_max = Peak { f_max: self.f_max, from: t }.at(piece, t + h);
+        self.f_max = self.frozen(piece, t).at(piece, t + h);
     }
 
     /// Change the mode whose guard `g` failed, at `t`.
     fn switch(&mut self, g: usize, piece: &ForcePiece, t: f64) {
-        let k = self.kin(piece, t, &self.y, Peak { f_max: self.f_max, from: t });
+        let k = self.kin(&self.y, &self.drive_at(piece, t, self.frozen(piece, t)));
         match g {
             0 => {
                 self.modes.ball = match self.modes.ball {
@@ -358,6 +386,60 @@ impl Switched<9, 3> for Combined {
     }
 }
 
+/// What the normal force makes of the contact at one time (it does not depend on the state).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Drive {
+    /// Normal force (not below 0), N.
+    f: f64,
+    /// Its rate, N/s.
+    df: f64,
+    /// Lever of the friction force, m.
+    lever: f64,
+    /// The largest offset torque, `d F_n`, N m (0 without the mechanism).
+    arm: f64,
+}
+
+/// The longest substep in each mode, from the rates of the mode's own linear dynamics (a
+/// Runge-Kutta step's error goes with the step times the rate): [`GRIP_SUBSTEP`] over the
+/// grip oscillation's rate `sqrt(k_t / m_red)`, which sets the pace of every mode, and
+/// [`SUBSTEP`] over each relaxation the damper brings in: while the ball grips on stuck
+/// strings, the decay `c / m_red` of a heavily damped oscillation; while the strings slide
+/// under a gripping ball, the relaxation `(k_t + k_lat) / c` of the two springs through the
+/// damper; and while the ball slides (the force through the damper is then set by friction),
+/// the relaxation `k_t / c` of its spring.
+#[derive(Debug, Clone, Copy)]
+struct Substeps {
+    /// The ball grips, the strings are stuck, s.
+    grip: f64,
+    /// The ball grips, the strings slide, s.
+    grip_bed: f64,
+    /// The ball slides, s.
+    slide: f64,
+}
+
+impl Substeps {
+    /// The shortest substep of any mode, s.
+    fn shortest(&self) -> f64 {
+        self.grip.min(self.grip_bed).min(self.slide)
+    }
+
+    fn of(law: &CombinedLaw) -> Substeps {
+        let inv_red = law.inv_red();
+        let (kt, c) = (law.base.kt, law.damping);
+        let oscillation = GRIP_SUBSTEP / (kt * inv_red).sqrt();
+        if c > 0.0 {
+            let k_beds = kt + law.bed.map_or(0.0, |b| b.k_lat);
+            Substeps {
+                grip: oscillation.min(SUBSTEP / (c * inv_red)),
+                grip_bed: oscillation.min(SUBSTEP * c / k_beds),
+                slide: oscillation.min(SUBSTEP * c / kt),
+            }
+        } else {
+            Substeps { grip: oscillation, grip_bed: oscillation, slide: oscillation }
+        }
+    }
+}
+
 /// The largest normal force up to a time: the largest before a substep and the piece's own
 /// maximum from the substep's start on (the ball's compression follows its expansion branch
 /// after the peak, [`Compression::delta`]).
@@ -367,13 +449,14 @@ pub(super) struct Peak {
     f_max: f64,
     /// Start of the substep, s into the piece.
     from: f64,
+    /// The piece's turning points ([`ForcePiece::turning_points`]).
+    turning: [f64; 2],
 }
 
 impl Peak {
     /// The largest force up to `t`, N.
     fn at(&self, piece: &ForcePiece, t: f64) -> f64 {
-        let negated = ForcePiece { h: piece.h, a: piece.a.map(|c| -c) };
-        self.f_max.max(-negated.min_force(self.from, t))
+        self.f_max.max(piece.max_force(&self.turning, self.from, t))
     }
 }
 

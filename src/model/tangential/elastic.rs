@@ -113,6 +113,12 @@ impl Elastic {
         }
     }
 
+    /// The most samples the switch search takes over a contact of `t` seconds (one per radian
+    /// of the grip oscillation, besides a few per force piece).
+    pub fn steps_within(&self, t: f64) -> f64 {
+        self.omega_grip * t
+    }
+
     /// Slip velocity of the contact point now, m/s.
     pub fn slip(&self) -> f64 {
         self.w0 + self.impulse * self.inv_red

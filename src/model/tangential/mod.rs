@@ -53,4 +53,4 @@ pub use combined::{Combined, CombinedLaw};
 pub use elastic::{Elastic, GripSlip};
 pub use piece::ForcePiece;
 pub(crate) use setup::Contact;
-pub use setup::{Setup, RPM};
+pub use setup::{Setup, MAX_TANGENTIAL_STEPS, RPM};

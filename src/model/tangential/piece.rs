@@ -32,29 +32,38 @@ impl ForcePiece {
         a[1] + t * (2.0 * a[2] + t * 3.0 * a[3])
     }
 
-    /// The smallest force over `[t0, t1]`: at an end or where the rate vanishes inside.
-    pub fn min_force(&self, t0: f64, t1: f64) -> f64 {
-        let mut least = self.force(t0).min(self.force(t1));
+    /// The times where the rate vanishes (NaN where it does not).
+    pub fn turning_points(&self) -> [f64; 2] {
         // rate a1 + 2 a2 t + 3 a3 t^2 = 0
         let (a, b, c) = (3.0 * self.a[3], 2.0 * self.a[2], self.a[1]);
-        let mut consider = |t: f64| {
-            if t > t0 && t < t1 {
-                least = least.min(self.force(t));
-            }
-        };
         if a == 0.0 {
             if b != 0.0 {
-                consider(-c / b);
+                [-c / b, f64::NAN]
+            } else {
+                [f64::NAN; 2]
             }
         } else {
             let disc = b * b - 4.0 * a * c;
             if disc >= 0.0 {
                 let r = disc.sqrt();
-                consider((-b - r) / (2.0 * a));
-                consider((-b + r) / (2.0 * a));
+                [(-b - r) / (2.0 * a), (-b + r) / (2.0 * a)]
+            } else {
+                [f64::NAN; 2]
             }
         }
-        least
+    }
+
+    /// The smallest force over `[t0, t1]`: at an end or where the rate vanishes inside.
+    pub fn min_force(&self, t0: f64, t1: f64) -> f64 {
+        let inside = self.turning_points().into_iter().filter(|&t| t > t0 && t < t1);
+        inside.fold(self.force(t0).min(self.force(t1)), |least, t| least.min(self.force(t)))
+    }
+
+    /// The largest force over `[t0, t1]`, given the piece's `turning` points
+    /// ([`Self::turning_points`]).
+    pub fn max_force(&self, turning: &[f64; 2], t0: f64, t1: f64) -> f64 {
+        let inside = turning.iter().filter(|&&t| t > t0 && t < t1);
+        inside.fold(self.force(t0).max(self.force(t1)), |most, &t| most.max(self.force(t)))
     }
 
     /// Its integral from 0 to `tau`.
@@ -69,7 +78,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn smallest_force_of_a_piece_matches_fine_sampling() {
+    fn smallest_and_largest_force_of_a_piece_match_fine_sampling() {
         let pieces = [
             ForcePiece { h: 2.0, a: [1.0, -3.0, 0.5, 0.7] },
             ForcePiece { h: 1.0, a: [0.0, 2.0, -1.0, 0.0] },
@@ -84,6 +93,9 @@ mod tests {
                     least <= sampled + 1e-12 && least >= sampled - 1e-8,
                     "{p:?} [{t0}, {t1}]: {least} vs {sampled}"
                 );
+                let sampled = (0..=100_000).map(|i| p.force(t0 + (t1 - t0) * i as f64 / 1e5)).fold(f64::MIN, f64::max);
+                let most = p.max_force(&p.turning_points(), t0, t1);
+                assert!(most >= sampled - 1e-12 && most <= sampled + 1e-8, "{p:?} [{t0}, {t1}]: {most} vs {sampled}");
             }
         }
     }

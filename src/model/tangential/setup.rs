@@ -69,6 +69,17 @@ impl Setup {
         Some(Setup { law, combined, v_n: p.impact.v1 * cos_a, v_t: p.impact.v1 * sin_a, omega: o.spin_rpm * RPM })
     }
 
+    /// The most steps the tangential contact can take in a contact of `t` seconds (the
+    /// elastic law's switch-search samples, or the combined law's substeps): set by the fastest
+    /// tangential time scale, `sqrt(k_t / m_red)`, which a light ball of small inertia makes
+    /// short ([`MAX_TANGENTIAL_STEPS`] bounds it).
+    pub(crate) fn steps_within(&self, t: f64) -> f64 {
+        match self.start() {
+            Contact::Elastic(e) => e.steps_within(t),
+            Contact::Combined(c) => c.steps_within(t),
+        }
+    }
+
     /// The tangential contact before the ball touches.
     pub(crate) fn start(&self) -> Contact {
         match self.combined {
@@ -115,6 +126,11 @@ impl Setup {
         }
     }
 }
+
+/// Refuse parameters whose tangential contact could need more steps than this over the longest
+/// contact a solver allows (its time limit): about ten seconds of the combined law's
+/// Runge-Kutta substeps, far beyond any ball (the paper's ball at 30 degrees: some fifty).
+pub const MAX_TANGENTIAL_STEPS: f64 = 1.0e8;
 
 /// The tangential contact in progress, under the elastic law or the combined one.
 #[derive(Debug, Clone, Copy)]

@@ -20,6 +20,9 @@ const BISECTIONS: usize = 100;
 pub(super) trait Switched<const N: usize, const G: usize> {
     /// What the law holds fixed over one substep (set at its start).
     type Frozen: Copy;
+    /// What the rates and guards take from the time alone (the normal force and what follows
+    /// from it), computed once for each time a substep visits.
+    type Drive: Copy;
 
     /// The state now.
     fn state(&self) -> &[f64; N];
@@ -27,11 +30,13 @@ pub(super) trait Switched<const N: usize, const G: usize> {
     fn max_substep(&self) -> f64;
     /// What is held fixed over a substep that starts at `t` (s into the piece).
     fn frozen(&self, piece: &ForcePiece, t: f64) -> Self::Frozen;
-    /// The rates of the state `y` at `t` in the current modes.
-    fn rates(&self, piece: &ForcePiece, t: f64, y: &[f64; N], frozen: Self::Frozen) -> [f64; N];
-    /// The guards of the current modes at `(t, y)`, each non-negative while its mode lasts
-    /// (infinite where it does not apply).
-    fn guards(&self, piece: &ForcePiece, t: f64, y: &[f64; N], frozen: Self::Frozen) -> [f64; G];
+    /// The drive at `t`.
+    fn drive(&self, piece: &ForcePiece, t: f64, frozen: Self::Frozen) -> Self::Drive;
+    /// The rates of the state `y` under the drive `d` in the current modes.
+    fn rates(&self, y: &[f64; N], d: &Self::Drive) -> [f64; N];
+    /// The guards of the current modes at the state `y` under the drive `d`, each
+    /// non-negative while its mode lasts (infinite where it does not apply).
+    fn guards(&self, y: &[f64; N], d: &Self::Drive) -> [f64; G];
     /// Accept the substep `[t, t + h]` ending at `y`.
     fn commit(&mut self, piece: &ForcePiece, t: f64, h: f64, y: [f64; N]);
     /// Change the mode whose guard `g` failed, at `t`.
@@ -42,25 +47,31 @@ pub(super) trait Switched<const N: usize, const G: usize> {
 pub(super) fn advance<L: Switched<N, G>, const N: usize, const G: usize>(law: &mut L, piece: &ForcePiece) {
     let mut t = 0.0;
     let mut switches = 0;
+    // the drive at the start of each substep: the one at the end of the substep before (the
+    // same numbers: what a law freezes for a substep must not change its drive at the start)
+    let mut d0 = law.drive(piece, t, law.frozen(piece, t));
     while t < piece.h {
         let h = (piece.h - t).min(law.max_substep());
         let frozen = law.frozen(piece, t);
-        let end = step(law, piece, t, law.state(), h, frozen);
-        match violated(law, piece, t + h, &end, frozen) {
+        let (end, drive) = step(law, piece, t, law.state(), &d0, h, frozen);
+        match violated(law, &end, &drive) {
             None => {
                 law.commit(piece, t, h, end);
                 t += h;
+                d0 = drive;
             }
             Some(_) if switches >= MAX_SWITCHES => {
                 law.commit(piece, t, h, end);
                 t += h;
+                d0 = drive;
             }
             Some(first) => {
                 // the shortest substep whose end violates a guard, to rounding
-                let (hi, y) = locate(law, piece, t, h, frozen, first);
-                let which = violated(law, piece, t + hi, &y, frozen);
+                let (hi, y, drive) = locate(law, piece, t, &d0, h, frozen, first);
+                let which = violated(law, &y, &drive);
                 law.commit(piece, t, hi, y);
                 t += hi;
+                d0 = drive;
                 if let Some(g) = which {
                     law.switch(g, piece, t);
                 }
@@ -70,56 +81,54 @@ pub(super) fn advance<L: Switched<N, G>, const N: usize, const G: usize>(law: &m
     }
 }
 
-/// One classical Runge-Kutta step of length `h` from `(t, y)`.
+/// One classical Runge-Kutta step of length `h` from `(t, y)` with the drive `d0` at `t`:
+/// the state at `t + h` and the drive there.
 fn step<L: Switched<N, G>, const N: usize, const G: usize>(
     law: &L,
     piece: &ForcePiece,
     t: f64,
     y: &[f64; N],
+    d0: &L::Drive,
     h: f64,
     frozen: L::Frozen,
-) -> [f64; N] {
+) -> ([f64; N], L::Drive) {
     let add = |a: &[f64; N], b: &[f64; N], s: f64| -> [f64; N] { std::array::from_fn(|i| a[i] + s * b[i]) };
-    let k1 = law.rates(piece, t, y, frozen);
-    let k2 = law.rates(piece, t + 0.5 * h, &add(y, &k1, 0.5 * h), frozen);
-    let k3 = law.rates(piece, t + 0.5 * h, &add(y, &k2, 0.5 * h), frozen);
-    let k4 = law.rates(piece, t + h, &add(y, &k3, h), frozen);
-    std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
+    let (dm, d1) = (law.drive(piece, t + 0.5 * h, frozen), law.drive(piece, t + h, frozen));
+    let k1 = law.rates(y, d0);
+    let k2 = law.rates(&add(y, &k1, 0.5 * h), &dm);
+    let k3 = law.rates(&add(y, &k2, 0.5 * h), &dm);
+    let k4 = law.rates(&add(y, &k3, h), &d1);
+    (std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i])), d1)
 }
 
-/// The first guard the state `y` at `t` violates, if any ([`Switched::guards`]).
-fn violated<L: Switched<N, G>, const N: usize, const G: usize>(
-    law: &L,
-    piece: &ForcePiece,
-    t: f64,
-    y: &[f64; N],
-    frozen: L::Frozen,
-) -> Option<usize> {
-    law.guards(piece, t, y, frozen).iter().position(|&g| g < 0.0)
+/// The first guard the state `y` under the drive `d` violates, if any ([`Switched::guards`]).
+fn violated<L: Switched<N, G>, const N: usize, const G: usize>(law: &L, y: &[f64; N], d: &L::Drive) -> Option<usize> {
+    law.guards(y, d).iter().position(|&g| g < 0.0)
 }
 
 /// The earliest time in `(0, h]` after `t` at which a guard fails (one fails at `h`), to
 /// rounding: the Illinois variant of regula falsi on the guard that fails, restarted on
-/// any guard that fails earlier. Returns the time and the state there.
+/// any guard that fails earlier. Returns the time, the state there and the drive.
 fn locate<L: Switched<N, G>, const N: usize, const G: usize>(
     law: &L,
     piece: &ForcePiece,
     t: f64,
+    d0: &L::Drive,
     h: f64,
     frozen: L::Frozen,
     first: usize,
-) -> (f64, [f64; N]) {
+) -> (f64, [f64; N], L::Drive) {
     let y0 = law.state();
-    let start = law.guards(piece, t, y0, frozen);
+    let start = law.guards(y0, d0);
     let (mut g, mut lo, mut hi) = (first, 0.0, h);
-    let mut at_hi = step(law, piece, t, y0, h, frozen);
+    let (mut at_hi, mut drive_hi) = step(law, piece, t, y0, d0, h, frozen);
     for _ in 0..MAX_SWITCHES {
-        let value = |tau: f64, y: &[f64; N]| law.guards(piece, t + tau, y, frozen)[g];
+        let value = |(y, d): &([f64; N], L::Drive)| law.guards(y, d)[g];
         let (mut a, mut fa) = (lo, start[g].max(0.0));
         if a > 0.0 {
-            fa = value(a, &step(law, piece, t, y0, a, frozen)).max(0.0);
+            fa = value(&step(law, piece, t, y0, d0, a, frozen)).max(0.0);
         }
-        let (mut b, mut fb) = (hi, value(hi, &at_hi));
+        let (mut b, mut fb) = (hi, law.guards(&at_hi, &drive_hi)[g]);
         let mut side = 0;
         for _ in 0..BISECTIONS {
             if b - a <= 1e-13 * h {
@@ -129,10 +138,10 @@ fn locate<L: Switched<N, G>, const N: usize, const G: usize>(
             if !(c > a && c < b) {
                 c = 0.5 * (a + b);
             }
-            let y = step(law, piece, t, y0, c, frozen);
-            let fc = value(c, &y);
+            let at_c = step(law, piece, t, y0, d0, c, frozen);
+            let fc = value(&at_c);
             if fc < 0.0 {
-                (b, fb, at_hi) = (c, fc, y);
+                (b, fb, (at_hi, drive_hi)) = (c, fc, at_c);
                 if side == -1 {
                     fa *= 0.5;
                 }
@@ -146,14 +155,14 @@ fn locate<L: Switched<N, G>, const N: usize, const G: usize>(
             }
         }
         // another guard failing before this one's root takes over
-        let y = step(law, piece, t, y0, a, frozen);
-        match violated(law, piece, t + a, &y, frozen) {
+        let (y, d) = step(law, piece, t, y0, d0, a, frozen);
+        match violated(law, &y, &d) {
             Some(other) if a > 0.0 => {
-                (g, hi, at_hi) = (other, a, y);
+                (g, hi, at_hi, drive_hi) = (other, a, y, d);
                 lo = 0.0;
             }
-            _ => return (b, at_hi),
+            _ => return (b, at_hi, drive_hi),
         }
     }
-    (hi, at_hi)
+    (hi, at_hi, drive_hi)
 }

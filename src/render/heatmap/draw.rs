@@ -11,6 +11,7 @@ use plotters::style::FontStyle;
 use super::{color_range, contour_levels, contour_segments, diverging, fill_rim, viridis, Row, BELOW_FLOOR};
 use super::{ColorScale, HeatMap, CONTOUR_TARGET};
 use crate::numfmt::fmt_sig;
+use crate::render::place::{first_least, inside, overlaps, Rect};
 use crate::render::plot::{self, AXIS_DESC_SIZE, HEIGHT, TICK_SIZE, WIDTH};
 
 /// Height of the title block (title and subtitle), pixels.
@@ -74,17 +75,6 @@ fn equal_aspect_ranges(map: &HeatMap, w: f64, h: f64) -> ((f64, f64), (f64, f64)
     let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
     let (hx, hy) = (0.5 * w / scale, 0.5 * h / scale);
     ((cx - hx, cx + hx), (cy - hy, cy + hy))
-}
-
-/// A pixel rectangle: (left, top, right, bottom).
-pub(super) type Rect = (i32, i32, i32, i32);
-
-fn overlaps(a: Rect, b: Rect) -> bool {
-    a.0 < b.2 && b.0 < a.2 && a.1 < b.3 && b.1 < a.3
-}
-
-fn inside(a: Rect, area: Rect) -> bool {
-    a.0 >= area.0 && a.1 >= area.1 && a.2 <= area.2 && a.3 <= area.3
 }
 
 /// Draw a label with a translucent white box whose top-left corner is `(x, y)`.
@@ -310,12 +300,10 @@ fn draw_segments(
         let pb = cc.backend_coord(&bottom);
         let candidates =
             [(pt.0 - w / 2, pt.1 - 6 - h), (pb.0 - w / 2, pb.1 + 6), (pt.0 + 8, pt.1), (pt.0 - 8 - w, pt.1)];
-        let rects: Vec<Rect> = candidates.iter().map(|&(l, t)| (l, t, l + w, t + h)).collect();
-        let rect = rects
-            .iter()
-            .copied()
-            .find(|&r| inside(r, plot_rect) && !taken.iter().any(|&o| overlaps(r, o)))
-            .unwrap_or(rects[0]);
+        let rects = candidates.map(|(l, t)| (l, t, l + w, t + h));
+        // the first box inside the plot and clear of the rest, else the first
+        let cost = |r: Rect| usize::from(!(inside(r, plot_rect) && !taken.iter().any(|&o| overlaps(r, o))));
+        let rect = first_least(rects, cost).map_or(rects[0], |(r, _)| r);
         boxed_text(root, &s.label, rect, label_style)?;
         taken.push(rect);
     }
@@ -352,22 +340,26 @@ fn draw_contour_labels(
         let inside_clip = |p: (i32, i32)| {
             cc.as_coord_spec().reverse_translate(p).is_some_and(|(x, y)| map.clip.iter().all(|e| e.contains(x, y)))
         };
-        for k in order.filter(|&k| k < segs.len()) {
+        let rects = order.filter(|&k| k < segs.len()).map(|k| {
             let s = segs[k];
             let c = ((s[0].0 + s[1].0) / 2.0, (s[0].1 + s[1].1) / 2.0);
             let p = cc.backend_coord(&c);
-            let rect = (p.0 - w / 2, p.1 - h / 2, p.0 - w / 2 + w, p.1 - h / 2 + h);
+            (p.0 - w / 2, p.1 - h / 2, p.0 - w / 2 + w, p.1 - h / 2 + h)
+        });
+        // the first box inside the plot and every clip ellipse and clear of the rest, or none
+        let cost = |rect: Rect| {
             let corners = [(rect.0, rect.1), (rect.2, rect.1), (rect.0, rect.3), (rect.2, rect.3)];
-            if inside(rect, plot_rect)
-                && corners.iter().all(|&q| inside_clip(q))
-                && !taken.iter().any(|&o| overlaps(rect, o))
-            {
-                root.draw(&Rectangle::new([(rect.0, rect.1), (rect.2, rect.3)], WHITE.mix(0.8).filled()))
-                    .map_err(plot::msg)?;
-                root.draw_text(&text, &style, (rect.0 + 3, rect.1 + 2)).map_err(plot::msg)?;
-                taken.push(rect);
-                break;
-            }
+            usize::from(
+                !(inside(rect, plot_rect)
+                    && corners.iter().all(|&q| inside_clip(q))
+                    && !taken.iter().any(|&o| overlaps(rect, o))),
+            )
+        };
+        if let Some((rect, 0)) = first_least(rects, cost) {
+            root.draw(&Rectangle::new([(rect.0, rect.1), (rect.2, rect.3)], WHITE.mix(0.8).filled()))
+                .map_err(plot::msg)?;
+            root.draw_text(&text, &style, (rect.0 + 3, rect.1 + 2)).map_err(plot::msg)?;
+            taken.push(rect);
         }
     }
     Ok(())
@@ -405,13 +397,14 @@ fn draw_markers(
             (p.0 + 10, p.1 + 10),
             (p.0 - 10 - w, p.1 + 10),
         ];
-        let rects: Vec<Rect> = candidates.iter().map(|&(l, t)| (l, t, l + w, t + h)).collect();
-        let rect = rects
-            .iter()
-            .copied()
-            .find(|&r| inside(r, plot_rect) && !taken.iter().any(|&o| overlaps(r, o)))
-            .or_else(|| rects.iter().copied().find(|&r| inside(r, plot_rect)))
-            .unwrap_or(rects[0]);
+        let rects = candidates.map(|(l, t)| (l, t, l + w, t + h));
+        // the first box inside the plot and clear of the rest, else the first inside, else the first
+        let cost = |r: Rect| match (inside(r, plot_rect), taken.iter().any(|&o| overlaps(r, o))) {
+            (true, false) => 0,
+            (true, true) => 1,
+            (false, _) => 2,
+        };
+        let rect = first_least(rects, cost).map_or(rects[0], |(r, _)| r);
         boxed_text(root, &m.label, rect, label_style)?;
         taken.push(rect);
     }

@@ -43,6 +43,11 @@ impl Bounds {
         (self.x(self.u0), self.x(self.u1))
     }
 
+    /// The y range.
+    pub(super) fn y_range(&self) -> (f64, f64) {
+        (self.v0, self.v1)
+    }
+
     /// Where `(x, y)` lies across the bounds: (0, 0) at the lower-left corner, (1, 1) at the
     /// upper-right one.
     pub(super) fn frac(&self, x: f64, y: f64) -> (f64, f64) {

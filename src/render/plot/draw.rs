@@ -50,12 +50,19 @@ where
     let (s0, s1) = plan.y2.unwrap_or(plan.y);
     let has_y2 = plan.y2.is_some();
 
+    // named y ticks take the room their longest name needs (and the axis description's)
+    let y_named = named_font(chart.y_ticks.len());
+    let mut y_area = 110;
+    for (_, name) in &chart.y_ticks {
+        let (w, _) = root.estimate_text_size(name, &y_named).map_err(msg)?;
+        y_area = y_area.max(w as i32 + NAMED_GAP + AXIS_DESC_SIZE as i32 + 24);
+    }
     let mut builder = ChartBuilder::on(root);
     builder
         .caption(&chart.title, title_font(root, &chart.title)?)
         .margin(20)
         .x_label_area_size(70)
-        .y_label_area_size(110);
+        .y_label_area_size(y_area);
     if has_y2 {
         builder.right_y_label_area_size(110);
     }
@@ -74,8 +81,8 @@ where
             .axis_desc_style(font(AXIS_DESC_SIZE, FontStyle::Normal))
             .bold_line_style(RGBColor(0, 0, 0).mix(0.15))
             .light_line_style(RGBColor(0, 0, 0).mix(0.05))
-            .x_labels(10)
-            .y_labels(10)
+            .x_labels(if chart.x_ticks.is_empty() { 10 } else { 0 })
+            .y_labels(if chart.y_ticks.is_empty() { 10 } else { 0 })
             .y_label_formatter(&y_fmt);
         if chart.x_log {
             mesh.x_label_formatter(&log_fmt);
@@ -99,15 +106,54 @@ where
     let right = Bounds::new(plan.x, (s0, s1), plan.x_log);
     let (px, py) = cc.plotting_area().get_pixel_range();
     let area: Rect = (px.start, py.start, px.end, py.end);
+    let pix = |b: Bounds| ToPixel { bounds: b, area };
+    draw_named_ticks(root, chart, pix(left), y_named)?;
     let mut entries = draw_bands(&mut cc, chart, left, (y0, y1))?;
     let mut obstacles = Vec::new();
-    let pix = |b: Bounds| ToPixel { bounds: b, area };
     entries.extend(draw_curves(&mut cc, chart, (pix(left), pix(right)), has_y2, &mut obstacles)?);
     entries.extend(draw_vlines(&mut cc, chart, pix(left), (y0, y1), &mut obstacles)?);
     if plan.clipped(chart) > 0 {
         entries.push(Entry { label: CLIPPED_NOTE.to_string(), glyph: Glyph::None });
     }
     draw_legend(root, &entries, area, &obstacles)
+}
+
+/// Pixels between a named tick's label and the plotting area.
+const NAMED_GAP: i32 = 8;
+
+/// The font of named ticks: the tick size, smaller when `n` of them share the height.
+fn named_font(n: usize) -> TextStyle<'static> {
+    let room = f64::from(super::HEIGHT) - 170.0;
+    let size = if n == 0 { TICK_SIZE } else { (0.85 * room / n as f64).clamp(10.0, TICK_SIZE) };
+    font(size.floor(), FontStyle::Normal)
+}
+
+/// The chart's named ticks ([`Chart::x_ticks`], [`Chart::y_ticks`]): a light grid line across
+/// the plotting area at each, its name outside the area (left of it for y, below it for x).
+/// Ticks outside the axis range are left out.
+fn draw_named_ticks(
+    root: &DrawingArea<BitMapBackend<'_>, Shift>,
+    chart: &Chart,
+    pix: ToPixel,
+    y_font: TextStyle<'static>,
+) -> std::result::Result<(), String> {
+    let (x0, y0, x1, y1) = pix.area;
+    let grid = RGBColor(0, 0, 0).mix(0.15);
+    let (xr, yr) = (pix.bounds.x_range(), pix.bounds.y_range());
+    let within = |v: f64, (lo, hi): (f64, f64)| v.is_finite() && v >= lo.min(hi) && v <= lo.max(hi);
+    let y_style = y_font.pos(Pos::new(HPos::Right, VPos::Center));
+    for (v, name) in chart.y_ticks.iter().filter(|(v, _)| within(*v, yr)) {
+        let y = pix.px((xr.0, *v)).1.round() as i32;
+        root.draw(&PathElement::new(vec![(x0, y), (x1, y)], grid)).map_err(msg)?;
+        root.draw_text(name, &y_style, (x0 - NAMED_GAP, y)).map_err(msg)?;
+    }
+    let x_style = font(TICK_SIZE, FontStyle::Normal).pos(Pos::new(HPos::Center, VPos::Top));
+    for (v, name) in chart.x_ticks.iter().filter(|(v, _)| within(*v, xr)) {
+        let x = pix.px((*v, yr.0)).0.round() as i32;
+        root.draw(&PathElement::new(vec![(x, y0), (x, y1)], grid)).map_err(msg)?;
+        root.draw_text(name, &x_style, (x, y1 + NAMED_GAP)).map_err(msg)?;
+    }
+    Ok(())
 }
 
 /// What a legend entry shows left of its text.

@@ -2,9 +2,7 @@
 //! that covers the fewest curve pixels, and the pixel samples of the curves it must avoid.
 
 use super::clip::Bounds;
-
-/// A pixel rectangle: (left, top, right, bottom).
-pub type Rect = (i32, i32, i32, i32);
+pub use crate::render::place::Rect;
 
 /// Gap between the legend box and the plotting area's edge, pixels.
 const INSET: i32 = 12;
@@ -34,16 +32,7 @@ pub fn place_legend(area: Rect, size: (i32, i32), obstacles: &[(i32, i32)]) -> (
         let (x0, y0, x1, y1) = (x - CLEARANCE, y - CLEARANCE, x + w + CLEARANCE, y + h + CLEARANCE);
         obstacles.iter().filter(|&&(px, py)| px >= x0 && px <= x1 && py >= y0 && py <= y1).count()
     };
-    let mut best = spots[0];
-    let mut best_n = covered(best);
-    for &s in &spots[1..] {
-        let n = covered(s);
-        if n < best_n {
-            best = s;
-            best_n = n;
-        }
-    }
-    best
+    crate::render::place::first_least(spots.iter().copied(), covered).map_or(spots[0], |(s, _)| s)
 }
 
 /// Maps data coordinates on one axis to pixels of the plotting area.

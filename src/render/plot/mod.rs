@@ -212,6 +212,13 @@ pub struct Chart {
     pub vlines: Vec<VLine>,
     /// Shaded x bands, drawn behind everything else.
     pub bands: Vec<Band>,
+    /// Named x ticks (position, name) in place of the numbered ones (none: numbered), each
+    /// with a grid line: an axis of categories, or of a scale whose numbers are not the
+    /// data's (an asinh axis labelled in the untransformed values).
+    pub x_ticks: Vec<(f64, String)>,
+    /// Named y ticks, the same (the label area widens to the longest name; many names share
+    /// the height in a smaller font).
+    pub y_ticks: Vec<(f64, String)>,
 }
 
 impl Chart {

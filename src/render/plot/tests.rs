@@ -366,3 +366,21 @@ fn faint_curves_stay_readable_on_white() {
         assert!(contrast_on_white(faint) >= 1.5, "palette {i}: {}", contrast_on_white(faint));
     }
 }
+
+#[test]
+fn named_ticks_replace_the_numbered_ones() {
+    let dir = scratch();
+    let mut chart = Chart::new("categories", "input", "index");
+    chart.curves.push(Curve::new("total", vec![1.0, 2.0, 3.0], vec![0.2, 0.7, 0.1]).with_style(LineStyle::Points));
+    chart.x_range = Some((0.5, 3.5));
+    let numbered = render_bytes(&chart, dir.path(), "numbered.png");
+    chart.x_ticks = vec![(1.0, "ks".into()), (2.0, "ei".into()), (3.0, "mass".into())];
+    let named = render_bytes(&chart, dir.path(), "named.png");
+    assert_ne!(numbered, named);
+    assert_eq!(named, render_bytes(&chart, dir.path(), "named2.png"), "deterministic");
+    // many long y names widen the label area; names outside the range are left out, no panic
+    chart.y_ticks = (0..60).map(|k| (f64::from(k) / 60.0, format!("a_long_claim_identifier_{k}"))).collect();
+    chart.y_ticks.push((5.0, "outside".into()));
+    chart.y_ticks.push((f64::NAN, "nan".into()));
+    assert_ne!(named, render_bytes(&chart, dir.path(), "both.png"));
+}

@@ -33,7 +33,7 @@ use crate::model::basis::Basis;
 use crate::model::beam::Beam;
 use crate::model::contact::{Contact, ContactLaw};
 use crate::model::coupling::Coupling;
-use crate::model::tangential::Setup;
+use crate::model::tangential::{Setup, MAX_TANGENTIAL_STEPS};
 use crate::params::{Grip, Params};
 use crate::solve::oblique;
 use crate::solve::observer::{Plain, Sampler};
@@ -161,6 +161,12 @@ impl Model {
             return Err(Error::TooManySteps { steps, dt_s: dt, nodes: beam.nodes(), limit: MAX_NODE_STEPS });
         }
         let oblique = Setup::of(given, beam, coupling.load.x_load);
+        if let Some(setup) = &oblique {
+            let steps = setup.steps_within(t_limit);
+            if steps.is_nan() || steps > MAX_TANGENTIAL_STEPS {
+                return Err(Error::TooManyTangentialSteps { steps, limit: MAX_TANGENTIAL_STEPS });
+            }
+        }
         Ok(Model {
             params: *params,
             oblique,

@@ -135,6 +135,14 @@ const START: usize = 0;
 /// Number of rigid coordinates ahead of the flexible modes: ball, translation, rotation, twist.
 const RIGID: usize = 4;
 
+/// Refuse parameters whose free vibration after the impact (two fundamental periods, sampled
+/// at [`PHASE_PER_SAMPLE`](crate::model::free::PHASE_PER_SAMPLE) of the fastest kept mode, every
+/// kept mode rotated at each sample: the search's worst case) needs more mode-samples than this.
+/// A mode-sample is a few floating-point operations, so this is of the order of the explicit
+/// solver's limit ([`crate::solve::fd::MAX_NODE_STEPS`], about 15 s); without it a frame of
+/// `ei` 1e-2 on 400 segments hit by a stiff ball ran for hours.
+pub const MAX_MODE_SAMPLES: f64 = 8.0e9;
+
 /// A prepared modal model of one impact.
 #[derive(Debug, Clone)]
 pub struct ModalModel {
@@ -179,6 +187,7 @@ impl ModalModel {
             Shared::keep(&shared, key);
         }
         let m = ModalModel { base, law, impulse_tolerance, set: shared };
+        m.check_work()?;
         Ok(m)
     }
 
@@ -212,6 +221,20 @@ impl ModalModel {
         }
         let compression = Compression::new(&lam, &g, law.compression_stiffness(), residual, mb, base.time_limit_s);
         Shared::new(lam, g, residual, compression, basis, res.phase_per_step / omega_contact)
+    }
+
+    /// Refuse a model whose free-vibration search would exceed [`MAX_MODE_SAMPLES`] (the
+    /// steps of the contact are bounded by the time limit and the finest step level).
+    fn check_work(&self) -> Result<()> {
+        let modes = self.retained_modes();
+        let fastest = self.set.omega.last().copied().unwrap_or(0.0);
+        let f1_hz = self.base.f1_hz;
+        let samples = 2.0 / f1_hz * fastest / crate::model::free::PHASE_PER_SAMPLE;
+        let work = samples * modes as f64;
+        if work.is_nan() || work > MAX_MODE_SAMPLES {
+            return Err(Error::TooManySamples { work, modes, f1_hz, limit: MAX_MODE_SAMPLES });
+        }
+        Ok(())
     }
 
     /// The step tables of a refinement level.

@@ -5,10 +5,12 @@ use std::path::PathBuf;
 
 use super::summary::{diff_summary, map_summary};
 use super::{check_count, DiffMap, FaceMap, Quantity};
+use crate::diagnostic::{Diagnostic, Kind};
 use crate::error::{Error, Result};
 use crate::params::{ks_from_tension_lb, Params};
 use crate::render::heatmap::HeatMap;
 use crate::render::table::Table;
+use crate::study::diagnose;
 use crate::study::{check_comparison, racket_label, Sources};
 
 /// A map of one configuration, or the difference of two.
@@ -52,6 +54,28 @@ impl MapOutcome {
     pub fn recontacts(&self) -> usize {
         let flags = self.table.column("recontact").or_else(|| self.table.column("recontact_b")).unwrap_or_default();
         flags.iter().filter(|&&v| v != 0.0).count()
+    }
+
+    /// The map's diagnostics: those of its configurations' parameters `params`, the largest twist
+    /// over the face and the points with a re-contact.
+    pub fn diagnostics<'a>(&self, params: impl IntoIterator<Item = &'a Params>) -> Vec<Diagnostic> {
+        let mut out = diagnose::parameters(params, &[]);
+        let theta = ["theta_end_deg", "theta_end_deg_a", "theta_end_deg_b"]
+            .iter()
+            .filter_map(|c| self.table.column(c))
+            .flatten()
+            .filter(|v| v.is_finite())
+            .max_by(|a, b| a.abs().total_cmp(&b.abs()));
+        out.extend(theta.and_then(diagnose::twist));
+        let n_re = self.recontacts();
+        if n_re > 0 {
+            out.push(Diagnostic::new(
+                Kind::BeyondModel,
+                "recontact",
+                format!("{n_re} map points have a re-contact after separation (flagged in the recontact column)"),
+            ));
+        }
+        out
     }
 }
 
