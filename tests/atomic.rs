@@ -82,6 +82,8 @@ fn a_figures_run_killed_midway_leaves_every_output_old_or_complete() {
             replaced += 1;
         }
     }
-    assert!(replaced >= 1 && kept >= 1, "the kill did not land midway ({replaced} replaced, {kept} kept)");
+    // (figures publishes every experiment's files together at the end, issue 32: a SIGKILL,
+    // which nothing can catch, lands during or after the renames, so some or all are new)
+    assert!(replaced >= 1, "the kill landed before any output was published ({replaced} replaced, {kept} kept)");
     let _ = std::fs::remove_dir_all(dir);
 }

@@ -53,7 +53,7 @@ pub struct MapArgs {
     pub compare_racket: Option<String>,
     /// Difference map between string tensions, lb: T (A = the configuration as given, B = at T)
     /// or T1,T2 (A at T1, B at T2); k_s = 4e4 N/m * T / 60 lb
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    #[arg(long, value_parser = super::common::number, value_delimiter = ',', allow_hyphen_values = true)]
     pub compare_tension_lb: Vec<f64>,
 }
 

@@ -23,10 +23,10 @@ pub struct SimulateArgs {
     #[arg(long, help_heading = "Output")]
     pub series: Option<PathBuf>,
     /// Sample spacing of the time series, s
-    #[arg(long, default_value_t = DEFAULT_SERIES_DT, allow_hyphen_values = true, help_heading = "Output")]
+    #[arg(long, value_parser = super::common::number, default_value_t = DEFAULT_SERIES_DT, allow_hyphen_values = true, help_heading = "Output")]
     pub series_dt: f64,
     /// Extend the time series to at least this time, s
-    #[arg(long, default_value_t = DEFAULT_SERIES_END, allow_hyphen_values = true, help_heading = "Output")]
+    #[arg(long, value_parser = super::common::number, default_value_t = DEFAULT_SERIES_END, allow_hyphen_values = true, help_heading = "Output")]
     pub series_end: f64,
 }
 
@@ -62,7 +62,15 @@ pub fn run(a: SimulateArgs) -> Result<()> {
         // (or --series-end), one row per sample or per step, whichever is longer
         let f1_hz = racket_impact::model::basis::Basis::of(&params.racket, params.numerics.segments).omega[0]
             / (2.0 * std::f64::consts::PI);
-        let rows = a.series_end.max(0.05 + 2.0 / f1_hz) / a.series_dt.max(model.dt);
+        let span = a.series_end.max(0.05 + 2.0 / f1_hz);
+        if span / a.series_dt < 2.0 {
+            return Err(Error::invalid(
+                "series-dt",
+                a.series_dt,
+                format!("the sample spacing must leave at least two samples over the series' {} s", sig(span, 3)),
+            ));
+        }
+        let rows = span / a.series_dt.max(model.dt);
         let most = racket_impact::params::limits::MAX_SERIES_ROWS;
         if rows.is_nan() || rows > most as f64 {
             let (field, value) = if a.series_end > 0.05 + 2.0 / f1_hz {

@@ -36,17 +36,17 @@ pub struct SpeedArgs {
     #[command(flatten)]
     pub common: Common<SpeedKeys>,
     /// Racket speed at the impact point, towards the ball (in --unit)
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, value_parser = super::common::number, allow_hyphen_values = true)]
     pub swing: f64,
     /// Incoming ball speed, towards the racket (in --unit); 0 for a serve
-    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    #[arg(long, value_parser = super::common::number, default_value_t = 0.0, allow_hyphen_values = true)]
     pub incoming: f64,
     /// Unit of the speeds
     #[arg(long, value_enum, default_value_t = UnitArg::Kmh)]
     pub unit: UnitArg,
     /// Compare string tensions, lb: T (A = the configuration as given, against A at T) or
     /// T1,T2,... (A at T1, against A at each other tension); k_s = 4e4 N/m * T / 60 lb
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    #[arg(long, value_parser = super::common::number, value_delimiter = ',', allow_hyphen_values = true)]
     pub compare_tension_lb: Vec<f64>,
     /// Compare against these rackets (files or presets, e.g. light,players): each against A =
     /// --racket (or the paper's), which is the first row
@@ -54,10 +54,10 @@ pub struct SpeedArgs {
     pub compare_racket: Vec<String>,
     /// Swing path angle above the horizontal, degrees (-80..=80): > 0 brushes up the back of
     /// the ball for topspin; the face stands vertical and the ball comes in horizontally
-    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    #[arg(long, value_parser = super::common::number, default_value_t = 0.0, allow_hyphen_values = true)]
     pub swing_path_deg: f64,
     /// Spin of the incoming ball in its own flight, rpm (court frame: > 0 topspin, its top moving forward)
-    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    #[arg(long, value_parser = super::common::number, default_value_t = 0.0, allow_hyphen_values = true)]
     pub incoming_spin_rpm: f64,
 }
 

@@ -72,9 +72,16 @@ pub fn run(a: SweepArgs) -> Result<()> {
     // a swept parameter none of the impacts uses is refused; a config file's unused keys named
     let representatives = sweep.representatives()?;
     let swept: Vec<&str> = sweep.axes.iter().filter_map(|ax| keys::find(&ax.key).map(|s| s.key)).collect();
-    if let Some((key, why)) = racket_impact::params::used::first_unused(&swept, &representatives) {
-        let values = sweep.axes.iter().find(|ax| ax.key == key).map(|ax| ax.values.join(",")).unwrap_or_default();
-        return Err(racket_impact::Error::invalid(keys::find(key).map_or("sweep", |s| s.key), values, why));
+    for key in &swept {
+        if let Some((key, why)) = racket_impact::params::used::first_unused(&[key], &representatives) {
+            let values = sweep.axes.iter().find(|ax| ax.key == key).map(|ax| ax.values.join(",")).unwrap_or_default();
+            let field = keys::find(key).map_or("sweep", |s| s.key);
+            // (a property no point exercises is noted; a method's option refused, as for simulate)
+            if representatives.first().is_some_and(|p| racket_impact::params::used::is_refused(key, p)) {
+                return Err(racket_impact::Error::invalid(field, values, why));
+            }
+            super::common::warn(&format!("--{field} {values} is not exercised by these impacts ({why})"));
+        }
     }
     if let Some(path) = &a.config {
         let config = racket_impact::study::config_file(Some(path))?;
@@ -143,7 +150,7 @@ fn csv_lines(rows: &[Vec<String>]) -> Vec<u8> {
             }
             out.push(b'\n');
         } else {
-            let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(out);
+            let mut w = racket_impact::render::table::csv_writer(out);
             let _ = w.write_record(r);
             out = w.into_inner().unwrap_or_default();
         }
@@ -173,8 +180,7 @@ mod tests {
         .map(|r| r.iter().map(|f| f.to_string()).collect())
         .collect();
         // (rows of every length here: the sweep's are all as long as its header)
-        let mut w =
-            csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).flexible(true).from_writer(Vec::new());
+        let mut w = racket_impact::render::table::csv_writer(Vec::new());
         for r in &rows {
             w.write_record(r).unwrap();
         }

@@ -415,7 +415,7 @@ fn in_band(v: f64, (lo, hi): (f64, f64)) -> f64 {
 }
 
 /// Verdict colours (palette indices); an `independent` claim has no interval to draw.
-const COLOURS: [(&str, usize); 3] = [("holds", 3), ("part", 1), ("not at all", 4)];
+const COLOURS: [(&str, usize); 3] = [("holds", 3), ("part", 1), ("not at all", 5)];
 
 /// The x axis' named ticks: distances from the paper's value in tolerances, on the asinh
 /// scale.

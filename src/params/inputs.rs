@@ -3,7 +3,7 @@
 //! compared with them by identity (device and inode, after following links), not spelling, so
 //! `./c.toml`, an absolute path, a hard link and a symbolic link to it are all the same file.
 //!
-//! Every input is read through [`super::read_file`], which records it here; the output side
+//! Every input is read through `super::read_file`, which records it here; the output side
 //! ([`crate::render::io`]) asks [`same_as_input`] before any work and again when it stages a
 //! file. Hand-written rather than the `same-file` crate: its handles open the file, which
 //! blocks on a FIFO output (`--out /dev/stdout` into a pipe) and changes nothing for a path

@@ -5,6 +5,27 @@
 
 use super::{Frame, Grip, Params, SolverKind, StringLaw, TangentialLaw};
 
+/// Whether a value given for a parameter the impact does not use is accepted with a note or
+/// refused (issue 32): a *property* of the racket, ball or strings that this impact does not
+/// exercise (friction at normal incidence, `ix` on the long axis) is accepted with one note, so
+/// that a script describing one racket and ball can loop over impact points and angles; an
+/// *option of a method* the chosen method cannot honour (`dt` with the modal solver, a hand's
+/// stiffness with the free grip, `mu-ss` without the sliding bed) is refused.
+pub fn is_refused(key: &str, params: &Params) -> bool {
+    let impact_only = params.oblique.is_normal() || params.impact.r == 0.0;
+    match key {
+        // unused only because of where and how the ball arrives: the impact
+        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string"
+            if params.oblique.is_normal() =>
+        {
+            false
+        }
+        "mu-ss" if params.oblique.is_normal() => false,
+        "half-width" | "ix" if impact_only => false,
+        _ => true,
+    }
+}
+
 /// Why the impact `params` does not use parameter `key`, or `None` if it does.
 pub fn unused_reason(key: &str, params: &Params) -> Option<&'static str> {
     let v = &params.variants;

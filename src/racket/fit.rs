@@ -276,6 +276,21 @@ pub fn resolve(spec: Option<&RacketSpec>, overrides: &params::Overrides) -> Resu
         None => None,
     };
     params::keys::face_centre_impact(&mut p);
+    // a racket file's head outline is the string face: its width is the file's to say (an
+    // override would move the face's edge away from the racket described, and let an impact
+    // land outside its head)
+    if let (Some(hw), Some(_)) = (overrides.half_width, p.racket.head_length) {
+        if hw != p.racket.half_width {
+            return Err(crate::error::Error::invalid(
+                "half-width",
+                hw,
+                format!(
+                    "the racket file's head outline sets the string face (half-width {} m): change head_width_cm (or head_size_sq_in) in the file",
+                    crate::numfmt::sig(p.racket.half_width, 4)
+                ),
+            ));
+        }
+    }
     overrides.apply(&mut p);
     let file_mu = fitted.as_ref().is_some_and(|f| f.mu.is_some());
     params::strings::apply(&mut p.oblique, overrides.mu.is_some() || file_mu, overrides.mu_ss.is_some())?;

@@ -31,6 +31,13 @@ pub fn preset(name: &str) -> Option<RacketSpec> {
 /// A preset by name, else a racket file at the path `arg`. Neither gives an error listing the
 /// presets.
 pub fn load(arg: &str) -> Result<RacketSpec> {
+    if arg.chars().any(char::is_control) {
+        return Err(Error::invalid(
+            "racket",
+            format!("{arg:?}"),
+            "a racket's name or path labels rows and tables: no line breaks or control characters",
+        ));
+    }
     let path = Path::new(arg);
     // (symlink_metadata: a dangling link or a FIFO is there too, and the reader says what it is)
     let is_there = std::fs::symlink_metadata(path).is_ok();

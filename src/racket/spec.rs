@@ -172,6 +172,13 @@ impl RacketSpec {
     pub fn from_toml_bytes(path: &Path, bytes: &[u8]) -> Result<Self> {
         let spec: RacketSpec =
             params::parse_toml(path, bytes, "give at least length_cm, mass_g, twistweight_kg_cm2, frequency_hz")?;
+        if let Some(name) = spec.name.as_deref().filter(|n| n.chars().any(char::is_control)) {
+            return Err(crate::Error::invalid(
+                "name",
+                format!("{name:?}"),
+                "a racket's name labels rows and tables: one line of text, without line breaks or control characters",
+            ));
+        }
         spec.validate().map_err(|e| match e {
             several @ crate::Error::Several(_) => {
                 crate::Error::Config { path: path.into(), message: several.to_string() }

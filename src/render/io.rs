@@ -456,6 +456,17 @@ mod tests {
         tempfile::tempdir().expect("create temp dir")
     }
 
+    /// A folder with an old `a.csv`, and a set staging new contents for `a.csv` and a new `b.png`.
+    fn old_a_staged_with_new_b() -> (tempfile::TempDir, PathBuf, PathBuf, Staged) {
+        let dir = scratch();
+        let (a, b) = (dir.path().join("a.csv"), dir.path().join("b.png"));
+        fs::write(&a, b"old a").unwrap();
+        let mut staged = Staged::new();
+        staged.bytes(&a, b"new a").unwrap();
+        staged.bytes(&b, b"new b").unwrap();
+        (dir, a, b, staged)
+    }
+
     fn entries(dir: &Path) -> Vec<String> {
         let mut names: Vec<String> = fs::read_dir(dir)
             .expect("read dir")
@@ -560,12 +571,7 @@ mod tests {
 
     #[test]
     fn a_failed_print_puts_back_every_replaced_file() {
-        let dir = scratch();
-        let (a, b) = (dir.path().join("a.csv"), dir.path().join("b.png"));
-        fs::write(&a, b"old a").unwrap();
-        let mut staged = Staged::new();
-        staged.bytes(&a, b"new a").unwrap();
-        staged.bytes(&b, b"new b").unwrap();
+        let (dir, a, b, staged) = old_a_staged_with_new_b();
         let e = staged.publish(|| Err(Error::io("<stdout>", "No space left on device"))).unwrap_err();
         assert!(e.to_string().contains("No space left"), "{e}");
         assert_eq!(fs::read(&a).unwrap(), b"old a", "replaced file put back");
@@ -582,12 +588,7 @@ mod tests {
 
     #[test]
     fn a_destination_that_changed_fails_before_any_rename() {
-        let dir = scratch();
-        let (a, b) = (dir.path().join("a.csv"), dir.path().join("b.png"));
-        fs::write(&a, b"old a").unwrap();
-        let mut staged = Staged::new();
-        staged.bytes(&a, b"new a").unwrap();
-        staged.bytes(&b, b"new b").unwrap();
+        let (dir, a, b, staged) = old_a_staged_with_new_b();
         fs::create_dir(&b).unwrap();
         let mut printed = false;
         let e = staged

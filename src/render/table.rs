@@ -7,6 +7,12 @@
 use crate::error::{Error, Result};
 use crate::numfmt::fmt_sig;
 
+/// The `csv` writer of every CSV the crate writes: lines end with `\n` (on every platform),
+/// fields are quoted only where needed (RFC 4180), and records may differ in length.
+pub fn csv_writer<W: std::io::Write>(out: W) -> csv::Writer<W> {
+    csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).flexible(true).from_writer(out)
+}
+
 /// Significant digits used for floating-point numbers in CSV output.
 pub const SIG_DIGITS: usize = 6;
 
@@ -187,8 +193,7 @@ impl Table {
     /// commas, quotes or line breaks are quoted (RFC 4180). Lines end with `\n`. The output is
     /// byte-for-byte deterministic.
     pub fn to_csv(&self) -> String {
-        let mut wtr =
-            csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).flexible(true).from_writer(Vec::new());
+        let mut wtr = csv_writer(Vec::new());
         let mut result = wtr.write_record(&self.columns);
         for row in &self.rows {
             if result.is_err() {

@@ -1,7 +1,7 @@
 //! The temporary files a run has staged (outputs not yet published, and the replaced files
 //! kept until a set of outputs is published), so that an interrupt can remove them: the
 //! command line's SIGINT/SIGTERM handler calls [`remove_staged`] and exits. Every temporary
-//! file of [`crate::render::io`] is a [`Temp`], known here from its creation until it is
+//! file of [`crate::render::io`] is a `Temp`, known here from its creation until it is
 //! renamed into place or dropped (which removes it).
 
 use std::path::{Path, PathBuf};

@@ -38,7 +38,7 @@ pub trait Solver: Sized {
 }
 
 /// Prepare and run one impact with the solver `S`; a result whose energy error exceeds the
-/// limit is an error, whichever solver made it ([`oblique::check_energy`]).
+/// limit is an error, whichever solver made it (`oblique::check_energy`).
 pub fn solve<S: Solver>(params: &Params) -> Result<ImpactResult> {
     let r = S::prepare(params)?.run()?;
     oblique::check_energy(&r)?;

@@ -93,15 +93,26 @@ impl Sources {
     /// command does not take or its impacts do not use (a config file may be shared between
     /// commands, so these are not refused), or `None`.
     pub fn check_used(&self, params: &[Params]) -> Result<Option<String>> {
-        use crate::params::used::first_unused;
-        if let Some((key, why)) = first_unused(&self.flags.given(), params) {
-            let value = params.first().and_then(|p| crate::params::keys::value_text(key, p)).unwrap_or_default();
-            return Err(Error::invalid(crate::params::keys::find(key).map_or("parameter", |s| s.key), value, why));
+        use crate::params::used::{first_unused, is_refused};
+        // a method's option it cannot honour is refused; a property this impact does not
+        // exercise is noted (crate::params::used::is_refused)
+        let mut noted = Vec::new();
+        for key in self.flags.given() {
+            if let Some((key, why)) = first_unused(&[key], params) {
+                let value = params.first().and_then(|p| crate::params::keys::value_text(key, p)).unwrap_or_default();
+                let field = crate::params::keys::find(key).map_or("parameter", |s| s.key);
+                if params.first().is_some_and(|p| is_refused(key, p)) {
+                    return Err(Error::invalid(field, value, why));
+                }
+                noted.push(format!("--{field} {value} is not exercised by this impact ({why})"));
+            }
         }
         let (config, dropped) = self.config()?;
         let path = self.config.as_deref().unwrap_or(Path::new(""));
         let overridden: Vec<&str> = self.flags.given().into_iter().chain(self.set_by_options.iter().copied()).collect();
-        Ok(unused_config_note(path, &config, &overridden, &dropped, self.command, params))
+        let config_note = unused_config_note(path, &config, &overridden, &dropped, self.command, params);
+        let notes: Vec<String> = noted.into_iter().chain(config_note).collect();
+        Ok((!notes.is_empty()).then(|| notes.join("; ")))
     }
 }
 

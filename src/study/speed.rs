@@ -127,6 +127,20 @@ impl SpeedRequest {
             let most = crate::params::limits::MAX_COMPARED;
             crate::params::limits::check_count(field, n as f64, most as u64, "the number of compared variants")?;
         }
+        // each racket compared once, and never with itself (the same name, or the same file)
+        for (i, r) in self.compare_racket.iter().enumerate() {
+            let earlier = self.sources.racket.iter().chain(&self.compare_racket[..i]).any(|e| e == r);
+            if earlier {
+                return Err(Error::invalid(
+                    "compare-racket",
+                    r,
+                    format!(
+                        "{r} is given twice (item {}): a racket compared with itself differs nowhere; give each once",
+                        i + 1
+                    ),
+                ));
+            }
+        }
         self.check_unused()?;
         let mut rows = Vec::new();
         for (label, racket, tension) in self.variants() {

@@ -195,6 +195,8 @@ impl Study {
         let upper: Vec<f64> = self.inputs.iter().map(|i| i.dist.quantile(0.95)).collect();
         let probe = self.params_at(&upper)?;
         for (input, text) in self.inputs.iter().zip(varies) {
+            // (drawing a property the impact does not exercise changes nothing: refused here
+            // too, as a study of it would find every index zero)
             if let Some(why) = crate::params::used::unused_reason(input.key, &probe) {
                 return Err(Error::invalid("vary", text, format!("{} is {why}", input.key)));
             }
@@ -315,7 +317,7 @@ impl Study {
                 }
             }
         }
-        let mut w = csv::WriterBuilder::new().terminator(csv::Terminator::Any(b'\n')).from_writer(Vec::new());
+        let mut w = crate::render::table::csv_writer(Vec::new());
         let _ = w.write_record(&head);
         for o in outputs {
             let s = &o.summary;

@@ -302,7 +302,7 @@ fn draw_segments(
             [(pt.0 - w / 2, pt.1 - 6 - h), (pb.0 - w / 2, pb.1 + 6), (pt.0 + 8, pt.1), (pt.0 - 8 - w, pt.1)];
         let rects = candidates.map(|(l, t)| (l, t, l + w, t + h));
         // the first box inside the plot and clear of the rest, else the first
-        let cost = |r: Rect| usize::from(!(inside(r, plot_rect) && !taken.iter().any(|&o| overlaps(r, o))));
+        let cost = |r: Rect| usize::from(!inside(r, plot_rect) || taken.iter().any(|&o| overlaps(r, o)));
         let rect = first_least(rects, cost).map_or(rects[0], |(r, _)| r);
         boxed_text(root, &s.label, rect, label_style)?;
         taken.push(rect);

@@ -56,6 +56,13 @@ pub fn parse_spec(key: &str, spec: &str) -> Result<Axis> {
         if log && (a <= 0.0 || b <= 0.0) {
             return Err(bad("a log range needs positive ends"));
         }
+        // a range says its ends: one value only where they are one, both where they differ
+        if n == 1 && a != b {
+            return Err(bad("a count of 1 gives the start only and ignores the stop: give one value, or a count >= 2"));
+        }
+        if n > 1 && a == b {
+            return Err(bad("the ends are equal, so every value is the same: give the value once"));
+        }
         (0..n)
             .map(|i| {
                 let f = if n == 1 { 0.0 } else { i as f64 / (n - 1) as f64 };
@@ -78,7 +85,54 @@ pub fn parse_spec(key: &str, spec: &str) -> Result<Axis> {
     for v in &values {
         probe.set(key, v)?;
     }
+    // every value runs once: a value given twice (a list, or a range whose rounding to whole
+    // segments repeats values) would run the same impacts twice
+    if let Some(twice) = repeated(&values) {
+        let why = if key == "segments" && spec.contains(':') {
+            let distinct = distinct_count(&values);
+            format!("rounded to whole segments the range repeats {twice}: it has {distinct} different values, so give a count of at most {distinct}")
+        } else {
+            format!("{twice} is given twice: each value runs once")
+        };
+        return Err(bad(&why));
+    }
     Ok(Axis { key: key.to_string(), values })
+}
+
+/// The values as sort keys: numbers by value (`0.1` and `1e-1` are one), names as written.
+fn keys_of(values: &[String]) -> Vec<(f64, &str)> {
+    let mut keys: Vec<(f64, &str)> = values
+        .iter()
+        .map(|v| match v.trim().parse::<f64>() {
+            Ok(x) => (x, ""),
+            Err(_) => (f64::NAN, v.trim()),
+        })
+        .collect();
+    keys.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(b.1)));
+    keys
+}
+
+/// One value (names carry a NaN number, which equals itself here).
+fn same(a: (f64, &str), b: (f64, &str)) -> bool {
+    a.0.total_cmp(&b.0).is_eq() && a.1 == b.1
+}
+
+/// A value of `values` that another repeats (sorted first: a range may hold a million).
+fn repeated(values: &[String]) -> Option<String> {
+    let keys = keys_of(values);
+    keys.windows(2).find(|w| same(w[0], w[1])).map(|w| {
+        if w[0].1.is_empty() {
+            crate::numfmt::sig(w[0].0, 12)
+        } else {
+            w[0].1.to_string()
+        }
+    })
+}
+
+/// How many different values `values` holds.
+fn distinct_count(values: &[String]) -> usize {
+    let keys = keys_of(values);
+    1 + keys.windows(2).filter(|w| !same(w[0], w[1])).count()
 }
 
 #[cfg(test)]

@@ -1,8 +1,9 @@
 //! Parameter sweeps: the cartesian product of ranges or lists of any parameter, run in
 //! parallel (rayon) in chunks, streamed in a deterministic order, so memory stays flat however
 //! many impacts a sweep has.
-//!//! The range grammar is [`axis`], the CSV's column layout [`columns`], the plan (what each
-//! impact is, every point validated first) this file and the runner [`run`].
+//!
+//! The range grammar is `axis`, the CSV's column layout `columns`, the plan (what each
+//! impact is, every point validated first) this file and the runner `run`.
 
 mod axis;
 mod columns;
