@@ -40,7 +40,9 @@ pub struct UncertaintyArgs {
 
 /// The long help: what is computed and the declared uncertainties `--claims` uses.
 pub fn long_about() -> String {
-    let line = |s: &racket_impact::params::spec::ParamSpec| s.uncertainty.map(|u| format!("{} ~ {} ({})", s.key, u.dist.text(), u.source));
+    let line = |s: &racket_impact::params::spec::ParamSpec| {
+        s.uncertainty.map(|u| format!("{} ~ {} ({})", s.key, u.dist.text(), u.source))
+    };
     let declared: Vec<String> = robustness::inputs().into_iter().filter_map(line).collect();
     let claims: Vec<&str> = robustness::inputs().iter().map(|s| s.key).collect();
     let oblique: Vec<String> = keys::uncertain().filter(|s| !claims.contains(&s.key)).filter_map(line).collect();

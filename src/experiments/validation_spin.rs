@@ -73,7 +73,8 @@ struct Row {
 /// crate: a row that does not parse is an error naming the file and its line.
 pub fn parse_measurements(text: &str, file: &str) -> Result<Vec<Measured>> {
     let mut rdr = csv::Reader::from_reader(text.as_bytes());
-    let headers = rdr.headers().map_err(|e| Error::csv_row("measurements", file, &csv::StringRecord::new(), &e))?.clone();
+    let headers =
+        rdr.headers().map_err(|e| Error::csv_row("measurements", file, &csv::StringRecord::new(), &e))?.clone();
     rdr.deserialize::<Row>()
         .map(|row| {
             let r = row.map_err(|e| Error::csv_row("measurements", file, &headers, &e))?;
@@ -393,9 +394,8 @@ fn run(ctx: &Context) -> Result<Table> {
         let of: Vec<&Compared> = rows.iter().filter(|c| c.quantity == q).collect();
         let unit = of[0].unit;
         // the errors of the values the law defines (a ratio over a near-zero spin is not one)
-        let err = |l: usize| -> Vec<f64> {
-            of.iter().map(|c| c.model[l] - c.measured).filter(|e| e.is_finite()).collect()
-        };
+        let err =
+            |l: usize| -> Vec<f64> { of.iter().map(|c| c.model[l] - c.measured).filter(|e| e.is_finite()).collect() };
         let rms = |l: usize| {
             let e = err(l);
             if e.is_empty() {

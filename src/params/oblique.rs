@@ -57,7 +57,7 @@ pub struct Oblique {
     /// `loss`); 0 < e_x < 1. Default 0.135: the middle of the 0.10-0.17 measured for gripping
     /// tennis-ball bounces (Cross 2002, Table III; data/measured M079-M080). The damping of the
     /// ball's tangential spring is the one that returns `e_x` over half a grip oscillation
-    /// ([`crate::model::grip::loss`]).
+    /// ([`crate::model::tangential::loss`]).
     pub ball_ex: f64,
     /// The ball's dynamic compression stiffness for the contact geometry (mechanisms `radius`,
     /// the lever `R - F / k`, and `offset`, Tabor's arm from the contact circle), N/m; 1e3..=1e9. Default [`BALL_KDYN`]: the stiffness of a linear

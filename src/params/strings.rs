@@ -58,7 +58,8 @@ pub struct StringEntry {
 /// known material and friction coefficients in 0..=2.
 pub fn parse_table(text: &str, file: &str) -> Result<Vec<StringEntry>> {
     let mut rdr = csv::Reader::from_reader(text.as_bytes());
-    let headers = rdr.headers().map_err(|e| Error::csv_row("string table", file, &csv::StringRecord::new(), &e))?.clone();
+    let headers =
+        rdr.headers().map_err(|e| Error::csv_row("string table", file, &csv::StringRecord::new(), &e))?.clone();
     let mut out = Vec::new();
     for row in rdr.deserialize::<StringEntry>() {
         let bad = |line: u64, what: String| Error::invalid("string table", format!("{file}:{line}"), what);
@@ -131,11 +132,9 @@ pub fn sets(name: StringName, key: &str) -> Option<&'static str> {
 /// whose entry sets it.
 pub fn refuse_if_set(name: StringName, key: &'static str) -> Result<()> {
     match sets(name, key) {
-        Some(id) => Err(Error::invalid(
-            key,
-            "given",
-            format!("is set by string = {id} (data/strings); give one or the other"),
-        )),
+        Some(id) => {
+            Err(Error::invalid(key, "given", format!("is set by string = {id} (data/strings); give one or the other")))
+        }
         None => Ok(()),
     }
 }

@@ -20,7 +20,7 @@ pub fn is_refused(key: &str, params: &Params) -> bool {
         {
             false
         }
-        "mu-ss" if params.oblique.is_normal() => false,
+        "mu-ss" | "ball-ex" | "ball-kdyn" if params.oblique.is_normal() => false,
         "half-width" | "ix" if impact_only => false,
         _ => true,
     }

@@ -262,7 +262,7 @@ fn against_measurement() -> Result<String> {
         ef = rms("elastic", "forehand_spin_rpm"),
         dfr = rms(default, "forehand_spin_rpm"),
         minp = fmt_sig(min_p, 2),
-        fpk = format!("{peak:.0}"),
+        fpk = format_args!("{peak:.0}"),
         dd = fmt_sig(1e3 * peak / o.ball_kdyn, 2),
         d1 = fmt_sig(1e3 * peak / ball.k1, 2),
     ));

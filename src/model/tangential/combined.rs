@@ -4,7 +4,7 @@
 //!
 //! - [`loss`](super::loss): a damper in parallel with the ball's tangential spring (tangential
 //!   hysteresis, sized by the ball's measured tangential restitution `e_x`);
-//! - [`offset`](super::offset): the normal force acting ahead of the ball's centre (Tabor's
+//! - [`offset`]: the normal force acting ahead of the ball's centre (Tabor's
 //!   rolling-hysteresis arm), a torque against its spin;
 //! - [`bed`](super::bed): the strings sliding sideways over each other and snapping back;
 //! - [`radius`](super::radius): the friction force acting at `R - delta`, the deformed ball's
@@ -559,7 +559,8 @@ mod tests {
                 assert_eq!(c.u(), 0.0);
                 assert!((-w_out / w_in / e_x - 1.0).abs() < 1e-4, "e_x {e_x}, v {v}, omega {omega}: {}", -w_out / w_in);
                 let ke = |v: f64, w: f64| 0.5 * mb * v * v + 0.5 * law.base.inertia * w * w;
-                let ledger = ke(v, omega) - ke(c.v(), c.omega()) - c.damping_loss() - c.friction_loss() - c.spring_energy();
+                let ledger =
+                    ke(v, omega) - ke(c.v(), c.omega()) - c.damping_loss() - c.friction_loss() - c.spring_energy();
                 assert!(ledger.abs() < 1e-4 * ke(v, omega), "{}", ledger / ke(v, omega));
                 // momentum about the contact point: the ball's angular momentum there is kept
                 let l = |v: f64, w: f64| mb * r * v + law.base.inertia * w;
