@@ -182,6 +182,23 @@ impl Error {
         Error::InvalidParameter { field, value: crate::numfmt::shown(&value.to_string()), allowed: allowed.into() }
     }
 
+    /// A row of a compiled-in CSV table (`what`: which table) that does not read: the file and
+    /// line, the column by its header name and what was wrong with it.
+    pub fn csv_row(what: &'static str, file: &str, headers: &csv::StringRecord, err: &csv::Error) -> Self {
+        let line = err.position().map_or(0, |p| p.line());
+        let reason = match err.kind() {
+            csv::ErrorKind::Deserialize { err, .. } => {
+                let column = err.field().and_then(|i| headers.get(i as usize)).unwrap_or("?");
+                format!("column {column}: {}", err.kind())
+            }
+            csv::ErrorKind::UnequalLengths { expected_len, len, .. } => {
+                format!("{len} fields where the header has {expected_len}")
+            }
+            _ => err.to_string(),
+        };
+        Error::invalid(what, format!("{file}:{line}"), reason)
+    }
+
     /// Build an [`Error::Io`] from a path and an `std::io::Error`.
     pub fn io(path: impl Into<PathBuf>, err: impl std::fmt::Display) -> Self {
         Error::Io { path: path.into(), message: err.to_string() }

@@ -37,7 +37,7 @@ fn rel(a: f64, b: f64, floor: f64) -> f64 {
 }
 
 /// `elastic` is the law before the mechanisms, bit for bit: these are the outputs of the crate
-/// at commit cf0bc08 (before issue 22) for the same impacts.
+/// at commit cf0bc08 (before issue 22) for the same impacts (fd; modal since its last-piece fix).
 #[test]
 fn the_elastic_law_is_todays_bit_for_bit() {
     let r = simulate(&twu(TangentialLaw::Elastic, SolverKind::Fd)).unwrap();
@@ -48,8 +48,11 @@ fn the_elastic_law_is_todays_bit_for_bit() {
     (p.oblique.angle_deg, p.oblique.spin_rpm, p.oblique.azimuth_deg) = (55.0, 2000.0, 33.0);
     p.oblique.tangential = TangentialLaw::Elastic;
     let r = simulate(&p).unwrap();
-    assert_eq!(r.spin_out_rpm, f64::from_bits(0x409B_F8B8_4946_90F4), "{}", r.spin_out_rpm);
-    assert_eq!(r.v2_t, f64::from_bits(0x4018_B9DB_2EEA_F727), "{}", r.v2_t);
+    // the modal solver's own change since (issue 29): its last piece of the force history ends
+    // at the separation with no force and no rate, as the explicit solver's always did
+    // (before: 0x409B_F8B8_4946_90F4 and 0x4018_B9DB_2EEA_F727, 5e-10 and 1e-10 away)
+    assert_eq!(r.spin_out_rpm, f64::from_bits(0x409B_F8B8_4986_AF5A), "{}", r.spin_out_rpm);
+    assert_eq!(r.v2_t, f64::from_bits(0x4018_B9DB_2ECB_C467), "{}", r.v2_t);
     // and names no new loss
     assert!(r.f_tangential_damping.is_nan() && r.f_string_sliding.is_nan() && r.f_rolling.is_nan());
 }
@@ -60,11 +63,11 @@ fn the_elastic_law_is_todays_bit_for_bit() {
 fn the_twu_shot_under_each_law() {
     let expect = [
         (TangentialLaw::Elastic, 3345.70),
-        (TangentialLaw::Loss, 3221.33),
-        (TangentialLaw::Offset, 3197.58),
+        (TangentialLaw::Loss, 2448.59),
+        (TangentialLaw::Offset, 3246.87),
         (TangentialLaw::Bed, 3723.53),
-        (TangentialLaw::Radius, 58.82),
-        (TangentialLaw::Physical, 58.82),
+        (TangentialLaw::Radius, 2314.05),
+        (TangentialLaw::Physical, 2343.42),
     ];
     for (law, spin) in expect {
         let r = simulate(&twu(law, SolverKind::Fd)).unwrap();
@@ -108,8 +111,8 @@ fn without_friction_no_law_changes_the_spin() {
 /// A rigid ball on an immovable frame with stiff strings: every mechanism fades out (the
 /// compression, and with it the offset arm and the shorter lever, goes to zero; the lateral bed
 /// is stiff) and the closed forms of SPEC.md section 6 hold: sliding throughout under every
-/// law (to within twice the compression over the radius, about 1e-2 here, for the two
-/// mechanisms that depend on it), leaving rolling under the others.
+/// law (to within twice the compression over the radius for the two mechanisms that depend on
+/// it), leaving rolling under the others.
 #[test]
 fn a_rigid_ball_on_an_immovable_frame_meets_the_closed_forms_under_every_law() {
     for law in LAWS {
@@ -117,6 +120,7 @@ fn a_rigid_ball_on_an_immovable_frame_meets_the_closed_forms_under_every_law() {
             // slides throughout: v_t' = v_t - mu J_n / m_b, omega' = omega + mu J_n R / I
             let mut p = twu(law, solver);
             (p.ball.k1, p.strings.ks, p.oblique.kt, p.racket.ei) = (3.0e8, 3.0e8, 1.0e9, 1.0e9);
+            p.oblique.ball_kdyn = 3.0e8;
             (p.oblique.angle_deg, p.oblique.spin_rpm, p.oblique.mu) = (60.0, 0.0, 0.1);
             let r = simulate(&p).unwrap();
             let (mb, radius) = (p.ball.mass, p.oblique.ball_radius);
@@ -226,15 +230,17 @@ fn the_ledger_closes_and_fd_and_modal_agree_under_every_law() {
     }
 }
 
-/// A named string sets the friction of its database entry; one without an entry keeps the
-/// defaults; the elastic law ignores the string-to-string friction.
+/// A named string sets the friction of its database entry, the gut its material's median; the
+/// elastic law ignores the string-to-string friction.
 #[test]
 fn a_named_string_sets_its_friction() {
     let mut p = twu(TangentialLaw::Physical, SolverKind::Modal);
     p.oblique.string = StringName::Tcs16;
     assert_eq!(p.oblique.friction(), (0.387, 0.088));
     p.oblique.string = StringName::Nxt16;
-    assert_eq!(p.oblique.friction(), (0.4, 0.08));
+    assert_eq!(p.oblique.friction(), (0.453, 0.117));
+    p.oblique.string = StringName::TonicGut16;
+    assert_eq!(p.oblique.friction(), (0.412, 0.161));
     let mut e = twu(TangentialLaw::Elastic, SolverKind::Modal);
     let a = simulate(&e).unwrap();
     e.oblique.mu_ss = 0.3;

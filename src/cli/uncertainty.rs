@@ -20,7 +20,8 @@ pub struct UncertaintyArgs {
     #[command(flatten)]
     pub common: Common<UncertaintyKeys>,
     /// An uncertain input, KEY=DIST (repeatable): KEY any real-valued parameter, DIST
-    /// uniform:LO:HI, normal:MEAN:SD or loguniform:LO:HI; every sample must be a valid value
+    /// uniform:LO:HI, normal:MEAN:SD or loguniform:LO:HI; every sample must be a valid value.
+    /// KEY alone draws the distribution declared with the parameter (see the long help)
     #[arg(long = "vary", value_name = "KEY=DIST")]
     pub vary: Vec<String>,
     /// Base samples N of the Saltelli design, 1..=65536: N (d + 2) impacts for d inputs [default: 256; with --claims 128]
@@ -40,9 +41,12 @@ pub struct UncertaintyArgs {
 
 /// The long help: what is computed and the declared uncertainties `--claims` uses.
 pub fn long_about() -> String {
-    let declared: Vec<String> = keys::uncertain()
-        .filter_map(|s| s.uncertainty.map(|u| format!("{} ~ {} ({})", s.key, u.dist.text(), u.source)))
-        .collect();
+    let line = |s: &racket_impact::params::spec::ParamSpec| {
+        s.uncertainty.map(|u| format!("{} ~ {} ({})", s.key, u.dist.text(), u.source))
+    };
+    let declared: Vec<String> = robustness::inputs().into_iter().filter_map(line).collect();
+    let claims: Vec<&str> = robustness::inputs().iter().map(|s| s.key).collect();
+    let oblique: Vec<String> = keys::uncertain().filter(|s| !claims.contains(&s.key)).filter_map(line).collect();
     format!(
         "An impact's result fields under uncertain inputs, or every paper claim under the declared uncertainty\n\n\
          Every simulate option sets the fixed parameters; each --vary KEY=DIST draws one input. The impact \
@@ -56,8 +60,11 @@ pub fn long_about() -> String {
          earns one warning line. Example: racket-impact \
          uncertainty --x 0.06 --vary ks=uniform:2e4:6e4 --vary mb=normal:0.057:0.0005 --format json\n\n\
          With --claims: each paper claim (golden/paper_claims.csv) under the uncertainties declared with the \
-         parameters, drawn as factors on the paper's values: {}",
-        declared.join("; ")
+         parameters, drawn as factors on the paper's values: {}\n\n\
+         --vary KEY without a distribution draws the one declared with the parameter: those above, and for an \
+         oblique or spinning ball: {}",
+        declared.join("; "),
+        oblique.join("; ")
     )
 }
 

@@ -136,9 +136,12 @@ impl ClaimRobustness {
     }
 }
 
-/// The inputs: every parameter with a declared uncertainty.
+/// The inputs: every parameter with a declared uncertainty that the paper's impacts use (the
+/// ball's tangential properties act only on an oblique or spinning ball, so they would add
+/// dimensions that move no claim).
 pub fn inputs() -> Vec<&'static ParamSpec> {
-    keys::uncertain().collect()
+    let paper = crate::params::Params::paper();
+    keys::uncertain().filter(|s| crate::params::used::unused_reason(s.key, &paper).is_none()).collect()
 }
 
 /// The context at the drawn values `x` (one per [`inputs`]): each a factor `x / nominal` on

@@ -1,17 +1,24 @@
 //! `validation_spin` (beyond the paper): the oblique model against the spin measurements of
 //! data/measured, string by string, under each tangential law (SPEC.md section 6,
 //! `--tangential`): the 14 points of the TWU "String Movement and Spin" table (seven strings at
-//! 52 and 62 lb, M001-M014) each modelled with its own string's friction (data/strings), and as
-//! further rows the polyester/nylon spin ratio (M015), the hand-held over head-clamped spin
-//! ratio (Cross and Lindsey 2011, M016), the incidence angle at which the ball stops gripping
-//! (M029-M030) and the spin of a tour forehand (M052-M054, M058). Then per quantity the RMS and
-//! the worst error, and the Spearman rank correlation of the 14 points. Nothing here is tuned
+//! 52 and 62 lb, M001-M014) each modelled with its own string's friction (data/strings), twice:
+//! at 40 deg from the normal (`spin_out_rpm`, the companion study's reading) and at 50 deg
+//! (`spin_out_rpm_50deg`, the page's '40 degrees to the stringbed' read from the string plane);
+//! and as further rows the polyester/nylon spin ratio (M015), the hand-held over head-clamped
+//! spin ratio (Cross and Lindsey 2011, M016), the incidence angle at which the ball stops
+//! gripping (M029-M030) and the spin of a tour forehand (M052-M054, M058). Then per quantity the
+//! RMS and the worst error over the values it defines, and for each reading of the angle the
+//! Spearman rank correlation of the 14 points with its two-sided p-value. Nothing here is tuned
 //! to these measurements: every parameter of every law has its source in its declaration.
 //!
 //! One row per compared value: `quantity, string, tension_lb, measured, model, unit` (`model`
 //! under the default law), the measured spread (`spread_lo`, `spread_hi`: for the table points
 //! the range of the seven strings at that tension, which the table itself shows; otherwise the
-//! stated range or uncertainty), the rows it comes from, and the model under each law.
+//! stated range or uncertainty), the rows it comes from, and the model under each law. A ratio
+//! whose model denominator is below [`RATIO_FLOOR_RPM`] is undefined (an empty field): it would
+//! describe how small the denominator happened to be, not the racket.
+
+use serde::Deserialize;
 
 use super::{Context, Experiment, CENTRE_X};
 use crate::error::{Error, Result};
@@ -49,29 +56,99 @@ pub struct Measured {
     pub tension_lb: f64,
 }
 
-/// The measured rows `ids`, in that order.
-pub fn measured(ids: &[&str]) -> Result<Vec<Measured>> {
-    let mut rdr = csv::Reader::from_reader(MEASUREMENTS.as_bytes());
-    let h = rdr.headers().map_err(|e| Error::invalid("measurements", "header", e.to_string()))?.clone();
-    let at = |name: &str| h.iter().position(|c| c == name).unwrap_or(usize::MAX);
-    let (id, q, v, s, t) = (at("id"), at("quantity"), at("value"), at("string"), at("string_tension_lb"));
-    let rows: Vec<csv::StringRecord> = rdr.records().filter_map(std::result::Result::ok).collect();
-    ids.iter()
-        .map(|want| {
-            let r = rows
-                .iter()
-                .find(|r| r.get(id) == Some(want))
-                .ok_or_else(|| Error::invalid("measurements", want, "no such row in data/measured"))?;
-            let num = |i: usize| r.get(i).and_then(|x| x.parse::<f64>().ok()).unwrap_or(f64::NAN);
+/// Where the measurements live, for the messages.
+const MEASUREMENTS_FILE: &str = "data/measured/measurements.csv";
+
+/// The columns of a measured row this experiment reads (the others are skipped).
+#[derive(Debug, Deserialize)]
+struct Row {
+    id: String,
+    quantity: String,
+    value: f64,
+    string: String,
+    string_tension_lb: Option<f64>,
+}
+
+/// Every row of a measurements table (`file` names it in the messages), read with the `csv`
+/// crate: a row that does not parse is an error naming the file and its line.
+pub fn parse_measurements(text: &str, file: &str) -> Result<Vec<Measured>> {
+    let mut rdr = csv::Reader::from_reader(text.as_bytes());
+    let headers =
+        rdr.headers().map_err(|e| Error::csv_row("measurements", file, &csv::StringRecord::new(), &e))?.clone();
+    rdr.deserialize::<Row>()
+        .map(|row| {
+            let r = row.map_err(|e| Error::csv_row("measurements", file, &headers, &e))?;
             Ok(Measured {
-                id: want.to_string(),
-                quantity: r.get(q).unwrap_or_default().to_string(),
-                value: num(v),
-                string: r.get(s).unwrap_or_default().to_string(),
-                tension_lb: num(t),
+                id: r.id,
+                quantity: r.quantity,
+                value: r.value,
+                string: r.string,
+                tension_lb: r.string_tension_lb.unwrap_or(f64::NAN),
             })
         })
         .collect()
+}
+
+/// The measured rows `ids`, in that order.
+pub fn measured(ids: &[&str]) -> Result<Vec<Measured>> {
+    let rows = parse_measurements(MEASUREMENTS, MEASUREMENTS_FILE)?;
+    ids.iter()
+        .map(|want| {
+            rows.iter()
+                .find(|r| r.id == *want)
+                .cloned()
+                .ok_or_else(|| Error::invalid("measurements", want, format!("no such row in {MEASUREMENTS_FILE}")))
+        })
+        .collect()
+}
+
+/// The smallest model spin, rpm, a ratio of spins is formed over: a tenth of the smallest
+/// measured table spin (1207 rpm, M013). Below it the ratio is undefined (NaN).
+pub const RATIO_FLOOR_RPM: f64 = 120.0;
+
+/// `num / den`, or NaN when `|den|` is below [`RATIO_FLOOR_RPM`].
+pub fn spin_ratio(num: f64, den: f64) -> f64 {
+    if den.abs() < RATIO_FLOOR_RPM {
+        f64::NAN
+    } else {
+        num / den
+    }
+}
+
+/// The two-sided p-value of a rank correlation `rho` over `n` points under the hypothesis of
+/// no correlation, through Student's t with `n - 2` degrees of freedom,
+/// `t = rho sqrt((n - 2) / (1 - rho^2))` (the usual large-sample form; with ties and 14 points it
+/// is an approximation). The t distribution's tail in closed form (Abramowitz and Stegun
+/// 26.7.3-4, a finite series for whole degrees of freedom), hand-written because no dependency
+/// of the crate has it and it is a dozen lines.
+pub fn rank_correlation_p(rho: f64, n: usize) -> f64 {
+    if n < 3 || !rho.is_finite() {
+        return f64::NAN;
+    }
+    if rho.abs() >= 1.0 {
+        return 0.0;
+    }
+    let nu = n - 2;
+    let t = rho.abs() * ((nu as f64) / (1.0 - rho * rho)).sqrt();
+    let theta = (t / (nu as f64).sqrt()).atan();
+    let (sin, cos) = theta.sin_cos();
+    // A(t|nu) = P(|T| < t)
+    let a = if nu % 2 == 0 {
+        let (mut term, mut sum) = (1.0, 1.0);
+        for k in 1..nu / 2 {
+            term *= (2 * k - 1) as f64 / (2 * k) as f64 * cos * cos;
+            sum += term;
+        }
+        sin * sum
+    } else {
+        let (mut term, mut sum) = (1.0, if nu > 1 { 1.0 } else { 0.0 });
+        for k in 1..nu.saturating_sub(1) / 2 {
+            term *= (2 * k) as f64 / (2 * k + 1) as f64 * cos * cos;
+            sum += term;
+        }
+        2.0 / std::f64::consts::PI * (theta + sin * cos * sum)
+    };
+    (1.0 - a).clamp(0.0, 1.0)
 }
 
 /// The 14 rows of the TWU table.
@@ -104,7 +181,7 @@ pub fn set_twu_shot(p: &mut Params) {
 
 /// The TWU shot: a head-clamped racket (a frame too heavy to move stands for the clamp), 56 mph
 /// (25.03 m/s) at 40 deg from the normal across the face with 3820 rpm of backspin, at the
-/// centre, strung at `tension_lb` with `string` (its friction where the database gives it).
+/// centre, strung at `tension_lb` with `string` (its friction from data/strings).
 pub fn twu_shot(ctx: &Context, law: TangentialLaw, string: StringName, tension_lb: f64) -> Params {
     let mut p = ctx.paper_params(CENTRE_X, ks_from_tension_lb(tension_lb));
     set_twu_shot(&mut p);
@@ -178,20 +255,29 @@ fn run(ctx: &Context) -> Result<Table> {
         let v: Vec<f64> = table.iter().filter(|m| m.tension_lb == t).map(|m| m.value).collect();
         (v.iter().copied().fold(f64::MAX, f64::min), v.iter().copied().fold(f64::MIN, f64::max))
     };
-    for m in &table {
-        let string = string_of(m)?;
-        let params: Vec<Params> = LAWS.iter().map(|&l| twu_shot(ctx, l, string, m.tension_lb)).collect();
-        let model = super::sweep(&params)?.iter().map(|r| r.spin_out_rpm).collect();
-        rows.push(Compared {
-            quantity: "spin_out_rpm",
-            string: string.name().to_string(),
-            tension: m.tension_lb.into(),
-            measured: m.value,
-            unit: "rpm",
-            spread: spread_at(m.tension_lb),
-            source: m.id.clone(),
-            model,
-        });
+    for (quantity, angle) in [("spin_out_rpm", 40.0), ("spin_out_rpm_50deg", 50.0)] {
+        for m in &table {
+            let string = string_of(m)?;
+            let params: Vec<Params> = LAWS
+                .iter()
+                .map(|&l| {
+                    let mut p = twu_shot(ctx, l, string, m.tension_lb);
+                    p.oblique.angle_deg = angle;
+                    p
+                })
+                .collect();
+            let model = super::sweep(&params)?.iter().map(|r| r.spin_out_rpm).collect();
+            rows.push(Compared {
+                quantity,
+                string: string.name().to_string(),
+                tension: m.tension_lb.into(),
+                measured: m.value,
+                unit: "rpm",
+                spread: spread_at(m.tension_lb),
+                source: m.id.clone(),
+                model,
+            });
+        }
     }
     // polyester over nylon, both tensions (M015)
     let ratio = &measured(&["M015"])?[0];
@@ -204,6 +290,7 @@ fn run(ctx: &Context) -> Result<Table> {
             .collect();
         v.iter().sum::<f64>() / v.len() as f64
     };
+    // (the zip takes the 40 deg rows, the first 14)
     rows.push(Compared {
         quantity: "spin_ratio_polyester_over_nylon",
         string: "polyester (5) / nylon (2)".into(),
@@ -212,7 +299,7 @@ fn run(ctx: &Context) -> Result<Table> {
         unit: "ratio",
         spread: (ratio.value, ratio.value),
         source: ratio.id.clone(),
-        model: (0..LAWS.len()).map(|l| mean_of("polyester", l) / mean_of("nylon", l)).collect(),
+        model: (0..LAWS.len()).map(|l| spin_ratio(mean_of("polyester", l), mean_of("nylon", l))).collect(),
     });
     // hand-held over head-clamped (M016): 22.8 m/s, 40 deg; the incoming backspin is not given
     // in the abstract, the TWU table's 3820 rpm stands in; the paper's racket at 60 lb
@@ -225,7 +312,7 @@ fn run(ctx: &Context) -> Result<Table> {
         hand.impact.v1 = 22.8;
         hand.oblique = clamped.oblique;
         hand.variants.grip = Grip::Hand;
-        model.push(simulate(&hand)?.spin_out_rpm / simulate(&clamped)?.spin_out_rpm);
+        model.push(spin_ratio(simulate(&hand)?.spin_out_rpm, simulate(&clamped)?.spin_out_rpm));
     }
     rows.push(Compared {
         quantity: "spin_out_ratio_handheld_over_clamped",
@@ -306,9 +393,25 @@ fn run(ctx: &Context) -> Result<Table> {
     for q in quantities {
         let of: Vec<&Compared> = rows.iter().filter(|c| c.quantity == q).collect();
         let unit = of[0].unit;
-        let err = |l: usize| -> Vec<f64> { of.iter().map(|c| c.model[l] - c.measured).collect() };
-        let rms = |l: usize| (err(l).iter().map(|e| e * e).sum::<f64>() / of.len() as f64).sqrt();
-        let worst = |l: usize| err(l).into_iter().fold(0.0f64, |w, e| if e.abs() > w.abs() { e } else { w });
+        // the errors of the values the law defines (a ratio over a near-zero spin is not one)
+        let err =
+            |l: usize| -> Vec<f64> { of.iter().map(|c| c.model[l] - c.measured).filter(|e| e.is_finite()).collect() };
+        let rms = |l: usize| {
+            let e = err(l);
+            if e.is_empty() {
+                f64::NAN
+            } else {
+                (e.iter().map(|e| e * e).sum::<f64>() / e.len() as f64).sqrt()
+            }
+        };
+        let worst = |l: usize| {
+            let e = err(l);
+            if e.is_empty() {
+                f64::NAN
+            } else {
+                e.into_iter().fold(0.0f64, |w, e| if e.abs() > w.abs() { e } else { w })
+            }
+        };
         for (name, f) in [("rms_error", &rms as &dyn Fn(usize) -> f64), ("worst_error", &worst)] {
             let mut row = vec![
                 Value::Text(format!("{q}:{name}")),
@@ -325,22 +428,31 @@ fn run(ctx: &Context) -> Result<Table> {
             t.push(row)?;
         }
     }
-    let points: Vec<&Compared> = rows.iter().filter(|c| c.quantity == "spin_out_rpm").collect();
-    let meas: Vec<f64> = points.iter().map(|c| c.measured).collect();
-    let rho = |l: usize| spearman(&meas, &points.iter().map(|c| c.model[l]).collect::<Vec<_>>());
-    let mut row = vec![
-        Value::Text("spin_out_rpm:rank_correlation".into()),
-        Value::Text("all".into()),
-        Value::Text("all".into()),
-        1.0.into(),
-        rho(d).into(),
-        Value::Text("1".into()),
-        1.0.into(),
-        1.0.into(),
-        Value::Text("M001-M014".into()),
-    ];
-    row.extend((0..LAWS.len()).map(|l| Value::from(rho(l))));
-    t.push(row)?;
+    // the rank correlation of the 14 table points under each reading of the angle, and its
+    // two-sided p-value
+    for q in ["spin_out_rpm", "spin_out_rpm_50deg"] {
+        let points: Vec<&Compared> = rows.iter().filter(|c| c.quantity == q).collect();
+        let meas: Vec<f64> = points.iter().map(|c| c.measured).collect();
+        let rho = |l: usize| spearman(&meas, &points.iter().map(|c| c.model[l]).collect::<Vec<_>>());
+        let p = |l: usize| rank_correlation_p(rho(l), points.len());
+        for (name, f, ideal) in
+            [("rank_correlation", &rho as &dyn Fn(usize) -> f64, 1.0), ("rank_correlation_p", &p, 0.0)]
+        {
+            let mut row = vec![
+                Value::Text(format!("{q}:{name}")),
+                Value::Text("all".into()),
+                Value::Text("all".into()),
+                ideal.into(),
+                f(d).into(),
+                Value::Text("1".into()),
+                ideal.into(),
+                ideal.into(),
+                Value::Text("M001-M014".into()),
+            ];
+            row.extend((0..LAWS.len()).map(|l| Value::from(f(l))));
+            t.push(row)?;
+        }
+    }
     Ok(t)
 }
 
@@ -359,13 +471,22 @@ fn chart(_: &Context, t: &Table) -> Chart {
         if law == &Oblique::default().tangential {
             label.push_str(" (the default)");
         }
-        if law == &TangentialLaw::Radius {
-            label.push_str(" (nearly under physical: the ball slides throughout)");
-        }
         curves.push(Curve::new(label, measured.clone(), y).with_style(style).with_color(i + 1));
     }
+    // the other reading of the angle, under the default law
+    let fifty = t.filter("quantity", "spin_out_rpm_50deg");
+    let d = Oblique::default().tangential;
+    curves.push(
+        Curve::new(
+            format!("{} law at 50 deg (the angle read from the string plane)", d.name()),
+            super::col(&fifty, "measured"),
+            super::col(&fifty, &format!("model_{}", d.name())),
+        )
+        .with_style(LineStyle::Points)
+        .with_color(LAWS.len() + 1),
+    );
     Chart {
-        title: "TWU spin table (7 strings x 52/62 lb): model against measured, each tangential law".into(),
+        title: "TWU spin table (7 strings x 52/62 lb): model against measured, each tangential law (40 deg)".into(),
         x_label: "measured outgoing spin (rpm); clamped racket, 25 m/s, 40 deg, 3820 rpm backspin in".into(),
         y_label: "model outgoing spin (rpm)".into(),
         y2_label: None,
@@ -392,6 +513,26 @@ mod tests {
         assert_eq!(spearman(&a, &[5.0; 4]), 0.0);
     }
 
+    /// The p-value against values of Student's t (df 12, two-sided): t = 2.179 at p = 0.05,
+    /// 3.055 at 0.01; and the odd-df series against df 1 (Cauchy) and df 3.
+    #[test]
+    fn rank_correlation_p_matches_the_t_table() {
+        let rho_of = |t: f64, n: usize| t / (t * t + (n - 2) as f64).sqrt();
+        assert!((rank_correlation_p(rho_of(2.179, 14), 14) - 0.05).abs() < 2e-4);
+        assert!((rank_correlation_p(rho_of(3.055, 14), 14) - 0.01).abs() < 1e-4);
+        assert!((rank_correlation_p(rho_of(1.0, 3), 3) - 0.5).abs() < 1e-12);
+        assert!((rank_correlation_p(rho_of(3.182, 5), 5) - 0.05).abs() < 2e-4);
+        assert_eq!(rank_correlation_p(0.0, 14), 1.0);
+        assert_eq!(rank_correlation_p(1.0, 14), 0.0);
+    }
+
+    #[test]
+    fn a_ratio_over_a_near_zero_spin_is_undefined() {
+        assert!(spin_ratio(1000.0, RATIO_FLOOR_RPM * 0.99).is_nan());
+        assert_eq!(spin_ratio(1000.0, 2000.0), 0.5);
+        assert_eq!(spin_ratio(1000.0, -2000.0), -0.5);
+    }
+
     #[test]
     fn every_table_row_names_a_string_of_the_table() {
         let rows = measured(&TABLE_IDS).unwrap();
@@ -400,5 +541,15 @@ mod tests {
             assert!(r.tension_lb == 52.0 || r.tension_lb == 62.0);
         }
         assert_eq!(rows.iter().filter(|r| string_of(r).unwrap() == StringName::Tcs16).count(), 2);
+    }
+
+    #[test]
+    fn a_bad_measured_row_is_an_error_naming_the_file_and_line() {
+        let head = MEASUREMENTS.lines().next().unwrap();
+        let good = MEASUREMENTS.lines().nth(1).unwrap();
+        let bad = good.replacen(",1642,", ",about 1642,", 1);
+        let msg = parse_measurements(&format!("{head}\n{good}\n{bad}\n"), "m.csv").unwrap_err().to_string();
+        assert!(msg.contains("m.csv:3") && msg.contains("value"), "{msg}");
+        assert!(parse_measurements(MEASUREMENTS, MEASUREMENTS_FILE).unwrap().len() >= 84);
     }
 }

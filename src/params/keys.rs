@@ -119,7 +119,7 @@ declare_params! {
     /// String-to-string friction coefficient, for the bed mechanism (0 ..= 2)
     MU_SS mu_ss: f64 = "mu-ss" at oblique.mu_ss,
         what "string-to-string friction coefficient", unit "", column "mu_ss", within(0.0, 2.0), usual(0.0, 0.5);
-    /// The string, from data/strings: sets mu and mu-ss where the TWU database gives them
+    /// The string, from data/strings: sets mu and mu-ss (its TWU database values)
     STRING string: StringName = "string" at oblique.string,
         what "string", unit "", column "string", choice;
     /// Ball radius, m (1e-3 ..= 1)
@@ -128,6 +128,14 @@ declare_params! {
     /// Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55)
     BALL_INERTIA_FACTOR ball_inertia_factor: f64 = "ball-inertia-factor" at oblique.ball_inertia_factor,
         what "ball inertia factor", unit "", column "ball_inertia_factor", rule, usual(0.4, 0.67);
+    /// The ball's tangential restitution in a gripping bounce e_x, for the loss mechanism (0.01 ..= 0.99)
+    BALL_EX ball_ex: f64 = "ball-ex" at oblique.ball_ex,
+        what "ball tangential restitution", unit "", column "ball_ex", within(0.01, 0.99), usual(0.05, 0.5),
+        uncertain(Dist::Uniform { lo: 0.10, hi: 0.17 }, 0.135, "data/measured M079-M080: 'e_x 0.10-0.17 for gripping tennis-ball bounces' (Cross 2002, Am. J. Phys. 70, Table III, as quoted in public code), uniform over the range");
+    /// The ball's dynamic compression stiffness for the contact geometry, for the radius and offset mechanisms, N/m (1e3 ..= 1e9)
+    BALL_KDYN ball_kdyn: f64 = "ball-kdyn" at oblique.ball_kdyn,
+        what "ball dynamic compression stiffness", unit "N/m", column "ball_kdyn_n_per_m", within(1.0e3, 1.0e9), usual(1.0e4, 3.0e5),
+        uncertain(Dist::Uniform { lo: super::oblique::kdyn_from_drop(0.057, 0.007), hi: super::oblique::kdyn_from_drop(0.057, 0.005) }, super::oblique::BALL_KDYN, "data/measured M081: a 100-inch drop on concrete compresses the ball 'about 6 mm' (Cross's tennis pages, as summarised in public notes); 5-7 mm (assumed for 'about') through k = m_b 2 g h / d^2 with the paper's 57 g");
 }
 
 /// The impact point a new user expects when none is given: the centre of the string face on
@@ -193,7 +201,7 @@ mod tests {
     fn declared_uncertainties_are_about_the_paper_values_and_valid() {
         let paper = Params::paper();
         let keys: Vec<&str> = uncertain().map(|s| s.key).collect();
-        assert_eq!(keys, ["ks", "ei", "mass", "length", "ix", "mb", "k1", "p", "v1"]);
+        assert_eq!(keys, ["ks", "ei", "mass", "length", "ix", "mb", "k1", "p", "v1", "ball-ex", "ball-kdyn"]);
         for spec in uncertain() {
             let u = spec.uncertainty.unwrap();
             let (lo, hi) = u.dist.extent();

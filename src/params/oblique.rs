@@ -42,17 +42,44 @@ pub struct Oblique {
     /// 2/3).
     pub ball_inertia_factor: f64,
     /// The tangential contact law: `elastic` (the grip-slip law of `model::tangential` alone),
-    /// one mechanism of `model::tangential` on top of it, or `physical` (all four). Default elastic.
+    /// one mechanism of `model::tangential` on top of it, or `physical` (all four). Default
+    /// `loss` ([`TangentialLaw`]).
     pub tangential: TangentialLaw,
     /// String-to-string friction coefficient (mechanism `bed`); 0..=2. Default 0.08: the
     /// middle of the string-to-string COFs of the polyester strings in the TWU string database
     /// (0.057-0.21, most 0.07-0.10; data/strings/README.md); `--string` sets the value of the
     /// string in use.
     pub mu_ss: f64,
-    /// The string in use (data/strings): where its database entry gives them, its friction
-    /// coefficients replace `mu` and `mu_ss` ([`Oblique::friction`]).
+    /// The string in use (data/strings): its friction coefficients replace `mu` and `mu_ss`
+    /// ([`Oblique::friction`]).
     pub string: StringName,
+    /// The ball's tangential coefficient of restitution in a gripping bounce, `e_x` (mechanism
+    /// `loss`); 0 < e_x < 1. Default 0.135: the middle of the 0.10-0.17 measured for gripping
+    /// tennis-ball bounces (Cross 2002, Table III; data/measured M079-M080). The damping of the
+    /// ball's tangential spring is the one that returns `e_x` over half a grip oscillation
+    /// ([`crate::model::tangential::loss`]).
+    pub ball_ex: f64,
+    /// The ball's dynamic compression stiffness for the contact geometry (mechanisms `radius`,
+    /// the lever `R - F / k`, and `offset`, Tabor's arm from the contact circle), N/m; 1e3..=1e9. Default [`BALL_KDYN`]: the stiffness of a linear
+    /// ball spring that a 100-inch drop on concrete compresses by 6 mm (data/measured M081),
+    /// `k = m_b v^2 / d^2` with the paper's 57 g ball. Not the paper's `k1`, which keeps driving
+    /// the normal force.
+    pub ball_kdyn: f64,
 }
+
+/// Height of the ITF drop test, m (100 in).
+pub const DROP_HEIGHT: f64 = 2.54;
+
+/// The dynamic compression stiffness, N/m, of a ball of mass `mb` (kg) that a drop of
+/// [`DROP_HEIGHT`] onto concrete compresses by `compression` (m): a linear spring that stores
+/// the whole kinetic energy, `k = mb 2 g h / d^2`.
+pub const fn kdyn_from_drop(mb: f64, compression: f64) -> f64 {
+    mb * 2.0 * 9.81 * DROP_HEIGHT / (compression * compression)
+}
+
+/// The default [`Oblique::ball_kdyn`]: the paper's 57 g ball compressed 6 mm by the drop on
+/// concrete (data/measured M081), 7.89e4 N/m.
+pub const BALL_KDYN: f64 = kdyn_from_drop(0.057, 0.006);
 
 /// The largest ball inertia factor `I / (m_b R^2)`: 2/3, a thin hollow shell, with all its
 /// mass at the radius `R` (no mass distribution within `R` has more).
@@ -75,9 +102,11 @@ impl Default for Oblique {
             kt: 2.0e4,
             ball_radius: 0.033,
             ball_inertia_factor: 0.55,
-            tangential: TangentialLaw::Elastic,
+            tangential: TangentialLaw::Loss,
             mu_ss: 0.08,
             string: StringName::None,
+            ball_ex: 0.135,
+            ball_kdyn: BALL_KDYN,
         }
     }
 }
@@ -90,10 +119,10 @@ impl Oblique {
     }
 
     /// The ball/string and string/string friction coefficients in use: the named string's
-    /// where the string table gives them, else `mu` and `mu_ss`.
+    /// (every string of the table has both), else `mu` and `mu_ss`.
     pub fn friction(&self) -> (f64, f64) {
         let entry = super::strings::entry(self.string);
-        (entry.and_then(|e| e.mu).unwrap_or(self.mu), entry.and_then(|e| e.mu_ss).unwrap_or(self.mu_ss))
+        entry.map_or((self.mu, self.mu_ss), |e| (e.mu, e.mu_ss))
     }
 
     /// Whether every field has its default value.
@@ -111,6 +140,8 @@ impl Oblique {
             (keys::KT, self.kt),
             (keys::BALL_RADIUS, self.ball_radius),
             (keys::MU_SS, self.mu_ss),
+            (keys::BALL_EX, self.ball_ex),
+            (keys::BALL_KDYN, self.ball_kdyn),
         ] {
             spec.check(v)?;
         }

@@ -1,8 +1,11 @@
 //! The string table (data/strings/strings.csv, compiled in; its source is named in
 //! data/strings/README.md): for each string that `--string` can name, its material, gauge and
-//! the friction coefficients the tangential contact uses.
+//! the friction coefficients the tangential contact uses, read with the `csv` crate into a
+//! serde row (a bad row is an error naming the file and its line).
 
 use std::sync::OnceLock;
+
+use serde::Deserialize;
 
 use super::spec::FlagValue;
 use super::{Oblique, StringName};
@@ -11,8 +14,23 @@ use crate::error::{Error, Result};
 /// The table as shipped.
 const TABLE: &str = include_str!("../../data/strings/strings.csv");
 
+/// Where the shipped table lives, for the messages.
+const TABLE_FILE: &str = "data/strings/strings.csv";
+
+/// Where a string's friction coefficients come from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+pub enum FrictionFrom {
+    /// Its own row of the TWU string database.
+    #[serde(rename = "entry")]
+    Entry,
+    /// No row of its own gives them: the median of the database's strings of its material
+    /// (data/strings/README.md names the strings).
+    #[serde(rename = "material_median")]
+    MaterialMedian,
+}
+
 /// One string of the table.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 pub struct StringEntry {
     /// The name `--string` takes.
     pub id: String,
@@ -22,58 +40,61 @@ pub struct StringEntry {
     pub material: String,
     /// Gauge, mm.
     pub gauge_mm: f64,
-    /// Ball-on-string friction coefficient (TWU "String/Ball COF"), if the database gives it.
-    pub mu: Option<f64>,
-    /// String-on-string friction coefficient (TWU "String/String COF"), if given.
-    pub mu_ss: Option<f64>,
+    /// Ball-on-string friction coefficient (TWU "String/Ball COF").
+    #[serde(rename = "string_ball_cof")]
+    pub mu: f64,
+    /// String-on-string friction coefficient (TWU "String/String COF").
+    #[serde(rename = "string_string_cof")]
+    pub mu_ss: f64,
     /// Stiffness, lb/in, if given (recorded, not used by the model).
     pub stiffness_lb_per_in: Option<f64>,
+    /// The database row the values were read from.
+    pub twu_database_entry: String,
+    /// Whether the friction is the string's own or its material's median.
+    pub friction_from: FrictionFrom,
 }
 
-/// Every string of the table, in its order.
+/// Parse a string table (`file` names it in the messages): every row with every column, a
+/// known material and friction coefficients in 0..=2.
+pub fn parse_table(text: &str, file: &str) -> Result<Vec<StringEntry>> {
+    let mut rdr = csv::Reader::from_reader(text.as_bytes());
+    let headers =
+        rdr.headers().map_err(|e| Error::csv_row("string table", file, &csv::StringRecord::new(), &e))?.clone();
+    let mut out = Vec::new();
+    for row in rdr.deserialize::<StringEntry>() {
+        let bad = |line: u64, what: String| Error::invalid("string table", format!("{file}:{line}"), what);
+        let e = row.map_err(|e| Error::csv_row("string table", file, &headers, &e))?;
+        let line = out.len() as u64 + 2;
+        if !["gut", "nylon", "polyester"].contains(&e.material.as_str()) {
+            return Err(bad(line, format!("material '{}' is not gut, nylon or polyester", e.material)));
+        }
+        for (what, v) in [("string_ball_cof", e.mu), ("string_string_cof", e.mu_ss), ("gauge_mm", e.gauge_mm)] {
+            if !(v.is_finite() && (0.0..=2.0).contains(&v)) {
+                return Err(bad(line, format!("{what} = {v} must lie in 0..=2")));
+            }
+        }
+        out.push(e);
+    }
+    Ok(out)
+}
+
+/// Every string of the table, in its order. The table is compiled in and a test parses it
+/// ([`parse_table`]), so a bad row cannot reach a user.
 pub fn all() -> &'static [StringEntry] {
     static PARSED: OnceLock<Vec<StringEntry>> = OnceLock::new();
-    PARSED.get_or_init(|| {
-        let number = |t: &str| if t.is_empty() { None } else { t.parse::<f64>().ok() };
-        TABLE
-            .lines()
-            .skip(1)
-            .filter(|l| !l.trim().is_empty())
-            .map(|line| {
-                let c: Vec<&str> = line.split(',').map(str::trim).collect();
-                StringEntry {
-                    id: c[0].to_string(),
-                    name: c[1].to_string(),
-                    material: c[2].to_string(),
-                    gauge_mm: number(c[3]).unwrap_or(f64::NAN),
-                    mu: number(c[4]),
-                    mu_ss: number(c[5]),
-                    stiffness_lb_per_in: number(c[6]),
-                }
-            })
-            .collect()
-    })
+    PARSED.get_or_init(|| parse_table(TABLE, TABLE_FILE).expect("the shipped string table parses (tested)"))
 }
 
-/// A one-line note when the named string of an oblique or spinning ball lacks a friction
-/// coefficient in the table (gut and nylon have none in the TWU database): which value is used
-/// instead. `None` when no string is named, the ball arrives along the normal, or the entry has
-/// both.
+/// A one-line note when the named string of an oblique or spinning ball has no friction row of
+/// its own in the TWU database: which median is used instead. `None` when no string is named,
+/// the ball arrives along the normal, or the entry has its own row.
 pub fn missing_data_note(o: &Oblique) -> Option<String> {
     let e = entry(o.string)?;
-    let mut missing = Vec::new();
-    if e.mu.is_none() {
-        missing.push(format!("mu {} (ball/string)", o.mu));
-    }
-    if e.mu_ss.is_none() && o.tangential.has(super::TangentialLaw::Bed) {
-        missing.push(format!("mu-ss {} (string/string)", o.mu_ss));
-    }
-    (!o.is_normal() && !missing.is_empty()).then(|| {
+    (!o.is_normal() && e.friction_from != FrictionFrom::Entry).then(|| {
         format!(
-            "string {}: no friction data in the TWU database ({}), so {} as given or by default",
-            e.id,
-            e.material,
-            missing.join(" and ")
+            "string {}: no friction data of its own in the TWU database ({} has no String/Ball or String/String COF), \
+             so the median of the database's {} strings: mu {} (ball/string) and mu-ss {} (string/string)",
+            e.id, e.twu_database_entry, e.material, e.mu, e.mu_ss
         )
     })
 }
@@ -104,23 +125,16 @@ pub fn apply(o: &mut Oblique, mu_given: bool, mu_ss_given: bool) -> Result<()> {
 /// `mu-ss`): a value given for that key beside it would never be used.
 pub fn sets(name: StringName, key: &str) -> Option<&'static str> {
     let e = entry(name)?;
-    let set = match key {
-        "mu" => e.mu.is_some(),
-        "mu-ss" => e.mu_ss.is_some(),
-        _ => false,
-    };
-    set.then_some(e.id.as_str())
+    matches!(key, "mu" | "mu-ss").then_some(e.id.as_str())
 }
 
 /// Refuse a friction `key` given (as a flag, a config key or a swept axis) beside a string
 /// whose entry sets it.
 pub fn refuse_if_set(name: StringName, key: &'static str) -> Result<()> {
     match sets(name, key) {
-        Some(id) => Err(Error::invalid(
-            key,
-            "given",
-            format!("is set by string = {id} (its TWU database value); give one or the other"),
-        )),
+        Some(id) => {
+            Err(Error::invalid(key, "given", format!("is set by string = {id} (data/strings); give one or the other")))
+        }
         None => Ok(()),
     }
 }
@@ -136,10 +150,31 @@ mod tests {
         assert_eq!(ids, names);
         for e in all() {
             assert!(e.gauge_mm > 1.0 && e.gauge_mm < 1.5, "{e:?}");
-            assert_eq!(e.mu.is_some(), e.material == "polyester", "{e:?}");
-            assert_eq!(e.mu_ss.is_some(), e.mu.is_some(), "{e:?}");
+            // only the gut has no row of its own (data/strings/README.md)
+            assert_eq!(e.friction_from == FrictionFrom::Entry, e.material != "gut", "{e:?}");
         }
-        assert_eq!(entry(StringName::Tcs16).unwrap().mu_ss, Some(0.088));
+        assert_eq!(entry(StringName::Tcs16).unwrap().mu_ss, 0.088);
+        assert_eq!(entry(StringName::Nxt16).unwrap().mu, 0.453);
+        assert_eq!(entry(StringName::Nrg2_16).unwrap().mu_ss, 0.155);
         assert_eq!(entry(StringName::None), None);
+    }
+
+    #[test]
+    fn a_bad_row_is_an_error_naming_the_file_and_line() {
+        let head = TABLE.lines().next().unwrap();
+        let good = TABLE.lines().nth(1).unwrap();
+        let cases = [
+            (good.replacen(",gut,", ",wood,", 1), "material 'wood'"),
+            (good.replacen(",0.412,", ",x,", 1), "string_ball_cof"),
+            (good.replacen(",0.412,", ",3,", 1), "string_ball_cof = 3"),
+            (good.replacen(",material_median", ",guess", 1), "guess"),
+            ("tcs-16,Polyfibre TCS 16".to_string(), "fields"),
+        ];
+        for (bad, said) in cases {
+            let text = format!("{head}\n{good}\n{bad}\n");
+            let msg = parse_table(&text, "t.csv").unwrap_err().to_string();
+            assert!(msg.contains("t.csv:3") && msg.contains(said), "{msg}");
+        }
+        assert_eq!(parse_table(TABLE, TABLE_FILE).unwrap().len(), 7);
     }
 }

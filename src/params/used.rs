@@ -20,7 +20,7 @@ pub fn is_refused(key: &str, params: &Params) -> bool {
         {
             false
         }
-        "mu-ss" if params.oblique.is_normal() => false,
+        "mu-ss" | "ball-ex" | "ball-kdyn" if params.oblique.is_normal() => false,
         "half-width" | "ix" if impact_only => false,
         _ => true,
     }
@@ -31,6 +31,7 @@ pub fn unused_reason(key: &str, params: &Params) -> Option<&'static str> {
     let v = &params.variants;
     match key {
         "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string" | "mu-ss"
+        | "ball-ex" | "ball-kdyn"
             if params.oblique.is_normal() =>
         {
             Some(
@@ -39,6 +40,14 @@ pub fn unused_reason(key: &str, params: &Params) -> Option<&'static str> {
         }
         "mu-ss" if !params.oblique.tangential.has(TangentialLaw::Bed) => {
             Some("used only by the tangential laws bed and physical (strings sliding over each other)")
+        }
+        "ball-ex" if !params.oblique.tangential.has(TangentialLaw::Loss) => {
+            Some("used only by the tangential laws loss and physical (the damper on the ball's tangential spring)")
+        }
+        "ball-kdyn" if !params.oblique.tangential.has(TangentialLaw::Radius)
+            && !params.oblique.tangential.has(TangentialLaw::Offset) =>
+        {
+            Some("used only by the tangential laws radius, offset and physical (the ball's compression under the normal force)")
         }
         "hand-stiffness" | "hand-damping" | "grip-length" if v.grip != Grip::Hand => Some("used only with grip = hand"),
         "string-stiffening" | "stiffening-deflection" if v.strings != StringLaw::Stiffening => {

@@ -65,29 +65,30 @@ choice_enum! {
 choice_enum! {
     /// The tangential contact law of an oblique or spinning impact (SPEC.md section 6): the
     /// elastic grip-slip law, one mechanism of [`crate::model::tangential`] on top of it, or all four.
-    TangentialLaw (default Elastic) {
-        Elastic = "elastic": "The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the default)",
-        Loss = "loss": "Elastic plus a damper on the ball's tangential spring (tangential restitution = the ball's normal one)",
+    /// Default `loss`: of the laws compared with measurement (`validation_spin`) the one closer
+    /// than `elastic` to every judged quantity (REPORT.md, "Against measurement").
+    TangentialLaw (default Loss) {
+        Elastic = "elastic": "The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)",
+        Loss = "loss": "Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex; the default)",
         Offset = "offset": "Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin",
         Bed = "bed": "Elastic plus strings that slide sideways over each other against string-to-string friction and snap back",
-        Radius = "radius": "Elastic plus the friction acting at R minus the ball's compression",
+        Radius = "radius": "Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)",
         Physical = "physical": "All four mechanisms",
     }
 }
 
 choice_enum! {
     /// The string in the racket, from the string table (data/strings, [`super::strings`]): its
-    /// ball/string and string/string friction set `mu` and `mu-ss` where the TWU database gives
-    /// them.
+    /// ball/string and string/string friction set `mu` and `mu-ss`.
     StringName (default None) {
         None = "none": "No string named: mu and mu-ss as given (the default)",
-        TonicGut16 = "tonic-gut-16": "Babolat Tonic Gut 16 (gut; no friction data: the defaults)",
+        TonicGut16 = "tonic-gut-16": "Babolat Tonic Gut 16 (gut; no friction row of its own: the TWU gut median)",
         AluPower16 = "alu-power-16": "Luxilon ALU Power 16 (polyester)",
         AluRough16 = "alu-rough-16": "Luxilon ALU Rough 16 (polyester)",
         Original16 = "original-16": "Luxilon Original 16 (polyester)",
         Tcs16 = "tcs-16": "Polyfibre TCS 16 (polyester)",
-        Nrg2_16 = "nrg2-16": "Tecnifibre NRG2 16 (nylon; no friction data: the defaults)",
-        Nxt16 = "nxt-16": "Wilson NXT 16 (nylon; no friction data: the defaults)",
+        Nrg2_16 = "nrg2-16": "Tecnifibre NRG2 16 (nylon)",
+        Nxt16 = "nxt-16": "Wilson NXT 16 (nylon)",
     }
 }
 

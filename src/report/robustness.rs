@@ -8,7 +8,6 @@ use crate::experiments::conclusion::{self, Standing};
 use crate::experiments::robustness::{self, ClaimRobustness, Robust};
 use crate::experiments::Context;
 use crate::numfmt::fmt_sig;
-use crate::params::keys;
 
 /// The paper's headline claims, quoted in the section's sentences.
 const HEADLINES: [(&str, &str); 6] = [
@@ -34,7 +33,8 @@ fn hinges(r: &ClaimRobustness) -> String {
 
 /// The inputs and their sources, one line each.
 fn inputs_list() -> String {
-    keys::uncertain()
+    crate::experiments::robustness::inputs()
+        .into_iter()
         .filter_map(|s| s.uncertainty.map(|u| format!("- `{}` ~ {}: {}\n", s.key, u.dist.text(), u.source)))
         .collect()
 }
@@ -70,7 +70,7 @@ pub fn markdown(rows: &[ClaimRobustness]) -> String {
          2.55 against 2.61 for the rules' mean e 0.745, the ball's 57 g against 56.7 g):\n\n{}",
         robustness::SAMPLES,
         robustness::SEED,
-        robustness::SAMPLES as usize * (keys::uncertain().count() + 2),
+        robustness::SAMPLES as usize * (robustness::inputs().len() + 2),
         2 * robustness::SAMPLES,
         robustness::SAMPLES,
         inputs_list()

@@ -401,7 +401,7 @@ impl SpeedComparison {
             "spin: > 0 is topspin in the court's frame (the ball's top moving forward in its flight), \
              for the incoming ball and the spin column alike\n",
         );
-        // a tangential law other than the default elastic one is named (it changes every spin)
+        // a tangential law other than the default one is named (it changes every spin)
         if let Some(p) = self.rows.first().map(|r| &r.params) {
             if p.oblique.tangential != crate::params::TangentialLaw::default() {
                 s.push_str(&format!("tangential contact law: {}\n", p.oblique.tangential.name()));

@@ -2,21 +2,21 @@
 //! damper `c` in parallel with the tangential spring `k_t` (a Kelvin-Voigt element) dissipates
 //! `c (ds/dt)^2` while the spring works.
 //!
-//! Source of its size (a derivation, not a fit): the ball's rubber loses the same fraction of
-//! its stored energy in shear as in compression. On a rigid surface the model's ball returns
-//! `e^2 = 2 / (p + 1)` of its normal energy (SPEC Eq 12; `p = 2.55` gives `e = 0.751`, inside
-//! the ITF rebound specification 135-147 cm from 254 cm, `e = 0.73-0.76`, data/measured
-//! M017-M018). A tangential grip oscillation that completes one half cycle then returns the
-//! tangential speed times the same `e`; for a damped oscillator that is
-//! `e = exp(-pi zeta / sqrt(1 - zeta^2))`, so `zeta = -ln e / sqrt(pi^2 + ln^2 e)` (0.091 for the
-//! paper's ball) and `c = 2 zeta sqrt(k_t m_red)`. Cross (2005, "Bounce of a spinning ball near
-//! normal incidence", Am. J. Phys. 73, 914) reports measured tangential COR values of tennis
-//! balls, but they could not be read (data/measured/README), so this derivation stands in.
+//! Source of its size: the measured tangential coefficient of restitution of a gripping tennis
+//! ball, `e_x = -(v_x2 - R w_2) / (v_x1 - R w_1)` = 0.10-0.17 (Cross 2002, "Grip-slip behavior
+//! of a bouncing ball", Am. J. Phys. 70, Table III; data/measured M079-M080; the parameter
+//! `ball-ex`). The relation used: while the ball grips, its contact point is a damped
+//! oscillator on `k_t` carrying the reduced mass `m_red` (`1/m_red = 1/m_b + R^2/I_b + 1/m_frame`),
+//! and `e_x` is what it returns over one half cycle, from the spring relaxed to relaxed again:
+//! `e_x = exp(-pi zeta / sqrt(1 - zeta^2))`, so `zeta = -ln e_x / sqrt(pi^2 + ln^2 e_x)`
+//! (0.54 for `e_x` = 0.135) and `c = 2 zeta sqrt(k_t m_red)`. On an immovable frame a ball
+//! that grips for that half cycle leaves with exactly `e_x` (tested); a contact that ends
+//! earlier or later returns a little more or less.
 
-/// The damping ratio of the tangential grip oscillation for a ball of hysteresis exponent `p`
-/// (the same restitution per half cycle in shear as in compression).
-pub fn damping_ratio(p: f64) -> f64 {
-    let ln_e = (2.0 / (p + 1.0)).sqrt().ln();
+/// The damping ratio of the tangential grip oscillation that returns the tangential
+/// restitution `e_x` (0 < e_x < 1) over one half cycle.
+pub fn damping_ratio(e_x: f64) -> f64 {
+    let ln_e = e_x.ln();
     -ln_e / (std::f64::consts::PI.powi(2) + ln_e * ln_e).sqrt()
 }
 
@@ -26,17 +26,22 @@ pub fn damper(zeta: f64, kt: f64, inv_red: f64) -> f64 {
     2.0 * zeta * (kt / inv_red).sqrt()
 }
 
+/// The length of that half cycle, s: `pi / (w0 sqrt(1 - zeta^2))`, `w0 = sqrt(k_t / m_red)`.
+pub fn half_period(zeta: f64, kt: f64, inv_red: f64) -> f64 {
+    std::f64::consts::PI / ((kt * inv_red).sqrt() * (1.0 - zeta * zeta).sqrt())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
-    fn half_cycle_restitution_is_the_normal_one() {
-        for p in [1.5, 2.55, 4.0] {
-            let z = damping_ratio(p);
+    fn half_cycle_restitution_is_e_x() {
+        for e_x in [0.10, 0.135, 0.17, 0.5, 0.9] {
+            let z = damping_ratio(e_x);
             let e = (-std::f64::consts::PI * z / (1.0 - z * z).sqrt()).exp();
-            assert!((e - (2.0 / (p + 1.0)).sqrt()).abs() < 1e-12, "{p}: {e}");
+            assert!((e - e_x).abs() < 1e-12, "{e_x}: {e}");
         }
-        assert!((damping_ratio(2.55) - 0.0909).abs() < 5e-4);
+        assert!((damping_ratio(0.135) - 0.5375).abs() < 5e-4);
     }
 }

@@ -13,10 +13,12 @@
 //!              switched ODE in (v, omega, u, s, q) with the energies each mechanism dissipates
 //! stepper.rs   the generic stepper of a switched ODE: Runge-Kutta substeps within each piece,
 //!              every mode switch located on its substep (the combined law is its one user)
-//! loss.rs      mechanism `loss`: a damper in parallel with the ball's tangential spring
+//! loss.rs      mechanism `loss`: a damper in parallel with the ball's tangential spring,
+//!              sized by the ball's measured tangential restitution (`ball-ex`)
 //! offset.rs    mechanism `offset`: the normal force acting ahead of the ball's centre
 //! bed.rs       mechanism `bed`: the strings sliding sideways over each other
-//! radius.rs    mechanism `radius`: the friction acting at the deformed ball's face, R - delta
+//! radius.rs    mechanism `radius`: the friction acting at the deformed ball's face, R - delta,
+//!              delta from the ball's measured dynamic stiffness (`ball-kdyn`, not `k1`)
 //! ```
 //!
 //! With every mechanism off the parameters select the elastic law itself, kept bit for bit

@@ -8,7 +8,8 @@
 //! on a flat a moment arm `d = (3/16) alpha_h a`, with `a` the radius of the contact circle
 //! and `alpha_h` the fraction of the elastic energy lost per cycle. Here
 //! `alpha_h = 1 - e^2 = (p - 1)/(p + 1)` is the model's own ball (SPEC Eq 12) and `a` follows
-//! from the ball's compression `delta` as the chord of the flattened cap,
+//! from the ball's compression `delta` (its dynamic stiffness `ball-kdyn`) as the chord of the
+//! flattened cap,
 //! `a = sqrt(2 R delta - delta^2)` ([`super::radius`]). The torque acts while the ball grips
 //! (rolls on the strings, Tabor's case); while it slides the friction torque governs, and
 //! without friction the ball's spin is left alone.

@@ -59,10 +59,10 @@ impl Setup {
                 offset_loss: if has(TangentialLaw::Offset) { offset::loss_fraction(p.ball.p) } else { 0.0 },
                 bed: has(TangentialLaw::Bed).then(|| Bed::of(p.strings.ks, mu_ss)),
                 shrink: has(TangentialLaw::Radius),
-                compression: Compression { k1: p.ball.k1, p: p.ball.p, radius: law.radius },
+                compression: Compression { k: o.ball_kdyn, p: p.ball.p, radius: law.radius },
             };
             if has(TangentialLaw::Loss) {
-                g.damping = loss::damper(loss::damping_ratio(p.ball.p), law.kt, g.inv_red());
+                g.damping = loss::damper(loss::damping_ratio(o.ball_ex), law.kt, g.inv_red());
             }
             g
         });

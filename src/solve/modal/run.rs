@@ -130,7 +130,9 @@ impl Run<'_> {
             let (before, after) = (self.next.x[3].get(), self.s.x[3].get());
             let theta = hermite_eval(before[0], before[1], after[0], after[1], h, sc) / ix.sqrt();
             self.separated = Some((self.t - h + sc * h, theta));
-            self.tangential.advance(|| ForcePiece { h: sc * h, ..ForcePiece::hermite(h, (a.f, a.d), (f1, d1)) });
+            // the last piece ends at the separation with no force and no rate, as in the explicit
+            // solver: the ball's tangent stiffness vanishes with its compression (p > 1)
+            self.tangential.advance(|| ForcePiece::hermite(sc * h, (a.f, a.d), (0.0, 0.0)));
         } else {
             self.tangential.advance(|| ForcePiece::hermite(h, (a.f, a.d), (f1, d1)));
         }

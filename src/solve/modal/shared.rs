@@ -115,7 +115,7 @@ impl Shared {
 #[cfg(test)]
 mod tests {
     use crate::params::{Params, SolverKind};
-    use crate::solve::modal::{ModalModel, DEFAULT_RESOLUTION};
+    use crate::solve::modal::{ModalModel, Resolution};
 
     /// The paper's impact at `x`, `r`, `ks` with the modal solver.
     fn at(x: f64, r: f64, ks: f64) -> Params {
@@ -143,7 +143,7 @@ mod tests {
                 (p.oblique.angle_deg, p.oblique.azimuth_deg, p.oblique.spin_rpm, p.oblique.mu) =
                     (angle, azimuth, spin, mu);
                 let cached = ModalModel::new(&p).unwrap();
-                let fresh = ModalModel::build(&p, DEFAULT_RESOLUTION, false).unwrap();
+                let fresh = ModalModel::build(&p, Resolution::of(&p), false).unwrap();
                 assert_eq!(format!("{:?}", cached.run().unwrap()), format!("{:?}", fresh.run().unwrap()), "{p:?}");
             }
         }

@@ -96,7 +96,7 @@ fn oblique_text(p: &Params) -> String {
         return String::new();
     }
     let o = &p.oblique;
-    // a tangential law other than the default elastic one is named (it changes every value)
+    // a tangential law other than the default one is named (it changes every value)
     let law = if o.tangential == crate::params::TangentialLaw::default() {
         String::new()
     } else {

@@ -54,9 +54,7 @@ pub struct Input {
 /// a known, real-valued key whose every sample (the distribution's [`extent`](Dist::extent))
 /// is a valid value.
 pub fn parse_vary(text: &str, base: &Params) -> Result<Input> {
-    let (key, dist) = text.split_once('=').ok_or_else(|| {
-        Error::invalid("vary", text, "give KEY=DIST, DIST uniform:LO:HI, normal:MEAN:SD or loguniform:LO:HI")
-    })?;
+    let (key, dist) = text.split_once('=').unwrap_or((text, ""));
     let spec = keys::find(key.trim()).ok_or_else(|| {
         Error::invalid("vary", text, format!("unknown parameter '{key}' (known: {})", Overrides::KEYS.join(", ")))
     })?;
@@ -68,7 +66,23 @@ pub fn parse_vary(text: &str, base: &Params) -> Result<Input> {
             format!("only real-valued parameters can be varied ({})", numeric.join(", ")),
         ));
     }
-    let dist = Dist::parse(spec.key, dist)?;
+    // KEY alone: the distribution declared with the parameter, if it has one
+    let dist = match (dist.trim().is_empty(), spec.uncertainty) {
+        (true, Some(u)) => u.dist,
+        (true, None) => {
+            let declared: Vec<&str> = keys::uncertain().map(|s| s.key).collect();
+            return Err(Error::invalid(
+                "vary",
+                text,
+                format!(
+                    "give KEY=DIST, DIST uniform:LO:HI, normal:MEAN:SD or loguniform:LO:HI (KEY alone only for a \
+                     parameter with a declared uncertainty: {})",
+                    declared.join(", ")
+                ),
+            ));
+        }
+        (false, _) => Dist::parse(spec.key, dist)?,
+    };
     let (lo, hi) = dist.extent();
     let unit = if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) };
     if let Check::Within(min, max) = spec.check {
@@ -172,7 +186,7 @@ impl Study {
                 return Err(Error::invalid(
                     "vary",
                     text,
-                    format!("{} is set by string = {id} (its TWU database value); vary one or the other", input.key),
+                    format!("{} is set by string = {id} (data/strings); vary one or the other", input.key),
                 ));
             }
         }
@@ -269,7 +283,10 @@ mod tests {
         assert!(msg(&["p=uniform:0.5:2"], 8).contains("1 < p <= 10"));
         assert!(msg(&["ks=uniform:2e4:3e4", "ks=uniform:3e4:4e4"], 8).contains("ks is varied twice"));
         assert!(msg(&["segments=uniform:10:20"], 8).contains("only real-valued parameters"));
-        assert!(msg(&["ks"], 8).contains("give KEY=DIST"));
+        assert!(msg(&["x"], 8).contains("give KEY=DIST") && msg(&["x"], 8).contains("ball-ex"));
+        // KEY alone: the declared distribution
+        let declared = study(&["ks"], 8).unwrap();
+        assert_eq!(declared.inputs[0].dist, keys::KS.uncertainty.unwrap().dist);
         assert!(msg(&["ks=uniform:2e4:3e4"], 0).starts_with("invalid samples = 0: must satisfy 1 <= samples <= 65536"));
         assert!(msg(&["ks=uniform:2e4:3e4"], u64::MAX).contains("samples <= 65536"));
         for m in [msg(&["ks=uniform:5e4:2e4"], 8), msg(&["x=uniform:0.1:0.9"], 8)] {
