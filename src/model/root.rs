@@ -1,8 +1,8 @@
 //! The crate's one root finder for a switch inside a bracket: a [`Bracket`] `[lo, hi]` with
 //! `lo` before the switch and `hi` past it, halved by [`bisect`] to rounding, or kept around
 //! the iterates of a faster method that falls back on its midpoint when a step would leave it
-//! ([`Bracket::inside_or_mid`]: the Newton steps of `solve::hermite`, the rational
-//! steps of [`super::rank_one`]).
+//! ([`Bracket::inside_or_mid`]: the Newton steps of `solve::hermite` and of the stiffening
+//! strings' expansion, [`super::contact`], the rational steps of [`super::rank_one`]).
 //!
 //! Each caller says which side a point is on (`before`), and with it its sign convention:
 //! `f > 0` before a fall through zero that counts zero as past, `f >= 0` one that counts zero
@@ -40,6 +40,14 @@ impl Bracket {
         } else {
             self.hi = x;
         }
+    }
+
+    /// Narrow the bracket to `x`: its `hi` if `x` is past the switch, else its `lo` (for a sign
+    /// convention that names the far side: `g > 0` past the root of a rising `g`, where a NaN
+    /// counts as before).
+    #[inline]
+    pub fn narrow_past(&mut self, x: f64, past: bool) {
+        self.narrow(x, !past);
     }
 
     /// The midpoint.
@@ -150,5 +158,8 @@ mod tests {
         b.narrow(1.75, false);
         b.narrow(1.25, true);
         assert_eq!(b, Bracket::new(1.25, 1.75));
+        b.narrow_past(1.5, true);
+        b.narrow_past(1.375, false);
+        assert_eq!(b, Bracket::new(1.375, 1.5));
     }
 }

@@ -3,6 +3,7 @@
 
 use crate::error::Result;
 use crate::model::contact::{ball_stiffness, series, ContactLaw, ContactState, Cross, Phase};
+use crate::model::root::Bracket;
 use crate::params::{Params, StringLaw};
 
 /// The paper's ball on stiffening strings.
@@ -53,26 +54,21 @@ impl Stiffening {
     /// `[0, Y_T]` (the left side increases from 0).
     fn stiffening_expansion(&self, yt: f64, y0: f64, guess: f64) -> f64 {
         let g = |ys: f64| ys + y0 * (self.string_force(ys) / (self.paper.k1 * y0)).powf(1.0 / self.paper.p) - yt;
-        let (mut lo, mut hi) = (0.0, yt);
+        let mut bracket = Bracket::new(0.0, yt);
         let mut ys = if guess > 0.0 && guess < yt { guess } else { 0.5 * yt };
         for _ in 0..200 {
             let gy = g(ys);
-            if gy > 0.0 {
-                hi = ys;
-            } else {
-                lo = ys;
-            }
+            bracket.narrow_past(ys, gy > 0.0);
             let f = self.string_force(ys);
             let slope = 1.0
                 + y0 / self.paper.p
                     * (f / (self.paper.k1 * y0)).powf(1.0 / self.paper.p - 1.0)
                     * self.string_stiffness(ys)
                     / (self.paper.k1 * y0);
-            let mut next = ys - gy / slope;
-            if !(next > lo && next < hi && next.is_finite()) {
-                next = 0.5 * (lo + hi);
-            }
-            if (next - ys).abs() <= 4.0 * f64::EPSILON * ys.max(f64::MIN_POSITIVE) || hi - lo <= 4.0 * f64::EPSILON * hi
+            // (a step that is not finite is not inside)
+            let next = bracket.inside_or_mid(ys - gy / slope);
+            if (next - ys).abs() <= 4.0 * f64::EPSILON * ys.max(f64::MIN_POSITIVE)
+                || bracket.hi - bracket.lo <= 4.0 * f64::EPSILON * bracket.hi
             {
                 return next;
             }
