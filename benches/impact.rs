@@ -25,14 +25,22 @@ fn paper_impact(c: &mut Criterion) {
     c.bench_function("fig4_impact_n39_node_modal", |b| b.iter(|| simulate(std::hint::black_box(&modal)).unwrap()));
     let prepared = racket_impact::solve::modal::ModalModel::new(&modal).unwrap();
     c.bench_function("fig4_impact_n39_node_modal_prepared", |b| b.iter(|| prepared.run().unwrap()));
-    // the same impact arriving at 30 deg with 2000 rpm of topspin: the tangential grip-slip
-    // law follows the normal force piece by piece
+    // the same impact arriving at 30 deg with 2000 rpm of topspin: the tangential law (the
+    // default, `loss`) follows the normal force piece by piece
     let mut oblique = modal;
     oblique.oblique.angle_deg = 30.0;
     oblique.oblique.spin_rpm = 2000.0;
     let prepared_oblique = racket_impact::solve::modal::ModalModel::new(&oblique).unwrap();
     c.bench_function("fig4_impact_n39_node_modal_prepared_oblique_30deg", |b| {
         b.iter(|| prepared_oblique.run().unwrap())
+    });
+    // the same under the elastic law (the default before issue 29; its cost is the yardstick of
+    // the default's)
+    let mut elastic = oblique;
+    elastic.oblique.tangential = racket_impact::params::TangentialLaw::Elastic;
+    let prepared_elastic = racket_impact::solve::modal::ModalModel::new(&elastic).unwrap();
+    c.bench_function("fig4_impact_n39_node_modal_prepared_oblique_30deg_elastic", |b| {
+        b.iter(|| prepared_elastic.run().unwrap())
     });
     // the same with all four tangential mechanisms (`--tangential physical`)
     let mut physical = oblique;
