@@ -9,10 +9,15 @@
 //!
 //! Source of `k`: a 100-inch (7.06 m/s) drop compresses a tennis ball about 6 mm on concrete
 //! and about 3 mm on strings (data/measured M081-M082). A linear spring storing the drop's
-//! kinetic energy at 6 mm is `k = m v^2 / d^2` = 7.9e4 N/m for 57 g; in series with the 60 lb
-//! string plane (4e4 N/m) it compresses 3.5 mm at the same drop, the 3 mm measured (tested). The
-//! paper's `k1` = 3e4 N/m would give 9.7 and 7.4 mm. The ITF static test (80 N for 5.6-7.4 mm,
-//! M035-M036) is slow and far softer than any bounce; no law here reproduces it (SPEC.md
+//! kinetic energy at 6 mm is `k = m v^2 / d^2` = 7.89e4 N/m for 57 g, at a peak force
+//! `m v^2 / d` = 473 N. The model's normal force is not that spring's but the paper's `k1` law,
+//! whose peak at that drop is about 292 N on a rigid bed and 221 N on 60 lb strings, so this
+//! mechanism computes `F / k` = 3.7 mm on concrete (measured 6) and 2.8 mm on the strings
+//! (measured about 3; tested in tests/tangential.rs). No single linear law fits both the model's
+//! forces and the measured compressions: it would take about 48.7 kN/m on concrete and 73.6 kN/m
+//! on strings, and the ITF static test (80 N for 5.6-7.4 mm, M035-M036, 11-14 kN/m) is softer
+//! still (SPEC.md section 6). The paper's `k1` = 3e4 N/m would give 9.7 mm on concrete at the
+//! model's force.
 //! section 6). The compression is capped at `R` (the lever never turns negative).
 
 /// The ball's compression law, from the normal force alone.
@@ -57,25 +62,5 @@ mod tests {
         assert!((c.delta(300.0 * (1.0 - 1e-12), 300.0) - 0.01).abs() < 1e-12);
         assert!(c.delta(150.0, 300.0) > c.delta(150.0, 150.0));
         assert_eq!(c.delta(1e6, 1e6), 0.033);
-    }
-
-    /// The default dynamic stiffness reproduces the drop compressions it comes from: 6 mm on
-    /// concrete (by construction) and about 3 mm on the 60 lb strings (a prediction: 3.5 mm,
-    /// inside the 'about 3 mm' read as 2-4 mm), where the paper's k1 gives 9.7 and 7.4 mm.
-    #[test]
-    fn the_dynamic_stiffness_reproduces_the_drop_compressions() {
-        use crate::params::oblique::{kdyn_from_drop, BALL_KDYN, DROP_HEIGHT};
-        let (m, v) = (0.057, (2.0 * 9.81 * DROP_HEIGHT).sqrt());
-        // a linear ball spring k in series with the strings ks: the peak force m v^2 = F^2 / k_series
-        let compression = |k: f64, ks: f64| {
-            let series = if ks.is_infinite() { k } else { k * ks / (k + ks) };
-            v * (m * series).sqrt() / k
-        };
-        assert!((compression(BALL_KDYN, f64::INFINITY) - 0.006).abs() < 1e-12);
-        assert_eq!(BALL_KDYN, kdyn_from_drop(m, 0.006));
-        let on_strings = compression(BALL_KDYN, 4.0e4);
-        assert!((on_strings - 0.0035).abs() < 1e-4 && (0.002..=0.004).contains(&on_strings), "{on_strings}");
-        assert!((compression(3.0e4, f64::INFINITY) - 0.0097).abs() < 1e-4);
-        assert!((compression(3.0e4, 4.0e4) - 0.0074).abs() < 1e-4);
     }
 }
