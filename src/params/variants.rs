@@ -66,7 +66,8 @@ choice_enum! {
     /// The tangential contact law of an oblique or spinning impact (SPEC.md section 6): the
     /// elastic grip-slip law, one mechanism of [`crate::model::tangential`] on top of it, or all four.
     /// Default `loss`: of the laws compared with measurement (`validation_spin`) the one closer
-    /// than `elastic` to every judged quantity (REPORT.md, "Against measurement").
+    /// than `elastic` on the spin table (both angle readings), the hand-held ratio and the
+    /// grip-stop angle, and a tie on the tour forehand (REPORT.md, "Against measurement").
     TangentialLaw (default Loss) {
         Elastic = "elastic": "The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)",
         Loss = "loss": "Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex; the default)",
