@@ -276,9 +276,24 @@ fn the_string_option_is_used_or_refused() {
     std::fs::remove_dir_all(&dir).unwrap();
     assert_eq!(code, Some(0), "{err}");
     assert!(
-        out.contains("mu 0.498") && out.contains("tangential: physical (mu-ss 0.077, string Luxilon ALU Rough 16)"),
+        out.contains("mu 0.498")
+            && out.contains(
+                "tangential: physical (mu-ss 0.077, ball-ex 0.135, ball-kdyn 78905.1 N/m, string Luxilon ALU Rough 16)"
+            ),
         "{out}"
     );
+    // each law shows only the parameters it uses
+    for (law, line) in [
+        ("elastic", "tangential: elastic\n"),
+        ("loss", "tangential: loss (ball-ex 0.135)\n"),
+        ("bed", "tangential: bed (mu-ss 0.08)\n"),
+        ("radius", "tangential: radius (ball-kdyn 78905.1 N/m)\n"),
+        ("offset", "tangential: offset (ball-kdyn 78905.1 N/m)\n"),
+    ] {
+        let (code, out, err) = cli(&["simulate", "--angle-deg", "30", "--tangential", law]);
+        assert_eq!(code, Some(0), "{err}");
+        assert!(out.contains(line), "{out}");
+    }
     // at normal incidence no tangential force acts: the flags describe the ball and strings a
     // script sets once, so they run with one note each saying they are not exercised
     // (params::used; each note a diagnostic of its own, one line on stderr)

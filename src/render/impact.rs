@@ -46,14 +46,24 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
             fmt_sig(o.ball_radius, 6),
             fmt_sig(o.ball_inertia_factor, 6)
         ));
-        if o.tangential != crate::params::TangentialLaw::Elastic {
-            s.push_str(&format!(
-                "tangential: {} (mu-ss {}{})\n",
-                o.tangential.name(),
-                fmt_sig(o.mu_ss, 6),
-                crate::params::strings::entry(o.string).map_or(String::new(), |e| format!(", string {}", e.name))
-            ));
+        // the law, with only the parameters it uses
+        use crate::params::TangentialLaw as Law;
+        let law = o.tangential;
+        let mut used = Vec::new();
+        if law.has(Law::Bed) {
+            used.push(format!("mu-ss {}", fmt_sig(o.mu_ss, 6)));
         }
+        if law.has(Law::Loss) {
+            used.push(format!("ball-ex {}", fmt_sig(o.ball_ex, 6)));
+        }
+        if law.has(Law::Radius) || law.has(Law::Offset) {
+            used.push(format!("ball-kdyn {} N/m", fmt_sig(o.ball_kdyn, 6)));
+        }
+        if let Some(e) = crate::params::strings::entry(o.string) {
+            used.push(format!("string {}", e.name));
+        }
+        let used = if used.is_empty() { String::new() } else { format!(" ({})", used.join(", ")) };
+        s.push_str(&format!("tangential: {}{used}\n", law.name()));
     }
     let held = p.variants.grip == crate::params::Grip::Hand;
     for field in TEXT_ORDER {
