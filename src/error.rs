@@ -182,10 +182,11 @@ impl Error {
         Error::InvalidParameter { field, value: crate::numfmt::shown(&value.to_string()), allowed: allowed.into() }
     }
 
-    /// A row of a compiled-in CSV table (`what`: which table) that does not read: the file and
-    /// line, the column by its header name and what was wrong with it.
-    pub fn csv_row(what: &'static str, file: &str, headers: &csv::StringRecord, err: &csv::Error) -> Self {
-        let line = err.position().map_or(0, |p| p.line());
+    /// A row of a compiled-in CSV table (`what`: which table, `text` its contents) that does not
+    /// read: the file and line ([`csv_line`]), the column by its header name and what was wrong
+    /// with it.
+    pub fn csv_row(what: &'static str, file: &str, text: &str, headers: &csv::StringRecord, err: &csv::Error) -> Self {
+        let line = err.position().map_or(0, |p| csv_line(text, p));
         let reason = match err.kind() {
             csv::ErrorKind::Deserialize { err, .. } => {
                 let column = err.field().and_then(|i| headers.get(i as usize)).unwrap_or("?");
@@ -203,4 +204,14 @@ impl Error {
     pub fn io(path: impl Into<PathBuf>, err: impl std::fmt::Display) -> Self {
         Error::Io { path: path.into(), message: err.to_string() }
     }
+}
+
+/// The 1-based line of `text` on which the record that csv reports at `at` starts. csv places a
+/// record that follows blank lines at the first of them (its `Position::line` too), so they are
+/// skipped here.
+pub fn csv_line(text: &str, at: &csv::Position) -> u64 {
+    let from = usize::try_from(at.byte()).unwrap_or(text.len()).min(text.len());
+    let rest = &text[from..];
+    let start = from + rest.len() - rest.trim_start_matches(['\r', '\n']).len();
+    1 + text[..start].matches('\n').count() as u64
 }

@@ -74,10 +74,10 @@ struct Row {
 pub fn parse_measurements(text: &str, file: &str) -> Result<Vec<Measured>> {
     let mut rdr = csv::Reader::from_reader(text.as_bytes());
     let headers =
-        rdr.headers().map_err(|e| Error::csv_row("measurements", file, &csv::StringRecord::new(), &e))?.clone();
+        rdr.headers().map_err(|e| Error::csv_row("measurements", file, text, &csv::StringRecord::new(), &e))?.clone();
     rdr.deserialize::<Row>()
         .map(|row| {
-            let r = row.map_err(|e| Error::csv_row("measurements", file, &headers, &e))?;
+            let r = row.map_err(|e| Error::csv_row("measurements", file, text, &headers, &e))?;
             Ok(Measured {
                 id: r.id,
                 quantity: r.quantity,
@@ -281,16 +281,16 @@ fn run(ctx: &Context) -> Result<Table> {
     }
     // polyester over nylon, both tensions (M015)
     let ratio = &measured(&["M015"])?[0];
+    // each measured point's 40 deg row, found by its source row (not by position)
     let mean_of = |material: &str, law: usize| {
         let v: Vec<f64> = table
             .iter()
-            .zip(&rows)
-            .filter(|(m, _)| m.string.contains(&format!("({material})")))
-            .map(|(_, c)| c.model[law])
+            .filter(|m| m.string.contains(&format!("({material})")))
+            .filter_map(|m| rows.iter().find(|c| c.quantity == "spin_out_rpm" && c.source == m.id))
+            .map(|c| c.model[law])
             .collect();
         v.iter().sum::<f64>() / v.len() as f64
     };
-    // (the zip takes the 40 deg rows, the first 14)
     rows.push(Compared {
         quantity: "spin_ratio_polyester_over_nylon",
         string: "polyester (5) / nylon (2)".into(),

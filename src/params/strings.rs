@@ -8,7 +8,7 @@ use std::sync::OnceLock;
 use serde::Deserialize;
 
 use super::spec::FlagValue;
-use super::{Oblique, StringName};
+use super::{Oblique, StringName, TangentialLaw};
 use crate::error::{Error, Result};
 
 /// The table as shipped.
@@ -59,12 +59,14 @@ pub struct StringEntry {
 pub fn parse_table(text: &str, file: &str) -> Result<Vec<StringEntry>> {
     let mut rdr = csv::Reader::from_reader(text.as_bytes());
     let headers =
-        rdr.headers().map_err(|e| Error::csv_row("string table", file, &csv::StringRecord::new(), &e))?.clone();
+        rdr.headers().map_err(|e| Error::csv_row("string table", file, text, &csv::StringRecord::new(), &e))?.clone();
     let mut out = Vec::new();
-    for row in rdr.deserialize::<StringEntry>() {
+    for record in rdr.records() {
         let bad = |line: u64, what: String| Error::invalid("string table", format!("{file}:{line}"), what);
-        let e = row.map_err(|e| Error::csv_row("string table", file, &headers, &e))?;
-        let line = out.len() as u64 + 2;
+        let record = record.map_err(|e| Error::csv_row("string table", file, text, &headers, &e))?;
+        let e: StringEntry =
+            record.deserialize(Some(&headers)).map_err(|e| Error::csv_row("string table", file, text, &headers, &e))?;
+        let line = record.position().map_or(0, |at| crate::error::csv_line(text, at));
         if !["gut", "nylon", "polyester"].contains(&e.material.as_str()) {
             return Err(bad(line, format!("material '{}' is not gut, nylon or polyester", e.material)));
         }
@@ -91,10 +93,16 @@ pub fn all() -> &'static [StringEntry] {
 pub fn missing_data_note(o: &Oblique) -> Option<String> {
     let e = entry(o.string)?;
     (!o.is_normal() && e.friction_from != FrictionFrom::Entry).then(|| {
+        // mu-ss only where the law uses it (bed, physical)
+        let mu_ss = if o.tangential.has(TangentialLaw::Bed) {
+            format!(" and mu-ss {} (string/string)", e.mu_ss)
+        } else {
+            String::new()
+        };
         format!(
             "string {}: no friction data of its own in the TWU database ({} has no String/Ball or String/String COF), \
-             so the median of the database's {} strings: mu {} (ball/string) and mu-ss {} (string/string)",
-            e.id, e.twu_database_entry, e.material, e.mu, e.mu_ss
+             so the median of the database's {} strings: mu {} (ball/string){mu_ss}",
+            e.id, e.twu_database_entry, e.material, e.mu
         )
     })
 }
@@ -174,7 +182,27 @@ mod tests {
             let text = format!("{head}\n{good}\n{bad}\n");
             let msg = parse_table(&text, "t.csv").unwrap_err().to_string();
             assert!(msg.contains("t.csv:3") && msg.contains(said), "{msg}");
+            // after a blank line the bad row is on line 4, and the message says so
+            let text = format!("{head}\n{good}\n\n{bad}\n");
+            let msg = parse_table(&text, "t.csv").unwrap_err().to_string();
+            assert!(msg.contains("t.csv:4") && msg.contains(said), "{msg}");
         }
         assert_eq!(parse_table(TABLE, TABLE_FILE).unwrap().len(), 7);
+    }
+
+    /// The gut's median note names mu-ss only under a law that uses it (bed, physical).
+    #[test]
+    fn the_median_note_names_only_what_the_law_uses() {
+        let mut o = Oblique { string: StringName::TonicGut16, angle_deg: 30.0, ..Oblique::default() };
+        for (law, says_mu_ss) in [
+            (TangentialLaw::Loss, false),
+            (TangentialLaw::Elastic, false),
+            (TangentialLaw::Bed, true),
+            (TangentialLaw::Physical, true),
+        ] {
+            o.tangential = law;
+            let note = missing_data_note(&o).unwrap();
+            assert!(note.contains("mu 0.") && note.contains("mu-ss") == says_mu_ss, "{note}");
+        }
     }
 }
