@@ -204,15 +204,24 @@ fn mirrored_impacts_give_mirrored_results() {
 
 /// The tangential outcome, fd against modal: relative to the value or, for one near zero, to a
 /// floor on the scale of the impact (1 % of v1, of the rolling spin v1/R, of a fraction). Every
-/// impact under the default law (`loss`), and every other one under `elastic` and `physical`.
+/// impact under the default law (`loss`) and under `physical`, and every other one under
+/// `elastic`. Under `physical` the grip/slide switch can chatter at the friction limit while
+/// the strings slide (SPEC.md section 6, "Known limit"): such an impact says so
+/// (`tangential_chatter`), and its tangential outcome is held to the edge's size instead.
 #[test]
 fn fd_and_modal_agree_on_oblique_impacts_to_1e_4() {
     const TOL: f64 = 1e-4;
+    const EDGE_TOL: f64 = 2e-3;
     let mut worst = [0.0f64; 7];
+    let mut worst_flagged = [0.0f64; 7];
+    let mut flagged = 0;
     let set = random_set(150, 11);
     let laws = set.iter().enumerate().flat_map(|(i, p)| {
-        let other = if i % 2 == 0 { TangentialLaw::Elastic } else { TangentialLaw::Physical };
-        [(*p, TangentialLaw::Loss), (*p, other)]
+        let mut laws = vec![(*p, TangentialLaw::Loss), (*p, TangentialLaw::Physical)];
+        if i % 2 == 0 {
+            laws.push((*p, TangentialLaw::Elastic));
+        }
+        laws
     });
     for (mut p, law) in laws {
         p.oblique.tangential = law;
@@ -228,13 +237,44 @@ fn fd_and_modal_agree_on_oblique_impacts_to_1e_4() {
             rel(a.f_friction, b.f_friction, 1e-2),
             rel(a.f_ball_spin, b.f_ball_spin, 1e-2),
         ];
+        if a.tangential_chatter || b.tangential_chatter {
+            // the edge's size, as SPEC.md states it: the normal side to the tolerance, the
+            // tangential outcome to 2e-3
+            assert_eq!(law, TangentialLaw::Physical, "{p:?}");
+            assert!(d[0] <= TOL && d.iter().all(|&x| x <= EDGE_TOL), "{d:?} at {p:?}");
+            for (w, x) in worst_flagged.iter_mut().zip(d) {
+                *w = w.max(x);
+            }
+            flagged += 1;
+            continue;
+        }
         for (w, x) in worst.iter_mut().zip(d) {
             *w = w.max(x);
         }
         assert!(d.iter().all(|&x| x <= TOL), "{d:?} at {p:?}");
     }
-    let worst: Vec<String> = worst.iter().map(|w| format!("{w:.1e}")).collect();
-    eprintln!("worst fd/modal differences (v2_n v2_t spin angle slip f_friction f_ball_spin): {worst:?}");
+    let show = |w: &[f64; 7]| w.iter().map(|w| format!("{w:.1e}")).collect::<Vec<_>>();
+    eprintln!("worst fd/modal differences (v2_n v2_t spin angle slip f_friction f_ball_spin): {:?}", show(&worst));
+    eprintln!("{flagged} impacts under physical chattered; their worst: {:?}", show(&worst_flagged));
+}
+
+/// An impact whose grip/slide switch chatters at the edge says so, in its result and as a
+/// diagnostic: impact 116 of the random set above under `physical`, where fd and modal part by
+/// 9.7e-4 in slip fraction and 1e-4 in spin.
+#[test]
+fn a_chattering_switch_is_flagged_and_told() {
+    let mut p = random_set(150, 11)[116];
+    p.oblique.tangential = TangentialLaw::Physical;
+    let (a, b) = (simulate(&with(p, SolverKind::Fd)).unwrap(), simulate(&with(p, SolverKind::Modal)).unwrap());
+    assert!(a.tangential_chatter || b.tangential_chatter);
+    assert!((a.slip_fraction - b.slip_fraction).abs() > 1e-4, "{} vs {}", a.slip_fraction, b.slip_fraction);
+    let told = racket_impact::study::diagnose::impact(&p, &b);
+    assert!(told.iter().any(|d| d.field == "tangential"), "{told:?}");
+    // the same impact under loss (no strings sliding) does not chatter
+    p.oblique.tangential = TangentialLaw::Loss;
+    let c = simulate(&with(p, SolverKind::Modal)).unwrap();
+    assert!(!c.tangential_chatter);
+    assert!(!racket_impact::study::diagnose::impact(&p, &c).iter().any(|d| d.field == "tangential"));
 }
 
 #[test]

@@ -36,7 +36,7 @@ pub fn long_about() -> String {
          (2e4,4e4 or node,hat), a range start:stop:count or a log range start:stop:count:log. Keys, with \
          the default of a key not given (see `simulate --help`; a racket's own values with --racket): {}. \
          Options (--out, --config, --racket) go before the pairs. Sweeps use the modal solver (~30x \
-         faster, within 2e-5 of fd) unless --solver is given or a hand grip or stiffening strings need \
+         faster, within 2e-5 of fd at normal incidence and 1e-4 for an oblique ball) unless --solver is given or a hand grip or stiffening strings need \
          fd; the last CSV column names the solver. Example: racket-impact sweep --out s.csv --x \
          0.02:0.60:50 --ks 2e4,4e4 --load node",
         keys_with_defaults()

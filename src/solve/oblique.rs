@@ -73,6 +73,7 @@ impl Follower {
     pub fn complete(&self, setup: Option<&Setup>, r: &mut ImpactResult, v_n: f64) -> Result<()> {
         let nan = f64::NAN;
         (r.f_tangential_damping, r.f_string_sliding, r.f_rolling) = (nan, nan, nan);
+        r.tangential_chatter = false;
         let (Some(s), Some(c)) = (setup, &self.0) else {
             (r.v2_n, r.v2_t, r.spin_out_rpm, r.rebound_angle_deg, r.e_t) = (nan, nan, nan, nan, nan);
             (r.slip_fraction, r.f_friction, r.f_ball_spin, r.f_racket_inplane) = (nan, nan, nan, nan);
@@ -95,6 +96,7 @@ impl Follower {
         r.e_t = tangential_cor(w_in, out.slip, s.v_n.hypot(s.v_t));
         // (the pieces' lengths add up to the contact time only to rounding)
         r.slip_fraction = (out.slide_time / r.tau_s).min(1.0);
+        r.tangential_chatter = out.chatter;
         r.f_friction = out.friction_loss / e_in;
         r.f_ball_spin = 0.5 * inertia * out.omega * out.omega / e_in;
         r.f_racket_inplane = out.inplane / e_in;

@@ -303,6 +303,11 @@ impact_result! {
     /// of the whole incoming kinetic energy). NaN (left out) under the elastic law.
     f_rolling: f64 [""] checked: false, sweep: true,
         text: text_law("f_rolling", "lost to the offset torque against the spin (of the whole incoming KE)");
+    /// True if the tangential contact's switch between the ball gripping at the friction limit
+    /// and sliding chattered until a force piece reached its cap of switches (SPEC.md section
+    /// 6, "Known limit"; `bed` and `physical` only): the outcome then hangs on the solver's
+    /// piece length, and fd's is the reference.
+    tangential_chatter: bool [""] checked: false, sweep: false, text: None;
 }
 
 /// The text output's lines, in its order.
@@ -431,6 +436,7 @@ mod tests {
             f_tangential_damping: 28.0,
             f_string_sliding: 29.0,
             f_rolling: 30.0,
+            tangential_chatter: true,
         };
         let text = serde_json::to_string(&r).unwrap();
         let json = serde_json::to_value(r).unwrap();

@@ -22,6 +22,15 @@ pub fn impact(params: &Params, r: &ImpactResult) -> Vec<Diagnostic> {
             "the vibrating frame met the ball again after separation (re-contact not modelled)",
         ));
     }
+    if r.tangential_chatter {
+        out.push(Diagnostic::new(
+            Kind::BeyondModel,
+            "tangential",
+            "the ball sat on the edge between gripping at the friction limit and sliding, and the switch chattered until \
+             it was cut short: the spin and slip fraction hang on the solver's step there (fd, the reference, and modal \
+             can part by about 1e-3; SPEC.md section 6, Known limit)",
+        ));
+    }
     out
 }
 

@@ -95,23 +95,11 @@ impl Sources {
     /// config file's keys that the command does not take or its impacts do not use (a config
     /// file may be shared between commands, so these are not refused; field `config`).
     pub fn check_used(&self, params: &[Params]) -> Result<Vec<Diagnostic>> {
-        use crate::params::used::{first_unused, is_refused};
-        // a method's option it cannot honour is refused; a property this impact does not
-        // exercise is noted (crate::params::used::is_refused)
         let mut noted = Vec::new();
         for key in self.flags.given() {
-            if let Some((key, why)) = first_unused(&[key], params) {
-                let value = params.first().and_then(|p| crate::params::keys::value_text(key, p)).unwrap_or_default();
-                let field = crate::params::keys::find(key).map_or("parameter", |s| s.key);
-                if params.first().is_some_and(|p| is_refused(key, p)) {
-                    return Err(Error::invalid(field, value, why));
-                }
-                noted.push(Diagnostic::new(
-                    Kind::NotUsed,
-                    field,
-                    format!("--{field} {value} is not exercised by this impact ({why})"),
-                ));
-            }
+            let value =
+                |key: &str| params.first().and_then(|p| crate::params::keys::value_text(key, p)).unwrap_or_default();
+            noted.extend(unused_flag(key, value, params, ("parameter", "this impact"))?);
         }
         let (config, dropped) = self.config()?;
         let path = self.config.as_deref().unwrap_or(Path::new(""));
@@ -119,6 +107,28 @@ impl Sources {
         noted.extend(unused_config_note(path, &config, &overridden, &dropped, self.command, params));
         Ok(noted)
     }
+}
+
+/// The note ([`Kind::NotUsed`]) for the flag `key` (its value written by `value`) that none of
+/// the impacts `params` uses, or its refusal if it is a method's option none of them can honour
+/// ([`crate::params::used::is_refused`]: a property an impact does not exercise is noted, a
+/// method's option it cannot honour refused); `None` if one of them uses it. `(fallback, these)`:
+/// the field for a key the parameters do not declare, and the words for the impacts.
+pub(crate) fn unused_flag(
+    key: &str,
+    value: impl FnOnce(&str) -> String,
+    params: &[Params],
+    (fallback, these): (&'static str, &str),
+) -> Result<Option<Diagnostic>> {
+    let Some((key, why)) = crate::params::used::first_unused(&[key], params) else {
+        return Ok(None);
+    };
+    let value = value(key);
+    let field = crate::params::keys::find(key).map_or(fallback, |s| s.key);
+    if params.first().is_some_and(|p| crate::params::used::is_refused(key, p)) {
+        return Err(Error::invalid(field, value, why));
+    }
+    Ok(Some(Diagnostic::new(Kind::NotUsed, field, format!("--{field} {value} is not exercised by {these} ({why})"))))
 }
 
 /// One note ([`Kind::NotUsed`], field `config`) naming the keys of the config file at `path`

@@ -137,6 +137,8 @@ pub struct Combined {
     h_max: Substeps,
     /// Time spent sliding, s.
     pub slide_time: f64,
+    /// Whether a piece reached its cap of switches (`stepper::advance`).
+    pub chatter: bool,
     started: bool,
 }
 
@@ -152,6 +154,7 @@ impl Combined {
             turning: [f64::NAN; 2],
             h_max: Substeps::of(&law),
             slide_time: 0.0,
+            chatter: false,
             started: false,
         }
     }
@@ -203,7 +206,7 @@ impl Combined {
             self.modes = self.first_modes(piece);
         }
         self.turning = piece.turning_points();
-        stepper::advance(self, piece);
+        self.chatter |= stepper::advance(self, piece);
     }
 
     /// The modes at first contact (`F_n = 0`): the ball slides with its slip unless the spring

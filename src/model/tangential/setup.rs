@@ -103,6 +103,7 @@ impl Setup {
                     mechanism_losses: None,
                     spring_energy: t.spring_energy(),
                     slide_time: t.slide_time,
+                    chatter: false,
                 }
             }
             Contact::Combined(c) => {
@@ -121,6 +122,7 @@ impl Setup {
                     }),
                     spring_energy: c.spring_energy(),
                     slide_time: c.slide_time,
+                    chatter: c.chatter,
                 }
             }
         }
@@ -172,6 +174,9 @@ pub(crate) struct Separation {
     pub spring_energy: f64,
     /// Time spent sliding, s.
     pub slide_time: f64,
+    /// Whether the grip/slide switch chattered at an edge until a force piece reached its cap
+    /// (the combined law only; SPEC.md section 6, "Known limit").
+    pub chatter: bool,
 }
 
 /// The energies the combined law's mechanisms dissipate, J.

@@ -43,10 +43,13 @@ pub(super) trait Switched<const N: usize, const G: usize> {
     fn switch(&mut self, g: usize, piece: &ForcePiece, t: f64);
 }
 
-/// Advance the law over one piece of the normal force history.
-pub(super) fn advance<L: Switched<N, G>, const N: usize, const G: usize>(law: &mut L, piece: &ForcePiece) {
+/// Advance the law over one piece of the normal force history; `true` if the piece reached its
+/// cap of [`MAX_SWITCHES`] and took its rest in the mode it was in, unchecked (a chatter at an
+/// edge between two modes: SPEC.md section 6, "Known limit").
+pub(super) fn advance<L: Switched<N, G>, const N: usize, const G: usize>(law: &mut L, piece: &ForcePiece) -> bool {
     let mut t = 0.0;
     let mut switches = 0;
+    let mut capped = false;
     // the drive at the start of each substep: the one at the end of the substep before (the
     // same numbers: what a law freezes for a substep must not change its drive at the start)
     let mut d0 = law.drive(piece, t, law.frozen(piece, t));
@@ -61,6 +64,7 @@ pub(super) fn advance<L: Switched<N, G>, const N: usize, const G: usize>(law: &m
                 d0 = drive;
             }
             Some(_) if switches >= MAX_SWITCHES => {
+                capped = true;
                 law.commit(piece, t, h, end);
                 t += h;
                 d0 = drive;
@@ -79,6 +83,7 @@ pub(super) fn advance<L: Switched<N, G>, const N: usize, const G: usize>(law: &m
             }
         }
     }
+    capped
 }
 
 /// One classical Runge-Kutta step of length `h` from `(t, y)` with the drive `d0` at `t`:

@@ -77,11 +77,13 @@
 //! map and study, so the cut-off stays. With set-up, as a sweep runs it (the model prepared per
 //! point: coupled modes 20-25k, the time of maximum compression about 10k, step tables 8-11k a
 //! level, three levels built during the run), a sweep point over x, r and ks costs about 187,000
-//! instructions (195,000 before), the same impact at 30 deg with 2000 rpm 126,000 prepared
-//! (143,000): the tangential law follows 40-odd force pieces. Under the default law `loss`
-//! (issue 29: modes up to 100 times the contact frequency, [`MECHANISMS_RESOLUTION`]) the
-//! prepared oblique impact costs 236,000 instructions against 128,000 under `elastic`. The set-up does not depend on the
-//! incident speed, angle, azimuth, spin or friction, so an impact that differs from the one
+//! instructions (195,000 before), the same impact at 30 deg with 2000 rpm under `elastic`
+//! 126,000 prepared (143,000; 128,000 since issue 29): the tangential law follows 40-odd force
+//! pieces. Under the default law `loss` (issue 29: modes up to 100 times the contact
+//! frequency, [`MECHANISMS_RESOLUTION`]) the prepared oblique impact costs 236,000
+//! instructions. The set-up does not depend on the incident speed, angle, azimuth, spin or
+//! friction (but for the resolution, [`Resolution::of`]: normal or `elastic` impacts and
+//! oblique ones under a law with mechanisms have set-ups of their own), so an impact that differs from the one
 //! before on its thread only in those takes it as it is (`shared`, bit for bit the same model):
 //! a 1000-point sweep over x, r and v1 costs 123,000 instructions a point (136,000 before).
 //!
@@ -133,10 +135,12 @@ pub const DEFAULT_RESOLUTION: Resolution =
 /// `elastic`): modes up to 100 times the contact frequency. With the ball's damper and the
 /// sliding strings, the slide that starts every such impact ends where the rate of the normal
 /// force, within the first ten or so microseconds, meets what the springs can take up; modes
-/// above 50 times the contact frequency still shape that rate. Measured over the 150 random
-/// impacts of tests/oblique.rs (all four mechanisms): the worst fd/modal difference of the
-/// slip fraction is 1.0e-4 with the default cutoff, 7.9e-5 at 75 and 3.4e-5 at 100; the
-/// prepared modal impact of the benchmark under `loss` costs 8 % more instructions at 100.
+/// above 50 times the contact frequency still shape that rate. Measured over the 75 impacts of
+/// tests/oblique.rs that the test then ran under `physical` (all four mechanisms; the others of
+/// its 150 under `elastic`): the worst fd/modal difference of the slip fraction is 1.0e-4 with
+/// the default cutoff, 7.9e-5 at 75 and 3.4e-5 at 100 (impacts whose switch chatters at an edge
+/// aside: SPEC.md section 6, "Known limit"); the prepared modal impact of the benchmark under
+/// `loss` costs 8 % more instructions at 100.
 pub const MECHANISMS_RESOLUTION: Resolution = Resolution { mode_cutoff: 100.0, ..DEFAULT_RESOLUTION };
 
 impl Resolution {
@@ -189,7 +193,8 @@ impl ModalModel {
     }
 
     /// As [`ModalModel::new`] with a chosen resolution (for convergence studies). The set-up
-    /// that does not depend on the incident speed, angle, azimuth, spin or friction (the
+    /// that does not depend on the incident speed, angle, azimuth, spin or friction, given the
+    /// resolution (the
     /// retained modes, the coupled modes, the step tables) comes from this thread's cache when
     /// an impact of the same racket, point, strings and ball built it (`shared`).
     pub fn with_resolution(params: &Params, res: Resolution) -> Result<Self> {

@@ -2,8 +2,10 @@
 //! same racket, impact point, strings and ball: the retained coordinates (`w^2`, `w`, `g`), the
 //! truncated modes' static flexibility, the coupled modes of the compression phase and the time
 //! of maximum compression (per unit incident speed) and the step tables (per step length). None of them depends on the incident
-//! speed, angle, azimuth, spin or friction, so a sweep or an uncertainty run over those builds
-//! them once per impact point (the beam's own modes are shared more widely still, by racket,
+//! speed, angle, azimuth, spin or friction (but for the resolution, [`super::Resolution::of`]:
+//! an oblique or spinning impact under a law with mechanisms keeps more modes than a normal one
+//! or one under `elastic`, so those two kinds have set-ups of their own), so a sweep or an
+//! uncertainty run over those builds them once per impact point (the beam's own modes are shared more widely still, by racket,
 //! [`crate::model::basis`]).
 //!
 //! Each thread keeps the last set-up it built, keyed by the exact bits of everything it is

@@ -17,7 +17,7 @@ use rayon::prelude::*;
 
 use std::path::Path;
 
-use crate::diagnostic::{Diagnostic, Kind};
+use crate::diagnostic::Diagnostic;
 use crate::error::{Error, Result};
 use crate::params::{keys, limits, Overrides, Params};
 use run::Points;
@@ -137,7 +137,7 @@ impl Sweep {
     }
 
     /// The notes of this sweep over its `representatives` ([`Sweep::representatives`]), as
-    /// [`Kind::NotUsed`] diagnostics: one for each swept property none of the impacts
+    /// [`crate::diagnostic::Kind::NotUsed`] diagnostics: one for each swept property none of the impacts
     /// exercises (a method's option none of them can honour is refused, as for `simulate`,
     /// [`crate::params::used::is_refused`]), and one naming the keys of the `config` file that
     /// none of them uses ([`crate::study::unused_config_note`]).
@@ -145,17 +145,9 @@ impl Sweep {
         let mut noted = Vec::new();
         let swept: Vec<&str> = self.axes.iter().filter_map(|ax| keys::find(&ax.key).map(|s| s.key)).collect();
         for key in &swept {
-            if let Some((key, why)) = crate::params::used::first_unused(&[key], representatives) {
-                let values =
-                    self.axes.iter().find(|ax| ax.key == key).map(|ax| ax.values.join(",")).unwrap_or_default();
-                let field = keys::find(key).map_or("sweep", |s| s.key);
-                // (a property no point exercises is noted; a method's option refused, as for simulate)
-                if representatives.first().is_some_and(|p| crate::params::used::is_refused(key, p)) {
-                    return Err(Error::invalid(field, values, why));
-                }
-                let sentence = format!("--{field} {values} is not exercised by these impacts ({why})");
-                noted.push(Diagnostic::new(Kind::NotUsed, field, sentence));
-            }
+            let values =
+                |key: &str| self.axes.iter().find(|ax| ax.key == key).map(|ax| ax.values.join(",")).unwrap_or_default();
+            noted.extend(crate::study::unused_flag(key, values, representatives, ("sweep", "these impacts"))?);
         }
         if let Some(path) = config {
             let file = crate::study::config_file(Some(path))?;
