@@ -271,6 +271,11 @@ fn too_few_samples_warn_once_and_the_text_says_the_indices_mean_nothing() {
     assert!(text.contains("NOT MEANINGFUL at 1 base samples (fewer than 64)"), "{text}");
     let text = String::from_utf8(bin(&["uncertainty", "--claims", "--samples", "2"]).stdout).unwrap();
     assert!(text.contains("NOT MEANINGFUL at 2 base samples"), "{text}");
+    // and it is data: the JSON's diagnostics carry it (with --quiet too)
+    let json = bin(&["--quiet", "uncertainty", "--vary", "ks=uniform:2e4:6e4", "--samples", "1", "--format", "json"]);
+    let json: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    let told = json["diagnostics"].as_array().unwrap();
+    assert!(told.iter().any(|d| d["field"] == "samples" && d["kind"] == "unusual"), "{told:?}");
     // at the minimum: no warning, no remark
     let ok = bin(&["uncertainty", "--vary", "ks=uniform:2e4:6e4", "--samples", "64"]);
     assert!(!String::from_utf8(ok.stderr).unwrap().contains("warning:"));

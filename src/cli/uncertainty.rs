@@ -118,9 +118,6 @@ pub fn run(a: UncertaintyArgs) -> Result<()> {
         Format::Text => study.text(&outputs),
     };
     emit(a.out.as_ref(), &text)?;
-    if let Some(line) = few_samples(samples) {
-        warn(&line);
-    }
     print_diagnostics(&study.diagnostics());
     Ok(())
 }

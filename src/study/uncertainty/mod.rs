@@ -243,12 +243,15 @@ impl Study {
         Ok(fields.iter().zip(summaries).map(|(&(key, unit, _), summary)| Output { key, unit, summary }).collect())
     }
 
-    /// The study's diagnostics: its notes ([`Study::noted`]), its base parameters outside their
+    /// The study's diagnostics: too few samples for the indices to mean anything
+    /// ([`few_samples`]), its notes ([`Study::noted`]), its base parameters outside their
     /// usual ranges, but those drawn (their base value is not used: their draws are judged
     /// instead), and each input whose draws reach outside its usual range.
     pub fn diagnostics(&self) -> Vec<Diagnostic> {
         let drawn: Vec<&str> = self.inputs.iter().map(|i| i.key).collect();
-        let mut out = self.noted.clone();
+        let few = few_samples(self.design.samples() as u64).map(|s| Diagnostic::new(Kind::Unusual, "samples", s));
+        let mut out: Vec<Diagnostic> = few.into_iter().collect();
+        out.extend(self.noted.iter().cloned());
         out.extend(crate::study::diagnose::parameters([&self.base], &drawn));
         for input in &self.inputs {
             let line =
