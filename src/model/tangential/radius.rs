@@ -17,8 +17,7 @@
 //! forces and the measured compressions: it would take about 48.7 kN/m on concrete and 73.6 kN/m
 //! on strings, and the ITF static test (80 N for 5.6-7.4 mm, M035-M036, 11-14 kN/m) is softer
 //! still (SPEC.md section 6). The paper's `k1` = 3e4 N/m would give 9.7 mm on concrete at the
-//! model's force.
-//! section 6). The compression is capped at `R` (the lever never turns negative).
+//! model's force. The compression is capped at `R` (the lever never turns negative).
 
 /// The ball's compression law, from the normal force alone.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -62,5 +61,6 @@ mod tests {
         assert!((c.delta(300.0 * (1.0 - 1e-12), 300.0) - 0.01).abs() < 1e-12);
         assert!(c.delta(150.0, 300.0) > c.delta(150.0, 150.0));
         assert_eq!(c.delta(1e6, 1e6), 0.033);
+        assert!((c.contact_radius(0.033) - 0.033).abs() < 1e-15);
     }
 }
