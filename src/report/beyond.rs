@@ -142,6 +142,10 @@ fn against_measurement() -> Result<String> {
     let head: Vec<String> = laws.iter().map(|l| format!("`{}`", l.name())).collect();
     let rule = "---|".repeat(laws.len());
     let (dc, ds) = (drop_compression(1.0e12)?, drop_compression(ks_from_tension_lb(60.0))?);
+    // the inputs as the parameters and the experiment hold them
+    let ball = crate::params::Oblique::default();
+    let mut shot = Context::paper().paper_params(CENTRE_X, ks_from_tension_lb(60.0));
+    validation_spin::set_twu_shot(&mut shot);
     let mut s = format!(
         "\n### Against measurement\n\n\
          Experiment `validation_spin` (figures/validation_spin.{{csv,png}}) puts the model beside the \
@@ -152,9 +156,9 @@ fn against_measurement() -> Result<String> {
          (`data/strings`: the two nylons from a fuller copy of the database, the gut, which has no \
          friction row, from the median of the database's gut strings). The mechanisms' sizes are the \
          ball's measured behaviour in bounces that are not judged here (data/measured M079-M082, all \
-         read as quoted elsewhere): the tangential restitution of a gripping ball e_x = 0.135 \
+         read as quoted elsewhere): the tangential restitution of a gripping ball e_x = {ex} \
          (Cross 2002: 0.10-0.17) sets the damper of `loss`; the ball's dynamic stiffness \
-         7.9e4 N/m, the linear spring that a 100-inch drop on concrete would compress by the \
+         {kdyn} N/m, the linear spring that a 100-inch drop on concrete would compress by the \
          measured 6 mm (the model's normal force follows the paper's k1 law, whose peak at that \
          drop is lower, so the mechanisms compute {dc} mm on concrete and {ds} mm on 60 lb strings, \
          where 6 and about 3 mm are measured; no single linear law fits both), the lever of `radius` and the contact circle of \
@@ -163,13 +167,17 @@ fn against_measurement() -> Result<String> {
          later), while the paper's k1 keeps driving the normal force. No parameter is fitted to any judged row and no \
          constant is calibrated, so there is no leave-one-out to show (the tangential stiffness \
          2e4 N/m remains an estimate, 2/3 of k1, not a fit). Head-clamped racket (a frame too heavy \
-         to move), 25.03 m/s with 3820 rpm of backspin, at the centre; outgoing spin in rpm. The \
+         to move), {v1} m/s with {spin} rpm of backspin, at the centre; outgoing spin in rpm. The \
          angle is ambiguous: the TWU page says '40 degrees to the stringbed', which read from the \
          string plane is 50 deg from the normal, while the companion Cross and Lindsey (2011) study \
          states 40 deg from the normal (data/measured, row M001); both are computed, 40 deg in the \
          law columns and 50 deg in the last.\n\n",
         dc = fmt_sig(1e3 * dc, 2),
         ds = fmt_sig(1e3 * ds, 2),
+        ex = fmt_sig(ball.ball_ex, 3),
+        kdyn = format_args!("{:.1e}", ball.ball_kdyn),
+        v1 = fmt_sig(shot.impact.v1, 4),
+        spin = fmt_sig(-shot.oblique.spin_rpm, 4),
     );
     s.push_str(&format!(
         "| string | lb | measured | {} | `{default}` at 50 deg |\n|---|---|---|{rule}---|\n",
