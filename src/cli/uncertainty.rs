@@ -106,8 +106,9 @@ pub fn run(a: UncertaintyArgs) -> Result<()> {
     noted.extend(a.common.check_used([&base])?);
     let mut study = Study::new(base, &a.vary, samples, a.seed.unwrap_or(0))?;
     study.noted = noted;
-    if let Some(path) = &a.out {
-        racket_impact::render::io::check_output_dir("out", path)?;
+    match &a.out {
+        Some(path) => racket_impact::render::io::check_output_dir("out", path)?,
+        None => super::common::check_stdout()?,
     }
     let progress = Progress::new(study.design.runs() as u64);
     let outputs = study.run(|done| progress.update(done as u64))?;
@@ -140,8 +141,9 @@ fn run_claims(a: UncertaintyArgs) -> Result<()> {
     let seed = a.seed.unwrap_or(robustness::SEED);
     let inputs = robustness::inputs();
     let design = Design::new(samples, inputs.len(), seed)?;
-    if let Some(path) = &a.out {
-        racket_impact::render::io::check_output_dir("out", path)?;
+    match &a.out {
+        Some(path) => racket_impact::render::io::check_output_dir("out", path)?,
+        None => super::common::check_stdout()?,
     }
     let progress = Progress::new(design.runs() as u64);
     let rows = robustness::study(&racket_impact::experiments::Context::paper(), samples, seed, false, |done| {
