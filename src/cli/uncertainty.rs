@@ -49,22 +49,23 @@ pub fn long_about() -> String {
     let oblique: Vec<String> = keys::uncertain().filter(|s| !claims.contains(&s.key)).filter_map(line).collect();
     format!(
         "An impact's result fields under uncertain inputs, or every paper claim under the declared uncertainty\n\n\
+         Example: racket-impact uncertainty --x 0.06 --vary ks=uniform:2e4:6e4 --vary mb=normal:0.057:0.0005\n\n\
          Every simulate option sets the fixed parameters; each --vary KEY=DIST draws one input. The impact \
-         runs N (d + 2) times over a Saltelli design (scrambled Sobol' sequence, deterministic for --seed) on \
-         all cores, with the modal solver unless --solver is given or a hand grip or stiffening strings need \
-         fd. For every numeric result field: mean, sd, q05, q50, q95, and each input's first-order (Saltelli \
+         runs N (d + 2) times for d inputs, over a Saltelli design (scrambled Sobol' sequence, deterministic for \
+         --seed), on all cores, with the modal solver unless --solver is given or a hand grip or stiffening \
+         strings need fd.\n\n\
+         Output, for every numeric result field: mean, sd, q05, q50, q95, and each input's first-order (Saltelli \
          2010) and total (Jansen) Sobol' index with 95 % bootstrap intervals. --format json gives \
          {{\"samples\", \"seed\", \"inputs\", \"outputs\": {{field: {{\"mean\", \"sd\", \"q05\", \"q50\", \"q95\", \
-         \"first_order\", \"total_order\", \"first_order_ci\", \"total_order_ci\"}}}}}}. An input whose draws reach \
-         outside the usual range simulate warns with (a uniform's or log-uniform's bounds; a normal's mean +- 3 sd) \
-         earns one warning line. Example: racket-impact \
-         uncertainty --x 0.06 --vary ks=uniform:2e4:6e4 --vary mb=normal:0.057:0.0005 --format json\n\n\
+         \"first_order\", \"total_order\", \"first_order_ci\", \"total_order_ci\"}}}}}}.\n\n\
+         Warnings: an input whose draws reach outside the usual range simulate warns with (a uniform's or \
+         log-uniform's bounds; a normal's mean +- 3 sd) earns one warning line.\n\n\
          With --claims: each paper claim (golden/paper_claims.csv) under the uncertainties declared with the \
-         parameters, drawn as factors on the paper's values: {}\n\n\
+         parameters, drawn as factors on the paper's values:\n  {}\n\n\
          --vary KEY without a distribution draws the one declared with the parameter: those above, and for an \
-         oblique or spinning ball: {}",
-        declared.join("; "),
-        oblique.join("; ")
+         oblique or spinning ball:\n  {}",
+        declared.join("\n  "),
+        oblique.join("\n  ")
     )
 }
 
