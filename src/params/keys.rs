@@ -179,7 +179,7 @@ declare_params! {
     BALL_KDYN ball_kdyn: f64 = "ball-kdyn" at oblique.ball_kdyn,
         what "ball dynamic compression stiffness", unit "N/m", column "ball_kdyn_n_per_m", within(1.0e3, 1.0e9),
         under Ball, Property, used In(&TANGENTIAL, &["radius", "offset"]), usual(1.0e4, 3.0e5),
-        uncertain(Dist::Uniform { lo: super::drop::kdyn_from_drop(0.057, 0.007), hi: super::drop::kdyn_from_drop(0.057, 0.005) }, super::drop::BALL_KDYN, "data/measured M081: a 100-inch drop on concrete compresses the ball 'about 6 mm' (Cross's tennis pages, as summarised in public notes); 5-7 mm (assumed for 'about') through k = m_b 2 g h / d^2 with the paper's 57 g");
+        uncertain(Dist::Uniform { lo: super::drop_test::kdyn_from_drop(0.057, 0.007), hi: super::drop_test::kdyn_from_drop(0.057, 0.005) }, super::drop_test::BALL_KDYN, "data/measured M081: a 100-inch drop on concrete compresses the ball 'about 6 mm' (Cross's tennis pages, as summarised in public notes); 5-7 mm (assumed for 'about') through k = m_b 2 g h / d^2 with the paper's 57 g");
 }
 
 /// The impact point a new user expects when none is given: the centre of the string face on
@@ -302,6 +302,25 @@ mod tests {
         // every heading holds a parameter
         for heading in Heading::ALL {
             assert!(ALL.iter().any(|s| s.heading == heading), "{heading:?}");
+        }
+    }
+
+    #[test]
+    fn every_declared_range_is_checked_by_the_validation() {
+        // a row's range holds only if the struct holding the value checks it: a value beyond it
+        // is refused, naming the key
+        for spec in ALL.iter().filter(|s| matches!(s.check, Check::Within(..))) {
+            let (_, hi) = spec.range();
+            let mut o = Overrides::default();
+            o.set(spec.key, &(hi + hi.abs() + 1.0).to_string()).unwrap();
+            let mut p = Params::default();
+            o.apply(&mut p);
+            let e = p.validate().map_err(|e| e.to_string());
+            assert!(
+                e.as_ref().is_err_and(|e| e.starts_with(&format!("invalid {} =", spec.key))),
+                "{}: {e:?}",
+                spec.key
+            );
         }
     }
 

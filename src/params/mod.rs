@@ -13,7 +13,7 @@
 //! - [`numerics`]: segments, load rule, time step, solver.
 //! - [`variants`]: frame model, grip, string law.
 //! - [`oblique`]: incidence angle, azimuth, incoming spin, friction (beyond the paper).
-//! - [`drop`]: the drop test the ball's values are read from (gravity, the 100-inch height, the
+//! - [`drop_test`]: the drop test the ball's values are read from (gravity, the 100-inch height, the
 //!   stiffness a drop's compression implies).
 //! - [`spec`] and [`keys`]: what a declaration is, and the declarations.
 //! - [`overrides`]: the `--config` file.
@@ -27,7 +27,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::Result;
 
-pub mod drop;
+pub mod drop_test;
 pub mod inputs;
 pub mod keys;
 pub mod limits;
@@ -41,7 +41,7 @@ pub mod uncertainty;
 pub mod used;
 pub mod variants;
 
-pub use drop::{drop_speed, DROP_HEIGHT_100_IN, G};
+pub use drop_test::{drop_speed, DROP_HEIGHT_100_IN, G};
 pub use keys::Overrides;
 pub use numerics::{check_segments, LoadRule, Numerics, SolverKind, MAX_SEGMENTS, MIN_SEGMENTS};
 pub use oblique::Oblique;

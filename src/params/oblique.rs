@@ -4,7 +4,7 @@
 
 use serde::{Deserialize, Serialize};
 
-pub use super::drop::{kdyn_from_drop, BALL_KDYN};
+pub use super::drop_test::{kdyn_from_drop, BALL_KDYN};
 use super::keys;
 use super::{StringName, TangentialLaw};
 use crate::error::{Error, Result};

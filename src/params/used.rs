@@ -1,5 +1,5 @@
 //! Which impacts use a parameter, read from its declaration ([`UsedWhen`] in
-//! [`keys`](super::keys)), and what a value given for one an impact does not use is told, from
+//! [`keys`]), and what a value given for one an impact does not use is told, from
 //! its [`Role`]: a property of the racket, ball, strings or shot that the impact does not
 //! exercise is accepted with one note; an option of a method that the chosen method cannot honour
 //! is refused. The same rule holds for a flag, a config file's key, a swept axis and an
