@@ -69,7 +69,10 @@ fn make_test_without_nextest_falls_back_to_cargo_test() {
     let dir = cargo_without_nextest();
     let plan = planned(Some(dir.path()));
     let commands = cargo_commands(&plan);
-    assert!(!commands.iter().any(|c| c.first() == Some(&"nextest")), "without nextest, make test must not call it:\n{plan:?}");
+    assert!(
+        !commands.iter().any(|c| c.first() == Some(&"nextest")),
+        "without nextest, make test must not call it:\n{plan:?}"
+    );
     assert!(commands.iter().any(|c| is(c, &["test"], &["--locked", "--doc"])), "{plan:?}");
     let suite = ["--locked", "--no-fail-fast", "--lib", "--bins", "--tests"];
     assert!(commands.iter().any(|c| is(c, &["test"], &suite)), "{plan:?}");

@@ -241,7 +241,10 @@ mod tests {
             ((p.0 - q.0).powi(2) + (p.1 - q.1).powi(2) + (p.2 - q.2).powi(2)).sqrt()
         };
         assert!(de(PALETTE[1], PALETTE[4]) < MIN_DELTA_E, "the threshold separates orange from vermillion");
-        assert!(de(PALETTE[2], tint(PALETTE[5], crate::render::plot::FAINT_TINT)) < MIN_DELTA_E, "and faint blue from sky blue");
+        assert!(
+            de(PALETTE[2], tint(PALETTE[5], crate::render::plot::FAINT_TINT)) < MIN_DELTA_E,
+            "and faint blue from sky blue"
+        );
         let ctx = Context::paper();
         let mut failures = Vec::new();
         for exp in registry() {

@@ -323,8 +323,8 @@ pub(crate) fn font(size: f64, style: FontStyle) -> TextStyle<'static> {
 }
 
 /// The smallest size a chart's title is drawn at before it is broken in two: a title that does
-/// not fit one line at [`TITLE_SIZE`] is laid out on two ([`title_layout`]) rather than shrunk
-/// below this.
+/// not fit one line at the full title size (30 px) is laid out on two ([`title_layout`])
+/// rather than shrunk below this.
 pub const MIN_TITLE_SIZE: f64 = 24.0;
 
 /// Whether `text` fits the image width (with a margin) in bold at `size` pixels.
@@ -333,10 +333,10 @@ fn title_fits(text: &str, size: f64) -> bool {
     font(size, FontStyle::Bold).font.box_size(text).is_ok_and(|(w, _)| w <= max_width)
 }
 
-/// How a chart's title is drawn: its lines and their size in pixels. One line at [`TITLE_SIZE`]
-/// (shrunk down to [`MIN_TITLE_SIZE`]) where it fits; else two lines at the largest size that
+/// How a chart's title is drawn: its lines and their size in pixels. One line at the full size
+/// (30 px, shrunk down to [`MIN_TITLE_SIZE`]) where it fits; else two lines at the largest size that
 /// fits both, broken after a `:` (else a `;`, else a `,`, else a space) nearest the middle; a
-/// title too long even for that is shrunk on its two lines down to [`TICK_SIZE`].
+/// title too long even for that is shrunk on its two lines down to the tick labels' size.
 pub fn title_layout(title: &str) -> (Vec<String>, f64) {
     // (the text is measured in the bundled font)
     fonts_registered();
