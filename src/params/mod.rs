@@ -44,6 +44,7 @@ pub(crate) use overrides::{parse_toml, read_file};
 pub use physical::{
     ellipse_half_width, Ball, Impact, Profile, Racket, Strings, DEFAULT_FACE_LENGTH, STIFFNESS_REL, TILT_MAX,
 };
+pub(crate) use variants::tangential_mechanisms;
 pub use variants::{Frame, Grip, StringLaw, StringName, TangentialLaw, Variants};
 
 /// Acceleration of gravity used for drop tests, m/s^2.

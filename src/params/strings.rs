@@ -8,7 +8,7 @@ use std::sync::OnceLock;
 use serde::Deserialize;
 
 use super::spec::FlagValue;
-use super::{Oblique, StringName, TangentialLaw};
+use super::{Oblique, StringName};
 use crate::error::{Error, Result};
 
 /// The table as shipped.
@@ -94,11 +94,8 @@ pub fn missing_data_note(o: &Oblique) -> Option<String> {
     let e = entry(o.string)?;
     (!o.is_normal() && e.friction_from != FrictionFrom::Entry).then(|| {
         // mu-ss only where the law uses it (bed, physical)
-        let mu_ss = if o.tangential.has(TangentialLaw::Bed) {
-            format!(" and mu-ss {} (string/string)", e.mu_ss)
-        } else {
-            String::new()
-        };
+        let mu_ss =
+            if o.tangential.reads("mu-ss") { format!(" and mu-ss {} (string/string)", e.mu_ss) } else { String::new() };
         format!(
             "string {}: no friction data of its own in the TWU database ({} has no String/Ball or String/String COF), \
              so the median of the database's {} strings: mu {} (ball/string){mu_ss}",
@@ -150,6 +147,7 @@ pub fn refuse_if_set(name: StringName, key: &'static str) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::params::TangentialLaw;
 
     #[test]
     fn every_name_has_its_row_and_every_row_its_name() {

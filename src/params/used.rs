@@ -20,34 +20,29 @@ pub fn is_refused(key: &str, params: &Params) -> bool {
         {
             false
         }
-        "mu-ss" | "ball-ex" | "ball-kdyn" if params.oblique.is_normal() => false,
+        k if params.oblique.is_normal() && TangentialLaw::readers(k).next().is_some() => false,
         "half-width" | "ix" if impact_only => false,
         _ => true,
     }
 }
 
+/// Why a parameter of the tangential contact is not used at normal incidence.
+const OBLIQUE_ONLY: &str =
+    "used only for an oblique or spinning ball (at normal incidence without spin no tangential force acts)";
+
 /// Why the impact `params` does not use parameter `key`, or `None` if it does.
 pub fn unused_reason(key: &str, params: &Params) -> Option<&'static str> {
     let v = &params.variants;
     match key {
-        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string" | "mu-ss"
-        | "ball-ex" | "ball-kdyn"
+        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string"
             if params.oblique.is_normal() =>
         {
-            Some(
-                "used only for an oblique or spinning ball (at normal incidence without spin no tangential force acts)",
-            )
+            Some(OBLIQUE_ONLY)
         }
-        "mu-ss" if !params.oblique.tangential.has(TangentialLaw::Bed) => {
-            Some("used only by the tangential laws bed and physical (strings sliding over each other)")
-        }
-        "ball-ex" if !params.oblique.tangential.has(TangentialLaw::Loss) => {
-            Some("used only by the tangential laws loss and physical (the damper on the ball's tangential spring)")
-        }
-        "ball-kdyn" if !params.oblique.tangential.has(TangentialLaw::Radius)
-            && !params.oblique.tangential.has(TangentialLaw::Offset) =>
-        {
-            Some("used only by the tangential laws radius, offset and physical (the ball's compression under the normal force)")
+        // a parameter of a mechanism (the keys of the registry, `tangential_mechanisms!`)
+        k if params.oblique.is_normal() && TangentialLaw::readers(k).next().is_some() => Some(OBLIQUE_ONLY),
+        k if TangentialLaw::readers(k).next().is_some() && !params.oblique.tangential.reads(k) => {
+            Some(mechanism_only(k))
         }
         "hand-stiffness" | "hand-damping" | "grip-length" if v.grip != Grip::Hand => Some("used only with grip = hand"),
         "string-stiffening" | "stiffening-deflection" if v.strings != StringLaw::Stiffening => {
@@ -65,6 +60,23 @@ pub fn unused_reason(key: &str, params: &Params) -> Option<&'static str> {
         }
         _ => None,
     }
+}
+
+/// Why a parameter that only some tangential laws read is not used: the laws that read it
+/// (from the registry of mechanisms, `tangential_mechanisms!`).
+fn mechanism_only(key: &str) -> &'static str {
+    static REASONS: std::sync::OnceLock<Vec<(&'static str, String)>> = std::sync::OnceLock::new();
+    let reasons = REASONS.get_or_init(|| {
+        let read = super::keys::ALL.iter().map(|s| s.key).filter(|&k| TangentialLaw::readers(k).next().is_some());
+        read.into_iter()
+            .map(|k| {
+                let laws: Vec<&str> = TangentialLaw::readers(k).map(|l| l.name()).collect();
+                let (last, rest) = laws.split_last().expect("a key some law reads");
+                (k, format!("used only by the tangential laws {} and {last}", rest.join(", ")))
+            })
+            .collect()
+    });
+    reasons.iter().find(|(k, _)| *k == key).map_or("not used by this tangential law", |(_, why)| why.as_str())
 }
 
 /// The first of `keys` that none of the impacts `params` uses, with the reason (for the

@@ -62,21 +62,51 @@ choice_enum! {
     }
 }
 
-choice_enum! {
-    /// The tangential contact law of an oblique or spinning impact (SPEC.md section 6): the
-    /// elastic grip-slip law, one mechanism of [`crate::model::tangential`] on top of it, or all four.
-    /// Default `loss`: of the laws compared with measurement (`validation_spin`) the one closer
-    /// than `elastic` on the spin table (both angle readings), the hand-held ratio and the
-    /// grip-stop angle, and a tie on the tour forehand (REPORT.md, "Against measurement").
-    TangentialLaw (default Loss) {
-        Elastic = "elastic": "The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)",
-        Loss = "loss": "Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex; the default)",
-        Offset = "offset": "Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin",
-        Bed = "bed": "Elastic plus strings that slide sideways over each other against string-to-string friction and snap back",
-        Radius = "radius": "Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)",
-        Physical = "physical": "All four mechanisms",
-    }
+/// The registry of the tangential mechanisms (`crate::model::tangential`), one line each, in
+/// the order of their `--tangential` choices:
+/// `Variant = "name" module::Type ["parameter key", ...]: "help",` (the type in its own file of
+/// `model/tangential/`, the keys of the parameters that size it). It hands the list to the macro
+/// `$then`: the law's choices here ([`TangentialLaw`]), the composition of the combined law in
+/// `model/tangential/combined.rs`.
+macro_rules! tangential_mechanisms {
+    ($then:ident) => {
+        $then! {
+            Loss = "loss" loss::Loss ["ball-ex"]: "Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex; the default)",
+            Offset = "offset" offset::Offset ["ball-kdyn"]: "Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin",
+            Bed = "bed" bed::Bed ["mu-ss"]: "Elastic plus strings that slide sideways over each other against string-to-string friction and snap back",
+            Radius = "radius" radius::Radius ["ball-kdyn"]: "Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)",
+        }
+    };
 }
+pub(crate) use tangential_mechanisms;
+
+/// The tangential laws from the registry of mechanisms ([`tangential_mechanisms`]):
+/// the elastic law, each mechanism alone on top of it, and all of them.
+macro_rules! tangential_law {
+    ($($variant:ident = $key:literal $module:ident::$ty:ident [$($reads:literal),*]: $help:literal,)+) => {
+        choice_enum! {
+            /// The tangential contact law of an oblique or spinning impact (SPEC.md section 6): the
+            /// elastic grip-slip law, one mechanism of [`crate::model::tangential`] on top of it, or all of them.
+            /// Default `loss`: of the laws compared with measurement (`validation_spin`) the one closer
+            /// than `elastic` on the spin table (both angle readings), the hand-held ratio and the
+            /// grip-stop angle, and a tie on the tour forehand (REPORT.md, "Against measurement").
+            TangentialLaw (default Loss) {
+                Elastic = "elastic": "The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)",
+                $($variant = $key: $help,)+
+                Physical = "physical": "All four mechanisms",
+            }
+        }
+
+        impl TangentialLaw {
+            /// Each mechanism with the parameter keys that size it (its `KEYS`).
+            const READS: &'static [(TangentialLaw, &'static [&'static str])] = &[
+                $((TangentialLaw::$variant, &[$($reads),*]),)+
+            ];
+        }
+    };
+}
+
+tangential_mechanisms!(tangential_law);
 
 choice_enum! {
     /// The string in the racket, from the string table (data/strings, [`super::strings`]): its
@@ -97,6 +127,17 @@ impl TangentialLaw {
     /// Whether the law includes the mechanism `m` (one of the single-mechanism choices).
     pub fn has(self, m: TangentialLaw) -> bool {
         self == m || (self == TangentialLaw::Physical && m != TangentialLaw::Elastic)
+    }
+
+    /// Whether a mechanism of this law reads the parameter `key`.
+    pub fn reads(self, key: &str) -> bool {
+        Self::READS.iter().any(|(m, keys)| self.has(*m) && keys.contains(&key))
+    }
+
+    /// The laws that read the parameter `key` (none if no mechanism does), in the order of the
+    /// choices.
+    pub fn readers(key: &str) -> impl Iterator<Item = TangentialLaw> + '_ {
+        Self::ALL.into_iter().filter(move |l| l.reads(key))
     }
 }
 

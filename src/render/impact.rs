@@ -47,16 +47,15 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
             fmt_sig(o.ball_inertia_factor, 6)
         ));
         // the law, with only the parameters it uses
-        use crate::params::TangentialLaw as Law;
         let law = o.tangential;
         let mut used = Vec::new();
-        if law.has(Law::Bed) {
+        if law.reads("mu-ss") {
             used.push(format!("mu-ss {}", fmt_sig(o.mu_ss, 6)));
         }
-        if law.has(Law::Loss) {
+        if law.reads("ball-ex") {
             used.push(format!("ball-ex {}", fmt_sig(o.ball_ex, 6)));
         }
-        if law.has(Law::Radius) || law.has(Law::Offset) {
+        if law.reads("ball-kdyn") {
             used.push(format!("ball-kdyn {} N/m", fmt_sig(o.ball_kdyn, 6)));
         }
         if let Some(e) = crate::params::strings::entry(o.string) {
