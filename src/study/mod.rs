@@ -7,6 +7,7 @@
 
 pub mod diagnose;
 pub mod map;
+pub mod measured;
 pub mod sensitivity;
 pub mod speed;
 pub mod sweep;
