@@ -8,7 +8,7 @@ use std::sync::OnceLock;
 use serde::Deserialize;
 
 use super::spec::FlagValue;
-use super::{Oblique, StringName};
+use super::{Oblique, StringName, TangentialLaw};
 use crate::error::{Error, Result};
 
 /// The table as shipped.
@@ -94,8 +94,11 @@ pub fn missing_data_note(o: &Oblique) -> Option<String> {
     let e = entry(o.string)?;
     (!o.is_normal() && e.friction_from != FrictionFrom::Entry).then(|| {
         // mu-ss only where the law uses it (bed, physical)
-        let mu_ss =
-            if o.tangential.reads("mu-ss") { format!(" and mu-ss {} (string/string)", e.mu_ss) } else { String::new() };
+        let mu_ss = if o.tangential.has(TangentialLaw::Bed) {
+            format!(" and mu-ss {} (string/string)", e.mu_ss)
+        } else {
+            String::new()
+        };
         format!(
             "string {}: no friction data of its own in the TWU database ({} has no String/Ball or String/String COF), \
              so the median of the database's {} strings: mu {} (ball/string){mu_ss}",
@@ -111,13 +114,13 @@ pub fn entry(name: StringName) -> Option<&'static StringEntry> {
 
 /// The string named `text` (a racket file's `string`), or a one-line refusal listing the names.
 pub fn parse(text: &str) -> Result<StringName> {
-    StringName::parse_flag("string", text)
+    StringName::parse_flag(super::keys::STRING.key, text)
 }
 
 /// Write the named string's friction coefficients into `o` (so that what is shown is what is
 /// used), refusing a `mu` or `mu-ss` given beside a string whose table entry sets it.
 pub fn apply(o: &mut Oblique, mu_given: bool, mu_ss_given: bool) -> Result<()> {
-    for (key, given) in [("mu", mu_given), ("mu-ss", mu_ss_given)] {
+    for (key, given) in [(super::keys::MU.key, mu_given), (super::keys::MU_SS.key, mu_ss_given)] {
         if given {
             refuse_if_set(o.string, key)?;
         }
@@ -130,7 +133,7 @@ pub fn apply(o: &mut Oblique, mu_given: bool, mu_ss_given: bool) -> Result<()> {
 /// `mu-ss`): a value given for that key beside it would never be used.
 pub fn sets(name: StringName, key: &str) -> Option<&'static str> {
     let e = entry(name)?;
-    matches!(key, "mu" | "mu-ss").then_some(e.id.as_str())
+    [super::keys::MU.key, super::keys::MU_SS.key].contains(&key).then_some(e.id.as_str())
 }
 
 /// Refuse a friction `key` given (as a flag, a config key or a swept axis) beside a string
@@ -147,7 +150,6 @@ pub fn refuse_if_set(name: StringName, key: &'static str) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::params::TangentialLaw;
 
     #[test]
     fn every_name_has_its_row_and_every_row_its_name() {

@@ -64,17 +64,18 @@ choice_enum! {
 
 /// The registry of the tangential mechanisms (`crate::model::tangential`), one line each, in
 /// the order of their `--tangential` choices:
-/// `Variant = "name" module::Type ["parameter key", ...]: "help",` (the type in its own file of
-/// `model/tangential/`, the keys of the parameters that size it). It hands the list to the macro
+/// `Variant = "name" module::Type: "help",` (the type in its own file of `model/tangential/`;
+/// the parameters that size it say so in their declarations, `used In(&TANGENTIAL, ..)` in
+/// [`keys`]). It hands the list to the macro
 /// `$then`: the law's choices here ([`TangentialLaw`]), the composition of the combined law in
 /// `model/tangential/combined.rs`.
 macro_rules! tangential_mechanisms {
     ($then:ident) => {
         $then! {
-            Loss = "loss" loss::Loss ["ball-ex"]: "Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex; the default)",
-            Offset = "offset" offset::Offset ["ball-kdyn"]: "Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin",
-            Bed = "bed" bed::Bed ["mu-ss"]: "Elastic plus strings that slide sideways over each other against string-to-string friction and snap back",
-            Radius = "radius" radius::Radius ["ball-kdyn"]: "Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)",
+            Loss = "loss" loss::Loss: "Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex; the default)",
+            Offset = "offset" offset::Offset: "Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin",
+            Bed = "bed" bed::Bed: "Elastic plus strings that slide sideways over each other against string-to-string friction and snap back",
+            Radius = "radius" radius::Radius: "Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)",
         }
     };
 }
@@ -83,7 +84,7 @@ pub(crate) use tangential_mechanisms;
 /// The tangential laws from the registry of mechanisms ([`tangential_mechanisms`]):
 /// the elastic law, each mechanism alone on top of it, and all of them.
 macro_rules! tangential_law {
-    ($($variant:ident = $key:literal $module:ident::$ty:ident [$($reads:literal),*]: $help:literal,)+) => {
+    ($($variant:ident = $key:literal $module:ident::$ty:ident: $help:literal,)+) => {
         choice_enum! {
             /// The tangential contact law of an oblique or spinning impact (SPEC.md section 6): the
             /// elastic grip-slip law, one mechanism of [`crate::model::tangential`] on top of it, or all of them.
@@ -97,12 +98,6 @@ macro_rules! tangential_law {
             }
         }
 
-        impl TangentialLaw {
-            /// Each mechanism with the parameter keys that size it (its `KEYS`).
-            const READS: &'static [(TangentialLaw, &'static [&'static str])] = &[
-                $((TangentialLaw::$variant, &[$($reads),*]),)+
-            ];
-        }
     };
 }
 
@@ -129,16 +124,6 @@ impl TangentialLaw {
         self == m || (self == TangentialLaw::Physical && m != TangentialLaw::Elastic)
     }
 
-    /// Whether a mechanism of this law reads the parameter `key`.
-    pub fn reads(self, key: &str) -> bool {
-        Self::READS.iter().any(|(m, keys)| self.has(*m) && keys.contains(&key))
-    }
-
-    /// The laws that read the parameter `key` (none if no mechanism does), in the order of the
-    /// choices.
-    pub fn readers(key: &str) -> impl Iterator<Item = TangentialLaw> + '_ {
-        Self::ALL.into_iter().filter(move |l| l.reads(key))
-    }
 }
 
 choice_enum! {
@@ -216,14 +201,14 @@ impl Variants {
         let nonlinear = self.strings == StringLaw::Stiffening || self.grip == Grip::Hand;
         if nonlinear && self.frame == Frame::Rigid {
             return Err(Error::invalid(
-                "frame",
+                keys::FRAME.key,
                 "rigid",
                 "must be beam with stiffening strings or a hand grip (the rigid frame is the closed-form limit for linear strings and a free racket)",
             ));
         }
         if nonlinear && solver == SolverKind::Modal {
             return Err(Error::invalid(
-                "solver",
+                keys::SOLVER.key,
                 "modal",
                 "must be fd with stiffening strings or a hand grip (the modal solver needs a linear, undamped system)",
             ));

@@ -94,7 +94,7 @@ trait Remode {
 /// Declares, from the registry (`tangential_mechanisms!`), the mechanisms of a law, their modes
 /// and drives, where each sits, and the two ways to go over them.
 macro_rules! compose {
-    ($($variant:ident = $key:literal $module:ident::$ty:ident [$($reads:literal),*]: $help:literal,)+) => {
+    ($($variant:ident = $key:literal $module:ident::$ty:ident: $help:literal,)+) => {
         /// The mechanisms of a law, each `None` while it is off.
         #[derive(Debug, Clone, Copy)]
         pub struct Mechanisms {

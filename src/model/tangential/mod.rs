@@ -34,10 +34,10 @@
 //!   its state slots and their rates, its mode with its guard and switch, its springs' energy
 //!   and where its loss is reported; every term it leaves out is neutral;
 //! - **its line** in the registry: its `TangentialLaw` variant, its `--tangential` name, its
-//!   type, the parameter keys that size it and its help line. The variant, the choice on the
-//!   command line, `physical` (every mechanism), the notes on flags a law does not use, its
-//!   state and its guard in the combined law all follow from it (and its `pub mod` line here,
-//!   which Rust needs for any file).
+//!   type and its help line. The variant, the choice on the command line, `physical` (every
+//!   mechanism), its state and its guard in the combined law all follow from it (and its
+//!   `pub mod` line here, which Rust needs for any file). A parameter it reads says so in its
+//!   own declaration (`used In(&TANGENTIAL, ...)` in `params/keys.rs`).
 //!
 //! The combined law, the stepper, the solvers and the result's ledger are untouched. A loss with
 //! no result field of its own ([`mechanism::LossField::LedgerOnly`]) is checked in the energy
