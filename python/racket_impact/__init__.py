@@ -28,6 +28,7 @@ import inspect
 import json
 import numbers
 import os
+import sys
 import warnings
 from typing import Any, NamedTuple
 
@@ -126,10 +127,16 @@ _WARNINGS = {
 
 
 def _warn(diagnostics: list[dict[str, str]]) -> None:
-    """Each diagnostic as a warning, pointing at the caller's line."""
+    """Each diagnostic as a warning, pointing at the line that called into this package."""
+    level, frame = 1, sys._getframe(0)
+    while frame is not None and os.path.dirname(frame.f_code.co_filename) == _HERE:
+        frame, level = frame.f_back, level + 1
     for d in diagnostics:
         cls = _WARNINGS.get(d["kind"], RacketImpactWarning)
-        warnings.warn(cls(d["sentence"], d["kind"], d["field"]), stacklevel=3)
+        warnings.warn(cls(d["sentence"], d["kind"], d["field"]), stacklevel=level)
+
+
+_HERE = os.path.dirname(__file__)
 
 
 # --- arguments ------------------------------------------------------------------------------
@@ -280,7 +287,9 @@ def _axis(p: dict[str, Any], values: Any) -> Any:
         return values
     if isinstance(values, (numbers.Number, bool)) or np.ndim(values) == 0:
         return [_text(p, values.item() if isinstance(values, np.generic) else values)]
-    items = list(np.asarray(values, dtype=object).ravel()) if isinstance(values, np.ndarray) else list(values)
+    if np.ndim(values) != 1:
+        raise TypeError(f"{p['name']} takes one value, a list of values or a spec string, not a {np.ndim(values)}-d array")
+    items = list(np.asarray(values, dtype=object)) if isinstance(values, np.ndarray) else list(values)
     if p["kind"] == "number" and items and all(
         isinstance(v, numbers.Real) and not isinstance(v, bool) for v in items
     ):

@@ -259,6 +259,8 @@ fn sweep(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<(Py<PyAny>, Stri
         pairs.push(axis_spec(value)?);
     }
     let config = config.map(std::path::PathBuf::from);
+    // a signal (Ctrl-C in a notebook) stops the sweep after the chunk it arrives in
+    let mut interrupted: Option<PyErr> = None;
     let run = || -> racket_impact::Result<(Vec<String>, Vec<Column>, Vec<racket_impact::diagnostic::Diagnostic>)> {
         let sweep = Sweep::from_pairs(racket.as_deref(), config.as_deref(), &pairs)?;
         let representatives = sweep.representatives()?;
@@ -276,6 +278,10 @@ fn sweep(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<(Py<PyAny>, Stri
                         push(column, cell);
                     }
                 }
+                if let Err(e) = Python::attach(|py| py.check_signals()) {
+                    interrupted = Some(e);
+                    return Err(racket_impact::Error::invalid("sweep", "(interrupted)", "stopped by a signal"));
+                }
                 Ok(())
             },
             |_| {},
@@ -289,7 +295,11 @@ fn sweep(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<(Py<PyAny>, Stri
         let diagnostics = sweep::diagnostics(&noted, &representatives, theta.unwrap_or(0.0));
         Ok((header, columns, diagnostics))
     };
-    let (header, columns, diagnostics) = py.detach(run).map_err(fail)?;
+    let outcome = py.detach(run);
+    if let Some(e) = interrupted {
+        return Err(e);
+    }
+    let (header, columns, diagnostics) = outcome.map_err(fail)?;
     let diagnostics = serde_json::to_value(&diagnostics).map_err(|e| PyValueError::new_err(e.to_string()))?;
     Ok((columns_py(py, header, columns)?, json_text(&diagnostics)?))
 }

@@ -111,3 +111,8 @@ def test_racket_files_and_experiments(tmp_path):
     assert str(e.value) == cli_error("figures", "--only", "fig99", "--out", tmp_path / "f")
     with pytest.raises(ValueError):
         ri.presets(segments=2)
+
+
+def test_a_sweep_axis_is_one_dimensional():
+    with pytest.raises(TypeError, match="x takes one value, a list of values or a spec string, not a 2-d array"):
+        ri.sweep(x=np.ones((2, 2)))

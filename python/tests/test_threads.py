@@ -46,3 +46,29 @@ def test_two_threads_sweep_at_once():
         t.join()
     for ks, frame in expected.items():
         assert results[ks].equals(frame), ks
+
+
+def test_ctrl_c_stops_a_long_sweep():
+    import _thread
+    import time
+
+    x = np.linspace(0.02, 0.6, 1000)
+    # the processor time of 1e4 impacts, then of a 1e6-impact sweep interrupted (a simulated
+    # Ctrl-C) 0.3 s in: the sweep stops after the chunk the signal arrives in, long before the
+    # hundred times 1e4 impacts it would otherwise run
+    ri.sweep(x=x[:100], ks=np.linspace(2e4, 6e4, 100))  # (warm: the modes are computed once)
+    start = time.process_time()
+    ri.sweep(x=x[:100], ks=np.linspace(2e4, 6e4, 100))
+    small = time.process_time() - start
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    start = time.process_time()
+    timer.start()
+    try:
+        ri.sweep(x=x, ks=np.linspace(2e4, 6e4, 1000))
+        raise AssertionError("no KeyboardInterrupt")
+    except KeyboardInterrupt:
+        pass
+    finally:
+        timer.cancel()
+    spent = time.process_time() - start
+    assert spent < 0.5 * 100 * small, (spent, small)
