@@ -7,18 +7,18 @@
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use racket_impact::experiments;
 use racket_impact::params::{LoadRule, Params};
-use racket_impact::solve::{simulate, Model};
+use racket_impact::solve::{simulate, FdModel};
 
 fn paper_impact(c: &mut Criterion) {
     let p = Params::paper();
     c.bench_function("fig4_impact_n39_node", |b| b.iter(|| simulate(std::hint::black_box(&p)).unwrap()));
-    let model = Model::new(&p).unwrap();
+    let model = FdModel::new(&p).unwrap();
     c.bench_function("fig4_impact_n39_node_prepared", |b| b.iter(|| model.run().unwrap()));
     // the explicit scheme at 0.9 of its stability limit (the default step also resolves the
     // contact oscillation to 2e-3 rad per step, about 8 times finer, for 1e-5 accuracy)
     let mut coarse = p;
     coarse.numerics.dt = Some(0.9 * model.dt_limit);
-    let coarse = Model::new(&coarse).unwrap();
+    let coarse = FdModel::new(&coarse).unwrap();
     c.bench_function("fig4_impact_n39_node_prepared_dt_0.9_limit", |b| b.iter(|| coarse.run().unwrap()));
     let mut modal = p;
     modal.numerics.solver = racket_impact::params::SolverKind::Modal;

@@ -31,8 +31,9 @@
 //!         |                            \
 //! src/render/            tables (CSV), line charts, heat maps, one impact as text, atomic files
 //!         |
-//! src/solve/             the solvers behind one trait (fd, modal, rigid), the dispatcher,
-//!                        the outcome with its one field table, the time-series observer
+//! src/solve/             the prepared impact (no solver's), the solvers behind one trait
+//!                        (fd, modal, rigid), the dispatcher, the outcome with its one field
+//!                        table, the time-series observer
 //!         |
 //! src/model/             physics only: contact law (one trait), beam, modes and their cache,
 //!                        the contact point's coupling to the frame, free vibration, closed forms
@@ -101,4 +102,4 @@ mod test_rng;
 
 pub use error::{Error, Result};
 pub use params::Params;
-pub use solve::{simulate, ImpactResult, Model};
+pub use solve::{simulate, ImpactResult};

@@ -6,7 +6,7 @@ use approx::assert_relative_eq;
 use racket_impact::model::beam::Beam;
 use racket_impact::model::reduced::{clamped_drop, concrete_drop};
 use racket_impact::params::{drop_speed, LoadRule, Params, Racket, Strings, DROP_HEIGHT_100_IN};
-use racket_impact::solve::{simulate, ImpactResult, Model};
+use racket_impact::solve::{simulate, FdModel, ImpactResult};
 
 /// Relative tolerances the issue sets for the paper's numbers.
 const DROP_TOL: f64 = 0.005;
@@ -208,7 +208,7 @@ fn default_time_step_is_converged_to_1e_5() {
     let mut coarse = Params::paper();
     coarse.numerics.segments = 6;
     for p in [Params::paper(), hat, soft, coarse] {
-        let m = Model::new(&p).unwrap();
+        let m = FdModel::new(&p).unwrap();
         let a = m.run().unwrap();
         let mut q = p;
         q.numerics.dt = Some(m.dt / 2.0);
@@ -256,11 +256,11 @@ fn a_recontact_is_flagged_and_refused_by_the_paper_experiments() {
 /// The closed-form free vibration (peak bending PE, re-contact) against stepping the free
 /// racket on with the explicit scheme and reading the same quantities off the time series.
 fn stepped_after_impact(p: &Params) -> (ImpactResult, f64, bool) {
-    let model = Model::new(p).unwrap();
+    let model = FdModel::new(p).unwrap();
     let opts = racket_impact::solve::SeriesOptions { sample_dt: model.dt, t_end: 0.0 };
     let (r, rows) = model.run_with_series(opts).unwrap();
     assert_eq!(r, model.run().unwrap(), "a time series must not change the result");
-    let window_end = r.tau_s + 2.0 / model.f1_hz;
+    let window_end = r.tau_s + 2.0 / model.impact.f1_hz;
     let after = rows.iter().filter(|row| row.t_s > r.tau_s && row.t_s <= window_end);
     let (peak, meets) = after.fold((0.0_f64, false), |(pk, m), row| (pk.max(row.pe_racket), m || row.y_total_m > 0.0));
     (r, peak, meets)

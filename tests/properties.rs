@@ -5,7 +5,7 @@
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 use racket_impact::params::{Ball, Impact, LoadRule, Numerics, Overrides, Params, Racket, Strings};
-use racket_impact::solve::{simulate, ImpactResult, Model};
+use racket_impact::solve::{simulate, FdModel, ImpactResult};
 
 /// A racket, ball, strings and impact drawn from wide but physical ranges.
 fn params() -> impl Strategy<Value = Params> {
@@ -141,7 +141,7 @@ fn check_config_bytes(bytes: &[u8]) {
         let mut p = Params::default();
         o.apply(&mut p);
         if p.validate().is_ok() && p.numerics.segments <= 60 {
-            let _ = Model::new(&p);
+            let _ = FdModel::new(&p);
         }
     }
 }

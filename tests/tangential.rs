@@ -328,7 +328,7 @@ fn the_string_option_is_used_or_refused() {
 /// and the tangential one's) is within the limit every result is held to; none is refused.
 #[test]
 fn every_accepted_ball_passes_the_energy_check() {
-    let limit = racket_impact::solve::fd::ENERGY_ERROR_LIMIT;
+    let limit = racket_impact::solve::ENERGY_ERROR_LIMIT;
     for solver in [SolverKind::Fd, SolverKind::Modal] {
         for law in [TangentialLaw::Elastic, TangentialLaw::Physical] {
             for alpha in [0.1, 0.4, 0.55, 2.0 / 3.0] {

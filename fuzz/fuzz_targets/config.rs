@@ -4,7 +4,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use racket_impact::params::{Overrides, Params};
-use racket_impact::solve::Model;
+use racket_impact::solve::FdModel;
 
 fuzz_target!(|data: &[u8]| {
     let path = std::path::Path::new("fuzz.toml");
@@ -12,7 +12,7 @@ fuzz_target!(|data: &[u8]| {
         let mut p = Params::default();
         o.apply(&mut p);
         if p.validate().is_ok() && p.numerics.segments <= 60 {
-            let _ = Model::new(&p);
+            let _ = FdModel::new(&p);
         }
     }
 });

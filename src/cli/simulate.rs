@@ -4,7 +4,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 use racket_impact::numfmt::sig;
-use racket_impact::solve::{Model, SeriesOptions};
+use racket_impact::solve::{FdModel, SeriesOptions};
 use racket_impact::{Error, Result};
 
 use super::common::{out, print_diagnostics, Common, Format};
@@ -57,7 +57,7 @@ pub fn run(a: SimulateArgs) -> Result<()> {
         if params.numerics.solver != racket_impact::params::SolverKind::Fd {
             return Err(Error::invalid("series", path.display(), "a time series needs --solver fd"));
         }
-        let model = Model::new(&params)?;
+        let model = FdModel::new(&params)?;
         // the rows, counted before any is made: the impact and the paper's two-period window
         // (or --series-end), one row per sample or per step, whichever is longer
         let f1_hz = racket_impact::model::basis::Basis::of(&params.racket, params.numerics.segments).omega[0]

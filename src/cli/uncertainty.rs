@@ -8,7 +8,7 @@ use clap::Args;
 use racket_impact::experiments::robustness;
 use racket_impact::params::keys;
 use racket_impact::study::sensitivity::Design;
-use racket_impact::study::uncertainty::{few_samples, not_meaningful, summary_json, Study, DEFAULT_SAMPLES};
+use racket_impact::study::uncertainty::{few_samples, Study, DEFAULT_SAMPLES};
 use racket_impact::{Error, Result};
 
 use super::common::{out, print_diagnostics, warn, Common, Format, Progress};
@@ -116,85 +116,16 @@ fn run_claims(a: UncertaintyArgs) -> Result<()> {
         progress.update(done as u64)
     })?;
     drop(progress);
-    let table = robustness::table(&rows)?;
     let text = match a.common.format {
-        Format::Csv => table.to_csv(),
-        Format::Text => claims_text(&rows, samples, seed, design.runs()),
-        Format::Json => {
-            let keys: Vec<&str> = inputs.iter().map(|s| s.key).collect();
-            let mut outputs = serde_json::Map::new();
-            for r in &rows {
-                let mut v = summary_json(&r.summary, &keys);
-                v["unit"] = r.claim.unit.clone().into();
-                v["paper"] = r.claim.paper_value()?.into();
-                v["band"] = serde_json::json!([r.band.0, r.band.1]);
-                v["nominal"] = r.nominal.into();
-                v["numerical"] = r.numerical.into();
-                v["verdict"] = r.verdict.name().into();
-                v["conclusion"] = r.claim.conclusion.clone().into();
-                v["conclusion_share"] = r.conclusion_share.into();
-                v["conclusion_verdict"] = r.conclusion.name().into();
-                outputs.insert(r.claim.id.clone(), v);
-            }
-            let inputs: Vec<serde_json::Value> = inputs
-                .iter()
-                .filter_map(|s| {
-                    s.uncertainty.map(|u| {
-                        serde_json::json!({"key": s.key, "dist": u.dist.text(), "nominal": u.nominal, "source": u.source})
-                    })
-                })
-                .collect();
-            let (counts, borderline) = robustness::tally(&rows);
-            let mut verdicts: serde_json::Map<String, serde_json::Value> =
-                counts.iter().map(|(v, n)| (v.name().to_string(), (*n).into())).collect();
-            verdicts.insert("borderline".into(), borderline.into());
-            let (counts, borderline) = robustness::conclusion_tally(&rows);
-            let mut conclusion_verdicts: serde_json::Map<String, serde_json::Value> =
-                counts.iter().map(|(v, n)| (v.name().to_string(), (*n).into())).collect();
-            conclusion_verdicts.insert("borderline".into(), borderline.into());
-            json_text(&serde_json::json!({
-                "samples": samples, "seed": seed, "runs": design.runs(), "inputs": inputs, "outputs": outputs,
-                "verdicts": verdicts, "conclusion_verdicts": conclusion_verdicts
-            }))?
-        }
+        Format::Csv => robustness::table(&rows)?.to_csv(),
+        Format::Text => robustness::text(&rows, samples, seed),
+        Format::Json => json_text(&robustness::json(&rows, samples, seed)?)?,
     };
     emit(a.out.as_ref(), &text)?;
     if let Some(line) = few_samples(samples) {
         warn(&line);
     }
     Ok(())
-}
-
-/// One line per claim: nominal, q05-q95, verdict, the two inputs it hinges on; then the
-/// verdicts counted.
-fn claims_text(rows: &[robustness::ClaimRobustness], samples: u64, seed: u32, runs: usize) -> String {
-    use racket_impact::numfmt::sig;
-    let mut s = format!(
-        "{samples} base samples x 11 = {runs} evaluations of every claim (modal solver), seed {seed}\n\
-         {:<32} {:>10} {:>10} {:>10} {:>10}  {:<11} {:<11} {:>10}  top inputs (total index)\n",
-        "claim", "nominal", "q05", "q50", "q95", "verdict", "conclusion", "share"
-    );
-    if let Some(line) = not_meaningful(samples) {
-        s.insert_str(s.find('\n').unwrap_or(0) + 1, &line);
-    }
-    for r in rows {
-        let top: Vec<String> =
-            robustness::top_two(&r.summary).iter().map(|(k, v)| format!("{k} {}", sig(*v, 2))).collect();
-        s.push_str(&format!(
-            "{:<32} {:>10} {:>10} {:>10} {:>10}  {:<11} {:<11} {:>10}  {}\n",
-            r.claim.id,
-            sig(r.nominal, 4),
-            sig(r.summary.q05, 4),
-            sig(r.summary.q50, 4),
-            sig(r.summary.q95, 4),
-            r.verdict.name(),
-            r.conclusion.name(),
-            r.conclusion_share.map_or("-".to_string(), |v| sig(v, 3)),
-            top.join(", ")
-        ));
-    }
-    s.push_str(&format!("{}\n", robustness::tally_text(rows)));
-    s
 }
 
 fn json_text(v: &serde_json::Value) -> Result<String> {

@@ -15,7 +15,7 @@ use crate::numfmt::fmt_sig;
 use crate::params::{LoadRule, Params};
 use crate::render::plot::{Chart, LineStyle};
 use crate::render::table::Table;
-use crate::solve::Model;
+use crate::solve::FdModel;
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {
@@ -51,7 +51,7 @@ fn run(ctx: &Context) -> Result<Table> {
         }
     }
     let paper = fig4_energy::params(ctx);
-    let dt0 = Model::new(&paper)?.dt;
+    let dt0 = FdModel::new(&paper)?.dt;
     for k in DT_FACTORS {
         let mut p = paper;
         p.numerics.dt = Some(dt0 * k);

@@ -16,7 +16,7 @@ use crate::numfmt::fmt_sig;
 use crate::params::Params;
 use crate::render::plot::{Chart, Curve, LineStyle, VLine};
 use crate::render::table::Table;
-use crate::solve::{ImpactResult, Model, SeriesOptions};
+use crate::solve::{FdModel, ImpactResult, SeriesOptions};
 
 /// The registry entry.
 pub const EXPERIMENT: Experiment = Experiment {
@@ -48,9 +48,9 @@ pub fn params(ctx: &Context) -> Params {
 }
 
 fn run(ctx: &Context) -> Result<Table> {
-    let model = Model::new(&params(ctx))?;
+    let model = FdModel::new(&params(ctx))?;
     let (r, rows) = model.run_with_series(SeriesOptions { sample_dt: 5.0e-5, t_end: 0.025 })?;
-    let r = super::checked(&model.params, r)?;
+    let r = super::checked(&model.impact.params, r)?;
     let mut t = Table::new(
         EXPERIMENT.id,
         &[

@@ -5,8 +5,10 @@
 //! - [`modal`]: modal superposition with exact modal propagation and a contact-sized step;
 //! - [`rigid`]: the rigid racket in closed form (`--frame rigid`).
 //!
-//! The outcome types ([`ImpactResult`], with its field table, and the time series) are in
-//! [`outcome`]; the time series is recorded by an observer (`observer`) the stepping loop is generic over.
+//! Both beam solvers start from the solver-neutral [`PreparedImpact`] ([`prepared`]: validated
+//! parameters, beam, contact, coupling, tangential set-up). The outcome types ([`ImpactResult`],
+//! with its field table and its checks, and the time series) are in [`outcome`]; the time
+//! series is recorded by an observer (`observer`) the stepping loop is generic over.
 //! Everything physical (the contact law, the beam and its modes, the coupling of the contact
 //! point to the frame) comes from [`crate::model`].
 
@@ -16,15 +18,17 @@ pub mod modal;
 pub mod oblique;
 pub(crate) mod observer;
 pub mod outcome;
+pub mod prepared;
 pub mod rigid;
 pub mod swing;
 
 use crate::error::Result;
 use crate::params::{Frame, Params, SolverKind};
 
-pub use fd::{hand_damping_ratio, Model};
+pub use fd::{hand_damping_ratio, FdModel};
 pub use modal::{ModalModel, Resolution};
-pub use outcome::{ImpactResult, SeriesOptions, SeriesRow};
+pub use outcome::{ImpactResult, SeriesOptions, SeriesRow, ENERGY_ERROR_LIMIT};
+pub use prepared::PreparedImpact;
 pub use rigid::Rigid;
 
 /// An impact solver: prepared once from the parameters (validated, discretised, the step
@@ -38,10 +42,10 @@ pub trait Solver: Sized {
 }
 
 /// Prepare and run one impact with the solver `S`; a result whose energy error exceeds the
-/// limit is an error, whichever solver made it (`oblique::check_energy`).
+/// limit is an error, whichever solver made it ([`ENERGY_ERROR_LIMIT`]).
 pub fn solve<S: Solver>(params: &Params) -> Result<ImpactResult> {
     let r = S::prepare(params)?.run()?;
-    oblique::check_energy(&r)?;
+    r.check_energy()?;
     Ok(r)
 }
 
@@ -51,7 +55,7 @@ pub fn simulate(params: &Params) -> Result<ImpactResult> {
         return solve::<Rigid>(params);
     }
     match params.numerics.solver {
-        SolverKind::Fd => solve::<Model>(params),
+        SolverKind::Fd => solve::<FdModel>(params),
         SolverKind::Modal => solve::<ModalModel>(params),
     }
 }

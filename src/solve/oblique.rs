@@ -107,19 +107,7 @@ impl Follower {
         }
         r.energy_error = r.energy_error.max(ledger.abs() / e_in);
         check_fields(r)?;
-        check_energy(r)
-    }
-}
-
-/// An impact whose energy error (the normal ledger's, and the tangential one's joined to it)
-/// exceeds [`ENERGY_ERROR_LIMIT`](crate::solve::fd::ENERGY_ERROR_LIMIT) is an error, never a
-/// result: the same check for every solver and for the tangential part (SPEC.md section 2).
-pub(crate) fn check_energy(r: &ImpactResult) -> Result<()> {
-    let limit = crate::solve::fd::ENERGY_ERROR_LIMIT;
-    if r.energy_error <= limit {
-        Ok(())
-    } else {
-        Err(Error::EnergyDrift { error: r.energy_error, limit })
+        r.check_energy()
     }
 }
 

@@ -342,7 +342,21 @@ pub const TEXT_ORDER: [&Field; 28] = [
     field("f_rolling"),
 ];
 
+/// An impact whose relative energy error exceeds this is an error, never a result.
+pub const ENERGY_ERROR_LIMIT: f64 = 1.0e-4;
+
 impl ImpactResult {
+    /// An impact whose energy error (the normal ledger's, and the tangential one's joined to
+    /// it) exceeds [`ENERGY_ERROR_LIMIT`] is an error, never a result: the same check for every
+    /// solver and for the tangential part (SPEC.md section 2).
+    pub(crate) fn check_energy(&self) -> Result<()> {
+        if self.energy_error <= ENERGY_ERROR_LIMIT {
+            Ok(())
+        } else {
+            Err(Error::EnergyDrift { error: self.energy_error, limit: ENERGY_ERROR_LIMIT })
+        }
+    }
+
     /// Every checked field finite, or an error naming the first that is not (`f64::max` would
     /// hide a NaN in the running error maxima, so the check is on the final numbers).
     pub fn check_finite(&self) -> Result<()> {

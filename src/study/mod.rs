@@ -8,6 +8,7 @@
 pub mod diagnose;
 pub mod impact;
 pub mod map;
+pub mod measured;
 pub mod sensitivity;
 pub mod speed;
 pub mod sweep;

@@ -6,7 +6,7 @@ use crate::model::basis::Basis;
 use crate::model::beam::Beam;
 use crate::params::{Grip, Params, Variants};
 use crate::solve::fd::stepper::Stepper;
-use crate::solve::fd::Model;
+use crate::solve::fd::FdModel;
 
 impl Stepper {
     /// Energy stored in the hand's springs plus what its dampers dissipated, J.
@@ -17,12 +17,12 @@ impl Stepper {
     /// The kick with a hand: springs `-k y` at the new positions and dampers `-c v` taken
     /// implicitly (trapezoidal in `v`, so any damping is stable), the damper loss and the hand's
     /// impulse integrated by the trapezoidal rule.
-    pub(super) fn kick_held(&mut self, dt: f64, f: f64, model: &Model) -> (f64, f64) {
+    pub(super) fn kick_held(&mut self, dt: f64, f: f64, model: &FdModel) -> (f64, f64) {
         let half = 0.5 * dt;
         self.kick_ball_and_twist(half, f, model);
-        let basis = &model.basis;
-        let [j0, j1] = model.coupling.load.nodes;
-        let [w0, w1] = model.coupling.load.weights;
+        let basis = &model.impact.basis;
+        let [j0, j1] = model.impact.coupling.load.nodes;
+        let [w0, w1] = model.impact.coupling.load.weights;
         let (mut twice_ke, mut mom) = (0.0, 0.0);
         for (i, &(k, c)) in model.hand.iter().enumerate() {
             let im = basis.pad.inv_mass[i];
@@ -48,18 +48,18 @@ impl Stepper {
     }
 }
 
-impl Model {
+impl FdModel {
     /// The held racket after separation, stepped on from `st` at time `t` (s) until `t_post`:
     /// the peak bending PE (J) up to `t_window` and whether the frame meets the ball again.
     pub(super) fn held_after_impact(&self, st: &Stepper, t: f64, t_window: f64, t_post: f64) -> (f64, bool) {
         let beam = self.beam();
         let dt = self.dt;
-        let cp = &self.coupling;
+        let cp = &self.impact.coupling;
         let mut s2 = st.clone();
         let (mut peak, mut meets) = (beam.bending_energy(&s2.y), false);
         let mut t2 = t;
         while t2 < t_post {
-            let pe = s2.drift(dt, &self.basis.pad.kappa);
+            let pe = s2.drift(dt, &self.impact.basis.pad.kappa);
             s2.kick(dt, 0.0, self);
             t2 += dt;
             if t2 <= t_window {

@@ -8,11 +8,12 @@ use crate::model::contact::{ContactLaw, ContactState, Phase};
 use crate::model::free::FreeVibration;
 use crate::model::tangential::ForcePiece;
 use crate::solve::fd::stepper::Stepper;
-use crate::solve::fd::{Model, ENERGY_ERROR_LIMIT};
+use crate::solve::fd::FdModel;
 use crate::solve::hermite::{hermite_eval, hermite_max, hermite_root};
 use crate::solve::oblique::Follower;
 use crate::solve::observer::Observer;
 use crate::solve::outcome::ImpactResult;
+use crate::solve::outcome::ENERGY_ERROR_LIMIT;
 
 /// Where the contact phase left an impact.
 struct Separated {
@@ -36,12 +37,12 @@ struct Separated {
     tangential: Follower,
 }
 
-impl Model {
+impl FdModel {
     /// Run the impact, reporting each step to `obs`.
     pub(super) fn integrate<O: Observer>(&self, obs: &mut O) -> Result<ImpactResult> {
         let mut sep = self.contact_phase(obs)?;
         // the paper's window: two fundamental periods from the separation time itself
-        let t_window = sep.tau + 2.0 / self.f1_hz;
+        let t_window = sep.tau + 2.0 / self.impact.f1_hz;
         let t_post = t_window.max(obs.t_end());
         let result = self.result(&sep, t_window, t_post)?;
         // A time series is extended by stepping the free racket on (the result above does
@@ -54,16 +55,16 @@ impl Model {
 
     /// Step the contact phase to the separation.
     fn contact_phase<O: Observer>(&self, obs: &mut O) -> Result<Separated> {
-        let p = &self.params;
+        let p = &self.impact.params;
         let (mb, v1) = (p.ball.mass, p.impact.v1);
         let beam = self.beam();
         let dt = self.dt;
-        let cp = &self.coupling;
+        let cp = &self.impact.coupling;
         let e0 = 0.5 * mb * v1 * v1;
         let p0 = mb * v1;
-        let t_limit = self.time_limit_s;
+        let t_limit = self.impact.time_limit_s;
 
-        let mut st = Stepper::new(self.basis.pad.lanes, v1);
+        let mut st = Stepper::new(self.impact.basis.pad.lanes, v1);
         let mut phase = Phase::Compression;
         let mut cs = ContactState::ZERO;
         let mut t = 0.0;
@@ -77,10 +78,10 @@ impl Model {
         let mut t_max = 0.0;
         let mut y0 = 0.0;
         let mut step: usize = 0;
-        let mut tangential = Follower::new(self.oblique.as_ref());
+        let mut tangential = Follower::new(self.impact.oblique.as_ref());
         // the force and its rate at the start of the step (the force history of the tangential
         // contact: a cubic through both over each step)
-        let mut force_prev = (0.0, self.contact.compression_stiffness() * v1);
+        let mut force_prev = (0.0, self.impact.contact.compression_stiffness() * v1);
         let yt_of = |st: &Stepper| cp.compression(st.ball.y, &st.y, st.th);
         obs.observe(0, || self.ledger(&st, phase, &cs, 0.0, 0.0).row(0.0, e0, cs.force, st.ball.y, yt_of(&st), st.th));
 
@@ -89,9 +90,9 @@ impl Model {
                 return Err(Error::ImpactDidNotEnd { limit_s: t_limit });
             }
             let (th_prev, om_prev) = (st.th, st.om);
-            let pe = st.drift(dt, &self.basis.pad.kappa);
+            let pe = st.drift(dt, &self.impact.basis.pad.kappa);
             let yt = yt_of(&st);
-            cs = self.contact.state(yt, phase, cs.guess())?;
+            cs = self.impact.contact.state(yt, phase, cs.guess())?;
             let (mut ke, mut mom) = st.kick(dt, cs.force, self);
             mom += st.hand_impulse;
             let mut ytd = cp.compression(st.ball.v, &st.v, st.om);
@@ -99,10 +100,10 @@ impl Model {
                 // The maximum of Y_T lies in this step: switch to the expansion law there.
                 let (s_max, yt_max) = hermite_max(yt_prev, ytd_prev, yt, ytd, dt);
                 t_max = t + s_max * dt;
-                y0 = self.contact.ball_compression_at_max(yt_max);
+                y0 = self.impact.contact.ball_compression_at_max(yt_max);
                 phase = Phase::Expansion { y0 };
                 let f_old = cs.force;
-                cs = self.contact.state(yt, phase, (1.0, 1.0))?;
+                cs = self.impact.contact.state(yt, phase, (1.0, 1.0))?;
                 st.correct_force(dt, cs.force - f_old, self);
                 ytd = cp.compression(st.ball.v, &st.v, st.om);
                 ke = beam.kinetic_energy(&st.v);
@@ -136,7 +137,7 @@ impl Model {
                     tangential,
                 });
             }
-            let force = (cs.force, self.contact.stiffness(phase, &cs) * ytd);
+            let force = (cs.force, self.impact.contact.stiffness(phase, &cs) * ytd);
             tangential.advance(|| ForcePiece::hermite(dt, force_prev, force));
             force_prev = force;
             yt_prev = yt;
@@ -146,7 +147,7 @@ impl Model {
 
     /// The result: the ball is free; the racket keeps vibrating until `t_post` (s).
     fn result(&self, sep: &Separated, t_window: f64, t_post: f64) -> Result<ImpactResult> {
-        let p = &self.params;
+        let p = &self.impact.params;
         let (mb, v1, ix) = (p.ball.mass, p.impact.v1, p.racket.ix);
         let beam = self.beam();
         let e0 = 0.5 * mb * v1 * v1;
@@ -157,7 +158,7 @@ impl Model {
         let e_racket = beam.kinetic_energy(&st.v) + beam.bending_energy(&st.y);
         let f_vib = e_racket / e0 - f_rigid;
         let f_spin = 0.5 * ix * st.om * st.om / e0;
-        let f_ball = self.contact.ball_loss(sep.y0) / e0;
+        let f_ball = self.impact.contact.ball_loss(sep.y0) / e0;
         let f_hand = st.hand_energy(&self.hand) / e0;
         let (peak_pe, recontact) = if self.hand.is_empty() {
             self.after_impact(st, t - tau, t_post - t)
@@ -183,27 +184,27 @@ impl Model {
             peak_force_n: sep.peak_force,
             energy_error: energy_err,
             momentum_error: momentum_err,
-            x_load_m: self.coupling.load.x_load,
+            x_load_m: self.impact.coupling.load.x_load,
             t_max_compression_s: sep.t_max,
             y0_m: sep.y0,
             recontact,
             dt_s: self.dt,
             ..ImpactResult::ZERO
         };
-        sep.tangential.complete(self.oblique.as_ref(), &mut result, v1)?;
+        sep.tangential.complete(self.impact.oblique.as_ref(), &mut result, v1)?;
         result.check_finite()?;
         Ok(result)
     }
 
     /// Step the free racket on to `t_post` (s), reporting each step to `obs`.
     fn extend<O: Observer>(&self, sep: &mut Separated, t_post: f64, obs: &mut O) {
-        let p = &self.params;
+        let p = &self.impact.params;
         let (mb, v1) = (p.ball.mass, p.impact.v1);
         let e0 = 0.5 * mb * v1 * v1;
-        let cp = &self.coupling;
+        let cp = &self.impact.coupling;
         let Separated { st, phase, cs, t, step, .. } = sep;
         while *t < t_post {
-            let pe = st.drift(self.dt, &self.basis.pad.kappa);
+            let pe = st.drift(self.dt, &self.impact.basis.pad.kappa);
             let (ke, _) = st.kick(self.dt, 0.0, self);
             *t += self.dt;
             *step += 1;
@@ -219,9 +220,9 @@ impl Model {
     /// ball again before `ahead` seconds from now. `st` is the state `lag` seconds after
     /// separation.
     fn after_impact(&self, st: &Stepper, lag: f64, ahead: f64) -> (f64, bool) {
-        let basis = &self.basis;
+        let basis = &self.impact.basis;
         let beam = &basis.beam;
-        let cp = &self.coupling;
+        let cp = &self.impact.coupling;
         let k = basis.lam.len();
         let (mut q, mut qd, mut g) = (Vec::with_capacity(k), Vec::with_capacity(k), Vec::with_capacity(k));
         for phi in &basis.shapes {
@@ -236,7 +237,7 @@ impl Model {
             g.push(cp.at_load(phi));
         }
         let free = FreeVibration::new(&basis.omega, &q, &qd, &g);
-        let peak = free.peak_pe(-lag, 2.0 / self.f1_hz - lag);
+        let peak = free.peak_pe(-lag, 2.0 / self.impact.f1_hz - lag);
         // the gap without the vibration is affine in time: ball minus rigid motion of the load point
         let r = cp.r;
         let flex0: f64 = g.iter().zip(&q).map(|(g, q)| g * q).sum();

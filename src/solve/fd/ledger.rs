@@ -3,7 +3,7 @@
 
 use crate::model::contact::{ContactLaw, ContactState, Phase};
 use crate::solve::fd::stepper::Stepper;
-use crate::solve::fd::Model;
+use crate::solve::fd::FdModel;
 use crate::solve::outcome::SeriesRow;
 
 /// The energy ledger at one instant, J.
@@ -42,17 +42,17 @@ impl Ledger {
     }
 }
 
-impl Model {
+impl FdModel {
     /// The ledger of the state `st` with the contact `cs` in `phase`, the beam's bending energy
     /// `pe` and kinetic energy `ke` (J).
     #[inline]
     pub(super) fn ledger(&self, st: &Stepper, phase: Phase, cs: &ContactState, pe: f64, ke: f64) -> Ledger {
-        let p = &self.params;
+        let p = &self.impact.params;
         let (mb, ix) = (p.ball.mass, p.racket.ix);
         Ledger {
             ke_ball: 0.5 * mb * st.ball.v * st.ball.v,
-            pe_ball: self.contact.ball_energy_with_loss(phase, cs),
-            pe_string: self.contact.string_energy(cs),
+            pe_ball: self.impact.contact.ball_energy_with_loss(phase, cs),
+            pe_string: self.impact.contact.string_energy(cs),
             ke_racket: ke,
             pe_racket: pe,
             ke_spin: 0.5 * ix * st.om * st.om,

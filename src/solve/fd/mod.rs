@@ -14,10 +14,11 @@
 //! accumulated in the same passes. After separation the free racket is linear, so the paper's
 //! vibration measure (peak bending PE over two fundamental periods) and the re-contact check
 //! come from the closed-form modal solution of the discrete beam ([`FreeVibration`](crate::model::free::FreeVibration)), whose
-//! modes are computed once per racket and cached ([`Basis`]). A time series, when asked for, is
+//! modes are computed once per racket and cached ([`Basis`](crate::model::basis::Basis)). A time series, when asked for, is
 //! recorded by an observer (`solve::observer`) and extended by stepping on.
 //!
-//! Files: this one prepares the impact (the time step, the limits); `integrate` runs it,
+//! Files: this one prepares the explicit scheme on the [`PreparedImpact`] (the time step, the
+//! work limit, the hand's springs and dampers per node); `integrate` runs it,
 //! `stepper` holds the state and the Verlet steps, `ledger` the energy ledger, `hand` the hand
 //! grip.
 
@@ -26,18 +27,13 @@ mod integrate;
 mod ledger;
 mod stepper;
 
-use std::sync::Arc;
-
 use crate::error::{Error, Result};
-use crate::model::basis::Basis;
 use crate::model::beam::Beam;
-use crate::model::contact::{Contact, ContactLaw};
-use crate::model::coupling::Coupling;
-use crate::model::tangential::{Setup, MAX_TANGENTIAL_STEPS};
+use crate::model::contact::ContactLaw;
 use crate::params::{Grip, Params};
-use crate::solve::oblique;
 use crate::solve::observer::{Plain, Sampler};
 use crate::solve::outcome::{ImpactResult, SeriesOptions, SeriesRow};
+use crate::solve::prepared::{PreparedImpact, IMPACT_TIME_LIMIT_HALF_PERIODS};
 use crate::solve::Solver;
 
 pub use hand::hand_damping_ratio;
@@ -48,36 +44,19 @@ pub const DEFAULT_DT_FRACTION: f64 = 0.9;
 /// The default step also resolves the contact: at most this many radians of the stiffest
 /// contact oscillation per step.
 pub const DEFAULT_CONTACT_PHASE_PER_STEP: f64 = 2.0e-3;
-/// The impact must end within this many compression half-periods `pi sqrt(m_b / k_series)`.
-pub const IMPACT_TIME_LIMIT_HALF_PERIODS: f64 = 20.0;
-/// An impact whose relative energy error exceeds this is an error, never a result.
-pub const ENERGY_ERROR_LIMIT: f64 = 1.0e-4;
 /// Refuse parameters whose expected run (two rigid-contact half-periods plus the post-impact
 /// window of two fundamental periods) needs more node-steps than this (about 15 s here).
 pub const MAX_NODE_STEPS: f64 = 1.0e9;
 
-/// A prepared impact: validated parameters, the discrete beam, the load point and the time step.
+/// An impact prepared for the explicit solver: the prepared impact, the time step and the hand.
 #[derive(Debug, Clone)]
-pub struct Model {
-    /// The parameters of the normal impact (for an oblique ball, those given with `v1` the
-    /// normal speed `v1 cos(angle)`).
-    pub params: Params,
-    /// The tangential contact of an oblique or spinning ball (none at normal incidence).
-    pub oblique: Option<Setup>,
-    /// The contact law.
-    pub contact: Contact,
-    /// Where the force acts and how the contact point is tied to the frame.
-    pub coupling: Coupling,
-    /// Fundamental (first flexible) frequency of the free beam, Hz.
-    pub f1_hz: f64,
+pub struct FdModel {
+    /// The impact itself (parameters, beam, contact, coupling, tangential set-up).
+    pub impact: PreparedImpact,
     /// Stability limit of the explicit scheme, s.
     pub dt_limit: f64,
     /// The time step in use, s.
     pub dt: f64,
-    /// The contact phase must end within this simulated time, s (a guard, not physics).
-    pub time_limit_s: f64,
-    /// The racket's modes (shared by every impact on the same racket).
-    pub basis: Arc<Basis>,
     /// The hand (`--grip hand`): stiffness (N/m) and damping (N s/m) at each node; empty for
     /// the free racket.
     hand: Vec<(f64, f64)>,
@@ -87,35 +66,20 @@ pub struct Model {
     twist_per_force: f64,
 }
 
-impl Model {
+impl FdModel {
     /// The discrete beam.
     pub fn beam(&self) -> &Beam {
-        &self.basis.beam
+        self.impact.beam()
     }
 
-    /// Validate the parameters, discretise the racket and choose (or check) the time step.
+    /// Validate the parameters, prepare the impact and choose (or check) the time step.
     pub fn new(params: &Params) -> Result<Self> {
-        Self::build(params, true)
-    }
-
-    /// As [`Model::new`] for the modal solver, which takes its own steps: the explicit scheme's
-    /// work limit (too many node-steps for its step) does not apply.
-    pub(crate) fn for_modal(params: &Params) -> Result<Self> {
-        Self::build(params, false)
-    }
-
-    fn build(given: &Params, limit_work: bool) -> Result<Self> {
-        given.validate()?;
-        // the normal impact, stepped as at normal incidence at the normal speed
-        let normal = oblique::normal_part(given);
-        let params = &normal;
-        let basis = Basis::of(&params.racket, params.numerics.segments);
+        let impact = PreparedImpact::new(params)?;
+        let params = &impact.params;
+        let (basis, contact, coupling, f1_hz) = (&impact.basis, &impact.contact, &impact.coupling, impact.f1_hz);
         let beam = &basis.beam;
-        let contact = Contact::of(params);
         let v = &params.variants;
         let hand = if v.grip == Grip::Hand { hand_per_node(beam, v) } else { Vec::new() };
-        let coupling = Coupling::new(beam.load_point(params.impact.x, params.numerics.load), params.impact.r);
-        let f1_hz = basis.omega[0] / (2.0 * std::f64::consts::PI);
         // Weyl: the contact spring adds at most k_c |g|^2 to the largest eigenvalue, where g is
         // the mass-normalised coupling vector of the ball, the load nodes and the twist.
         let g2 = coupling.mobility(params.ball.mass, &beam.mass, params.racket.ix);
@@ -124,7 +88,6 @@ impl Model {
         let hand_max = hand.iter().zip(&beam.mass).map(|((k, _), m)| k / m).fold(0.0, f64::max);
         let omega_max = (lam_max + hand_max + contact.max_stiffness() * g2).sqrt();
         let dt_limit = 2.0 / omega_max;
-        let t_limit = time_limit(params, &contact);
         let dt = match params.numerics.dt {
             Some(dt) => {
                 if dt >= dt_limit {
@@ -141,11 +104,10 @@ impl Model {
                 (DEFAULT_DT_FRACTION * dt_limit).min(DEFAULT_CONTACT_PHASE_PER_STEP / omega_contact)
             }
         };
-        let t_expected = 2.0 * t_limit / IMPACT_TIME_LIMIT_HALF_PERIODS + 2.0 / f1_hz;
+        let t_expected = 2.0 * impact.time_limit_s / IMPACT_TIME_LIMIT_HALF_PERIODS + 2.0 / f1_hz;
         let steps = t_expected / dt;
         let work = steps * beam.nodes() as f64;
-        if !(dt.is_finite() && dt > 0.0 && f1_hz.is_finite() && f1_hz > 0.0 && (work <= MAX_NODE_STEPS || !limit_work))
-        {
+        if !(dt.is_finite() && dt > 0.0 && f1_hz.is_finite() && f1_hz > 0.0 && work <= MAX_NODE_STEPS) {
             if let Some(user_dt) = params.numerics.dt {
                 return Err(Error::invalid(
                     "dt",
@@ -160,27 +122,8 @@ impl Model {
             }
             return Err(Error::TooManySteps { steps, dt_s: dt, nodes: beam.nodes(), limit: MAX_NODE_STEPS });
         }
-        let oblique = Setup::of(given, beam, coupling.load.x_load);
-        if let Some(setup) = &oblique {
-            let steps = setup.steps_within(t_limit);
-            if steps.is_nan() || steps > MAX_TANGENTIAL_STEPS {
-                return Err(Error::TooManyTangentialSteps { steps, limit: MAX_TANGENTIAL_STEPS });
-            }
-        }
-        Ok(Model {
-            params: *params,
-            oblique,
-            contact,
-            coupling,
-            f1_hz,
-            dt_limit,
-            dt,
-            time_limit_s: t_limit,
-            basis,
-            hand,
-            inv_ball_mass: 1.0 / params.ball.mass,
-            twist_per_force: params.impact.r / params.racket.ix,
-        })
+        let (inv_ball_mass, twist_per_force) = (1.0 / params.ball.mass, params.impact.r / params.racket.ix);
+        Ok(FdModel { impact, dt_limit, dt, hand, inv_ball_mass, twist_per_force })
     }
 
     /// Run the impact.
@@ -196,19 +139,14 @@ impl Model {
     }
 }
 
-impl Solver for Model {
+impl Solver for FdModel {
     fn prepare(params: &Params) -> Result<Self> {
-        Model::new(params)
+        FdModel::new(params)
     }
 
     fn run(&self) -> Result<ImpactResult> {
-        Model::run(self)
+        FdModel::run(self)
     }
-}
-
-/// The simulated-time limit of the contact phase, s.
-fn time_limit(p: &Params, contact: &Contact) -> f64 {
-    IMPACT_TIME_LIMIT_HALF_PERIODS * std::f64::consts::PI * (p.ball.mass / contact.compression_stiffness()).sqrt()
 }
 
 #[cfg(test)]
@@ -217,8 +155,8 @@ mod tests {
 
     #[test]
     fn an_impact_that_does_not_end_in_time_is_an_error_not_a_hang() {
-        let mut model = Model::new(&Params::paper()).unwrap();
-        model.time_limit_s = 1.0e-3;
+        let mut model = FdModel::new(&Params::paper()).unwrap();
+        model.impact.time_limit_s = 1.0e-3;
         let msg = model.run().unwrap_err().to_string();
         assert!(msg.starts_with("impact did not end within 1.0000e-3 s"), "{msg}");
     }
@@ -227,18 +165,18 @@ mod tests {
     fn tiny_time_step_is_refused_rather_than_run_for_hours() {
         let mut p = Params::paper();
         p.numerics.dt = Some(1e-14);
-        let msg = Model::new(&p).unwrap_err().to_string();
+        let msg = FdModel::new(&p).unwrap_err().to_string();
         assert!(msg.starts_with("invalid dt = ") && msg.contains("steps"), "{msg}");
     }
 
     #[test]
     fn a_step_at_the_stability_limit_is_caught_by_the_energy_guard() {
         let mut p = Params::paper();
-        let limit = Model::new(&p).unwrap().dt_limit;
+        let limit = FdModel::new(&p).unwrap().dt_limit;
         p.numerics.dt = Some(limit * 0.9999);
         match crate::solve::simulate(&p) {
-            Err(Error::EnergyDrift { error, .. }) => assert!(error > ENERGY_ERROR_LIMIT),
-            Ok(r) => assert!(r.energy_error <= ENERGY_ERROR_LIMIT, "{r:?}"),
+            Err(Error::EnergyDrift { error, .. }) => assert!(error > crate::solve::ENERGY_ERROR_LIMIT),
+            Ok(r) => assert!(r.energy_error <= crate::solve::ENERGY_ERROR_LIMIT, "{r:?}"),
             Err(e) => panic!("unexpected error {e}"),
         }
     }
@@ -246,9 +184,9 @@ mod tests {
     #[test]
     fn unstable_time_step_is_refused() {
         let mut p = Params::paper();
-        let limit = Model::new(&p).unwrap().dt_limit;
+        let limit = FdModel::new(&p).unwrap().dt_limit;
         p.numerics.dt = Some(limit * 1.01);
-        let msg = Model::new(&p).unwrap_err().to_string();
+        let msg = FdModel::new(&p).unwrap_err().to_string();
         assert!(msg.starts_with("invalid dt = ") && msg.contains("stability limit"), "{msg}");
     }
 }

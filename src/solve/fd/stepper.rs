@@ -6,7 +6,7 @@
 use crate::model::basis::Padded;
 use crate::model::beam::Beam;
 use crate::model::coupling::BallState;
-use crate::solve::fd::Model;
+use crate::solve::fd::FdModel;
 
 /// The state of the ball, the beam and the twist, with the bending-moment buffer.
 #[derive(Clone)]
@@ -52,7 +52,7 @@ impl Stepper {
     }
 
     /// The half-kicks of the ball and of the twist under the contact force `f`.
-    pub(super) fn kick_ball_and_twist(&mut self, half: f64, f: f64, model: &Model) {
+    pub(super) fn kick_ball_and_twist(&mut self, half: f64, f: f64, model: &FdModel) {
         let ab = -f * model.inv_ball_mass;
         self.ball.v += (self.ab + ab) * half;
         self.ab = ab;
@@ -74,17 +74,18 @@ impl Stepper {
     /// New accelerations from the bending moments and the contact force `f`, and the velocity
     /// half-kicks `v += (a_old + a_new) dt / 2`; returns the beam's kinetic energy (J) and
     /// momentum (kg m/s).
-    pub fn kick(&mut self, dt: f64, f: f64, model: &Model) -> (f64, f64) {
+    pub fn kick(&mut self, dt: f64, f: f64, model: &FdModel) -> (f64, f64) {
         if !model.hand.is_empty() {
             return self.kick_held(dt, f, model);
         }
         let half = 0.5 * dt;
         self.kick_ball_and_twist(half, f, model);
-        let forces = model.coupling.nodal_forces(f);
+        let forces = model.impact.coupling.nodal_forces(f);
         for (j, f) in forces {
             self.load[j] += f;
         }
-        let [twice_ke, mom] = kick_nodes(&mut self.v, &mut self.a, &self.moment, &self.load, &model.basis.pad, half);
+        let [twice_ke, mom] =
+            kick_nodes(&mut self.v, &mut self.a, &self.moment, &self.load, &model.impact.basis.pad, half);
         for (j, _) in forces {
             self.load[j] = 0.0;
         }
@@ -92,7 +93,7 @@ impl Stepper {
     }
 
     /// Replace the contact force of the last kick by one `df` larger (used at the phase switch).
-    pub fn correct_force(&mut self, dt: f64, df: f64, model: &Model) {
+    pub fn correct_force(&mut self, dt: f64, df: f64, model: &FdModel) {
         let half = 0.5 * dt;
         let dab = -df * model.inv_ball_mass;
         self.ab += dab;
@@ -100,10 +101,10 @@ impl Stepper {
         let dal = df * model.twist_per_force;
         self.al += dal;
         self.om += dal * half;
-        let [j0, j1] = model.coupling.load.nodes;
-        let [w0, w1] = model.coupling.load.weights;
+        let [j0, j1] = model.impact.coupling.load.nodes;
+        let [w0, w1] = model.impact.coupling.load.weights;
         for (j, w) in [(j0, w0), (j1, w1)] {
-            let im = model.basis.pad.inv_mass[j];
+            let im = model.impact.basis.pad.inv_mass[j];
             // a hand's damper at the node takes part implicitly, as in the kick
             let c = model.hand.get(j).map_or(0.0, |h| h.1);
             let dv = w * df * im * half / (1.0 + c * im * half);

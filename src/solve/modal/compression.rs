@@ -285,7 +285,7 @@ mod tests {
         assert!(t_max > 0.0 && t_max < r.tau_s, "{t_max} {}", r.tau_s);
         for (limit, fails) in [(0.2 * t_max, true), (0.5 * (t_max + r.tau_s), true), (2.0 * r.tau_s, false)] {
             let mut short = m.clone();
-            short.base.time_limit_s = limit;
+            short.impact.time_limit_s = limit;
             match short.run() {
                 Err(Error::ImpactDidNotEnd { limit_s }) => assert!(fails && limit_s == limit, "limit {limit}"),
                 Ok(again) => {

@@ -103,9 +103,9 @@ use crate::model::free::FreeVibration;
 use crate::model::spare::{pooled, Buf, Pooled};
 use crate::model::tangential::ForcePiece;
 use crate::params::{Params, TangentialLaw};
-use crate::solve::fd::Model;
 use crate::solve::oblique::Follower;
 use crate::solve::outcome::ImpactResult;
+use crate::solve::prepared::PreparedImpact;
 use crate::solve::Solver;
 use compression::Compression;
 use pair::Pair;
@@ -176,7 +176,8 @@ pub const MAX_MODE_SAMPLES: f64 = 8.0e9;
 /// A prepared modal model of one impact.
 #[derive(Debug, Clone)]
 pub struct ModalModel {
-    base: Model,
+    /// The impact itself (parameters, beam, contact, coupling, tangential set-up).
+    impact: PreparedImpact,
     /// The contact law (the paper's: validation leaves the modal solver no other).
     law: Cross,
     /// Largest impulse error allowed per step, N s.
@@ -204,20 +205,20 @@ impl ModalModel {
     /// As [`ModalModel::with_resolution`], the set-up from the cache (and kept there) if
     /// `cached`, else built afresh.
     fn build(params: &Params, res: Resolution, cached: bool) -> Result<Self> {
-        let base = Model::for_modal(params)?;
+        let impact = PreparedImpact::new(params)?;
         let law = Cross::new(&params.ball, &params.strings);
-        let key = Key::of(&base.basis, &base.coupling, params, res);
+        let key = Key::of(&impact.basis, &impact.coupling, params, res);
         let hit = if cached { Shared::cached(&key) } else { None };
         let built = hit.is_none();
         let shared = match hit {
             Some(shared) => shared,
-            None => Self::set_up(&base, &law, params, res),
+            None => Self::set_up(&impact, &law, params, res),
         };
-        let impulse_tolerance = res.impulse_tolerance * params.ball.mass * base.params.impact.v1;
+        let impulse_tolerance = res.impulse_tolerance * params.ball.mass * impact.params.impact.v1;
         if built && cached {
             Shared::keep(&shared, key);
         }
-        let m = ModalModel { base, law, impulse_tolerance, set: shared };
+        let m = ModalModel { impact, law, impulse_tolerance, set: shared };
         m.check_work()?;
         Ok(m)
     }
@@ -225,10 +226,10 @@ impl ModalModel {
     /// The set-up shared by every impact of the same racket, point, strings and ball: the
     /// retained modes, their amplitudes at the load point, the static flexibility of the others
     /// the compression phase's coupled modes and the step table at maximum compression.
-    fn set_up(base: &Model, law: &Cross, params: &Params, res: Resolution) -> Arc<Shared> {
-        let beam = base.beam();
-        let basis = &base.basis;
-        let cp = base.coupling;
+    fn set_up(impact: &PreparedImpact, law: &Cross, params: &Params, res: Resolution) -> Arc<Shared> {
+        let beam = impact.beam();
+        let basis = &impact.basis;
+        let cp = impact.coupling;
         let mb = params.ball.mass;
         let [g_b, g_t, g_r, g_tw] = cp.rigid_amplitudes(mb, beam, params.racket.ix);
         let k_c = law.max_stiffness();
@@ -250,7 +251,7 @@ impl ModalModel {
                 residual += gk * gk / l;
             }
         }
-        let compression = Compression::new(&lam, &g, law.compression_stiffness(), residual, mb, base.time_limit_s);
+        let compression = Compression::new(&lam, &g, law.compression_stiffness(), residual, mb, impact.time_limit_s);
         Shared::new(lam, g, residual, compression, basis, res.phase_per_step / omega_contact)
     }
 
@@ -259,7 +260,7 @@ impl ModalModel {
     fn check_work(&self) -> Result<()> {
         let modes = self.retained_modes();
         let fastest = self.set.omega.last().copied().unwrap_or(0.0);
-        let f1_hz = self.base.f1_hz;
+        let f1_hz = self.impact.f1_hz;
         let samples = 2.0 / f1_hz * fastest / crate::model::free::PHASE_PER_SAMPLE;
         let work = samples * modes as f64;
         if work.is_nan() || work > MAX_MODE_SAMPLES {
@@ -289,12 +290,12 @@ impl ModalModel {
     /// Run the impact: the compression phase in closed form, then steps from maximum
     /// compression to separation.
     pub fn run(&self) -> Result<ImpactResult> {
-        let p = &self.base.params;
+        let p = &self.impact.params;
         let v1 = p.impact.v1;
         let n = self.set.lam.len();
-        let limit = self.base.time_limit_s;
+        let limit = self.impact.time_limit_s;
         let mut s = State { x: Buf::filled(Pair::splat(0.0), n) };
-        let mut tangential = Follower::new(self.base.oblique.as_ref());
+        let mut tangential = Follower::new(self.impact.oblique.as_ref());
         let max = if tangential.is_active() {
             let mut feed = |h: f64, a: (f64, f64), b: (f64, f64)| {
                 tangential.advance(|| ForcePiece::hermite(h, a, b));
@@ -340,7 +341,7 @@ impl ModalModel {
             run.energy_err,
             run.momentum_err,
         )?;
-        run.tangential.complete(self.base.oblique.as_ref(), &mut result, v1)?;
+        run.tangential.complete(self.impact.oblique.as_ref(), &mut result, v1)?;
         result.check_finite()?;
         Ok(result)
     }
@@ -358,7 +359,7 @@ impl ModalModel {
         energy_err: f64,
         momentum_err: f64,
     ) -> Result<ImpactResult> {
-        let p = &self.base.params;
+        let p = &self.impact.params;
         let e0 = 0.5 * p.ball.mass * p.impact.v1 * p.impact.v1;
         let e_a = -s.v(0) / (p.ball.mass.sqrt() * p.impact.v1);
         // (a fold from +0: an empty sum of f64 is -0)
@@ -380,7 +381,7 @@ impl ModalModel {
             peak_force_n: peak_force,
             energy_error: energy_err,
             momentum_error: momentum_err,
-            x_load_m: self.base.coupling.load.x_load,
+            x_load_m: self.impact.coupling.load.x_load,
             t_max_compression_s: t_max,
             y0_m: y0,
             recontact,
@@ -401,7 +402,7 @@ impl ModalModel {
             v.push(s.v(j));
         }
         let free = FreeVibration::new(&self.set.omega[flex.clone()], &q, &v, &self.set.g[flex]);
-        let window = 2.0 / self.base.f1_hz;
+        let window = 2.0 / self.impact.f1_hz;
         let peak = free.peak_pe(-lag, window - lag);
         // the gap Y_T without the flexible modes: the ball and the rigid racket
         let gap0 = -(0..RIGID).map(|i| self.set.g[i] * s.q(i)).sum::<f64>();

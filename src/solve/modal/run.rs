@@ -126,7 +126,7 @@ impl Run<'_> {
         if f1 <= 0.0 {
             let sc = hermite_root(a.yt, a.ytd, end.yt, end.ytd, h);
             // twist angle at the crossing (`next` now holds the state before the step)
-            let ix = m.base.params.racket.ix;
+            let ix = m.impact.params.racket.ix;
             let (before, after) = (self.next.x[3].get(), self.s.x[3].get());
             let theta = hermite_eval(before[0], before[1], after[0], after[1], h, sc) / ix.sqrt();
             self.separated = Some((self.t - h + sc * h, theta));
@@ -143,7 +143,7 @@ impl Run<'_> {
     /// coordinates carry `modal_energy`).
     pub fn ledger(&mut self, end: &End, modal_energy: f64) {
         let (m, c) = (self.m, &self.m.law);
-        let p = &m.base.params;
+        let p = &m.impact.params;
         let (mb, v1) = (p.ball.mass, p.impact.v1);
         let e0 = 0.5 * mb * v1 * v1;
         let st = c.state_at_force(end.phase, end.f, end.u);

@@ -10,17 +10,19 @@
 //! `numerical` column is the converged value (`hat` load, N = 320) less it, where the claim
 //! has one: the paper's numerics beside the physical uncertainty.
 
+mod chart;
+mod write;
+
 use super::claims::{Check, Claim, ToleranceKind};
 use super::conclusion::Standing;
 use super::{Context, Experiment, PaperClaim};
 use crate::error::{Error, Result};
-use crate::numfmt::fmt_sig;
 use crate::params::spec::ParamSpec;
 use crate::params::uncertainty::Dist;
 use crate::params::{keys, Overrides, SolverKind};
-use crate::render::plot::{Chart, Curve, LineStyle};
-use crate::render::table::{Table, Value};
+use crate::render::table::Table;
 use crate::study::sensitivity::{self, Design, Summary};
+pub use write::{json, table, text, COLUMNS};
 
 /// Base samples of the design: 128 x (9 inputs + 2) = 1408 evaluations of every claim, about
 /// 6 s of CPU; the experiment also runs twice as many (the `_2x` columns, whose first half are
@@ -36,7 +38,7 @@ pub const EXPERIMENT: Experiment = Experiment {
     title: "Every paper claim under the declared input uncertainty: q05-q95 against the paper's tolerance",
     paper_ref: "p. 3-4: ball 56.7 +- 0.9 g, e 0.745 +- 0.017, k1 assumed, ks +-10 %, f1 'about 125 Hz', I_x 'typical'",
     run,
-    chart,
+    chart: chart::chart,
     claims: &[],
 };
 
@@ -134,6 +136,12 @@ impl ClaimRobustness {
     pub fn conclusion_borderline(&self) -> bool {
         self.doubled.as_ref().is_some_and(|d| d.conclusion != self.conclusion)
     }
+}
+
+/// Evaluations of every claim per base sample of the Saltelli design: the number of
+/// [`inputs`] plus two.
+pub fn runs_per_sample() -> usize {
+    inputs().len() + 2
 }
 
 /// The inputs: every parameter with a declared uncertainty that the paper's impacts use (the
@@ -336,160 +344,8 @@ pub fn top_two(s: &Summary) -> Vec<(&'static str, f64)> {
     ranked
 }
 
-/// The table columns.
-pub const COLUMNS: [&str; 24] = [
-    "id",
-    "unit",
-    "paper",
-    "band_lo",
-    "band_hi",
-    "nominal",
-    "numerical",
-    "q05",
-    "q50",
-    "q95",
-    "verdict",
-    "conclusion",
-    "conclusion_share",
-    "conclusion_verdict",
-    "top_input",
-    "top_total",
-    "second_input",
-    "second_total",
-    "q05_2x",
-    "q50_2x",
-    "q95_2x",
-    "verdict_2x",
-    "conclusion_share_2x",
-    "conclusion_verdict_2x",
-];
-
-/// The claims as a table, one row each in the claims file's order.
-pub fn table(rows: &[ClaimRobustness]) -> Result<Table> {
-    let mut t = Table::new(EXPERIMENT.id, &COLUMNS);
-    let num = |v: Option<f64>| v.filter(|v| v.is_finite()).map_or(Value::Text(String::new()), Value::Num);
-    for r in rows {
-        let s = &r.summary;
-        let top = top_two(s);
-        let name = |k: usize| Value::Text(top.get(k).map_or(String::new(), |t| t.0.to_string()));
-        let total = |k: usize| num(top.get(k).map(|t| t.1));
-        t.push(vec![
-            Value::Text(r.claim.id.clone()),
-            Value::Text(r.claim.unit.clone()),
-            Value::Num(r.claim.paper_value()?),
-            Value::Num(r.band.0),
-            Value::Num(r.band.1),
-            Value::Num(r.nominal),
-            num(r.numerical),
-            Value::Num(s.q05),
-            Value::Num(s.q50),
-            Value::Num(s.q95),
-            Value::Text(r.verdict.name().to_string()),
-            Value::Text(r.claim.conclusion.clone()),
-            num(r.conclusion_share),
-            Value::Text(r.conclusion.name().to_string()),
-            name(0),
-            total(0),
-            name(1),
-            total(1),
-            num(r.doubled.as_ref().map(|d| d.summary.q05)),
-            num(r.doubled.as_ref().map(|d| d.summary.q50)),
-            num(r.doubled.as_ref().map(|d| d.summary.q95)),
-            Value::Text(r.doubled.as_ref().map_or(String::new(), |d| d.verdict.name().to_string())),
-            num(r.doubled.as_ref().and_then(|d| d.conclusion_share)),
-            Value::Text(r.doubled.as_ref().map_or(String::new(), |d| d.conclusion.name().to_string())),
-        ])?;
-    }
-    Ok(t)
-}
-
 fn run(ctx: &Context) -> Result<Table> {
     table(&study(ctx, SAMPLES, SEED, true, |_| {})?)
-}
-
-/// Where a value sits against the claim's band, `asinh` of the distance from the paper's value
-/// in tolerances (half the band): 0 at the paper's value, `asinh(+-1)` at the band's edges,
-/// and values tens of tolerances away still on the chart.
-fn in_band(v: f64, (lo, hi): (f64, f64)) -> f64 {
-    ((2.0 * v - lo - hi) / (hi - lo)).asinh()
-}
-
-/// Verdict colours (palette indices); an `independent` claim has no interval to draw.
-const COLOURS: [(&str, usize); 3] = [("holds", 3), ("part", 1), ("not at all", 5)];
-
-/// The x axis' named ticks: distances from the paper's value in tolerances, on the asinh
-/// scale.
-fn tolerance_ticks() -> Vec<(f64, String)> {
-    [-100.0f64, -10.0, -3.0, -1.0, 0.0, 1.0, 3.0, 10.0, 100.0]
-        .iter()
-        .map(|&t| {
-            let name = if t == 0.0 { "0 (paper)".to_string() } else { format!("{t:+}") };
-            (t.asinh(), name)
-        })
-        .collect()
-}
-
-/// The y range of `n` claims' rows.
-fn rows_range(n: usize) -> (f64, f64) {
-    (0.3, n as f64 + 0.7)
-}
-
-fn chart(_: &Context, t: &Table) -> Chart {
-    let col = |name: &str| super::col(t, name);
-    let (lo, hi, q05, q95, nominal) = (col("band_lo"), col("band_hi"), col("q05"), col("q95"), col("nominal"));
-    let share = col("conclusion_share");
-    let ids = t.column_text("id").unwrap_or_default();
-    let verdicts = t.column_text("verdict").unwrap_or_default();
-    let conclusions = t.column_text("conclusion_verdict").unwrap_or_default();
-    let n = t.rows.len();
-    // the first claim at the top
-    let row = |k: usize| (n - k) as f64;
-    let mut curves = Vec::new();
-    let mut labelled = Vec::new();
-    for k in 0..n {
-        let Some(&(_, colour)) = COLOURS.iter().find(|(v, _)| *v == verdicts[k]) else { continue };
-        let label = if labelled.contains(&colour) {
-            String::new()
-        } else {
-            labelled.push(colour);
-            format!("q05-q95 of the number: {}", verdicts[k])
-        };
-        let band = (lo[k], hi[k]);
-        curves.push(
-            Curve::new(label, vec![in_band(q05[k], band), in_band(q95[k], band)], vec![row(k), row(k)])
-                .with_color(colour),
-        );
-    }
-    let x: Vec<f64> = (0..n).map(|k| in_band(nominal[k], (lo[k], hi[k]))).collect();
-    let y: Vec<f64> = (0..n).map(row).collect();
-    curves.push(Curve::new("at the paper's inputs (fd)", x, y).with_style(LineStyle::Points).with_color(0));
-    for edge in [-1.0f64, 1.0] {
-        let label = if edge > 0.0 { "edges of the claim's tolerance" } else { "" };
-        let x = edge.asinh();
-        let (y0, y1) = rows_range(n);
-        curves.push(Curve::new(label, vec![x, x], vec![y0, y1]).with_style(LineStyle::Dashed).with_color(0));
-    }
-    let y_ticks = (0..n)
-        .map(|k| {
-            let said = if share[k].is_finite() {
-                format!("{} {} %", conclusions[k], fmt_sig(100.0 * share[k], 3))
-            } else {
-                conclusions[k].clone()
-            };
-            (row(k), format!("{}  [{said}]", ids[k]))
-        })
-        .collect();
-    Chart {
-        y_range: Some(rows_range(n)),
-        curves,
-        x_ticks: tolerance_ticks(),
-        y_ticks,
-        ..Chart::new(
-            format!("Paper claims under input uncertainty ({SAMPLES} x 11 samples, modal solver)"),
-            "our value's distance from the paper's, in tolerances (asinh scale)",
-            "claim  [conclusion: verdict, share of samples in which it holds]",
-        )
-    }
 }
 
 #[cfg(test)]
@@ -505,8 +361,6 @@ mod tests {
         // a point interval is no test of robustness, inside the band or out of it
         assert_eq!(Robust::of(2.0, 2.0, (0.0, 3.0)), Robust::Independent);
         assert_eq!(Robust::of(4.0, 4.0, (0.0, 3.0)), Robust::Independent);
-        assert_eq!(in_band(3.0, (1.0, 3.0)), 1.0f64.asinh());
-        assert!(tolerance_ticks().iter().any(|(x, name)| *x == 0.0 && name == "0 (paper)"));
     }
 
     #[test]
