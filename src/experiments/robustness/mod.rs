@@ -149,7 +149,7 @@ pub fn runs_per_sample() -> usize {
 /// dimensions that move no claim).
 pub fn inputs() -> Vec<&'static ParamSpec> {
     let paper = crate::params::Params::paper();
-    keys::uncertain().filter(|s| crate::params::used::unused_reason(s.key, &paper).is_none()).collect()
+    keys::uncertain().filter(|s| crate::params::used::unused(s, &paper).is_none()).collect()
 }
 
 /// The context at the drawn values `x` (one per [`inputs`]): each a factor `x / nominal` on
