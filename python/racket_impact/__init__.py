@@ -339,12 +339,9 @@ def face_map(
 ) -> FaceMap:
     # (the docstring is made from the parameters' declaration below)
     for name in params:
-        if _param(name, "face_map")["key"] in _EXCLUDED[face_map]:
-            raise TypeError(
-                f"face_map() got an unexpected keyword argument {name!r} (the grid sets the impact point, x and r; a map "
-                "runs the modal solver wherever the model variants allow it, else fd with its automatic step: solver and "
-                "dt are not options)"
-            )
+        why = _MAP_SETS.get(_param(name, "face_map")["key"])
+        if why:
+            raise TypeError(f"face_map() got an unexpected keyword argument {name!r}: {why}")
     pairs = _pairs(params, "face_map")
     tensions = [] if compare_tension_lb is None else [float(t) for t in np.atleast_1d(compare_tension_lb)]
     metadata, (_, columns), (xs, rs, z), diagnostics = _native.face_map(
@@ -524,23 +521,26 @@ def run_experiment(id: str, *, racket=None):
 
 def _param_doc(p: dict[str, Any]) -> str:
     """One parameter in a numpydoc ``Parameters`` list: name, type and unit, its help, allowed
-    and usual ranges, default and declared uncertainty."""
+    and usual ranges, default (and how it is chosen), which impacts use it, and its declared
+    uncertainty; its help heading in brackets."""
     kind = {"number": "float", "count": "int", "choice": "str"}[p["kind"]]
     unit = f", {p['unit']}" if p["unit"] else ""
-    lines = [f"{p['name']} : {kind}{unit}", f"    {p['help']}."]
+    lines = [f"{p['name']} : {kind}{unit} [{p['heading']}]", f"    {p['help']}."]
     if p["kind"] == "choice":
         for c in p["choices"]:
             lines.append(f"    ``{c['name']}``" + (f": {c['help']}" if c["help"] else ""))
-    if p["range"]:
-        lo, hi = p["range"]
-        lines.append(f"    Allowed: {_num(lo)} <= {p['name']} <= {_num(hi)}{(' ' + p['unit']) if p['unit'] else ''}.")
+    else:
+        lines.append(f"    Allowed: {p['range_text'].replace(p['key'], p['name'])}.")
     if p["usual"]:
         lo, hi = p["usual"]
         lines.append(f"    Usual: {_num(lo)} .. {_num(hi)}{(' ' + p['unit']) if p['unit'] else ''} (outside: a warning).")
     default = p["default"]
     if default is not None:
         unit_default = f" {p['unit']}" if p["unit"] and p["kind"] != "choice" and _is_number(default) else ""
-        lines.append(f"    Default: {default}{unit_default}.")
+        how = f" ({p['default_words'].replace('--racket', 'racket=')})" if p["default_words"] else ""
+        lines.append(f"    Default: {default}{unit_default}{how}.")
+    if p["used_when"] != "always":
+        lines.append(f"    Used only {p['used_when']}.")
     if p["uncertainty"]:
         u = p["uncertainty"]
         lines.append(f"    Declared uncertainty: {u['dist']} (nominal {_num(u['nominal'])}).")
@@ -659,9 +659,11 @@ def _signature(function, names: list[str]) -> inspect.Signature:
     return inspect.Signature(own + extra)
 
 
-#: The parameters a function does not take (a map's grid sets the impact point, the map its
-#: solver), as the command's flags.
-_EXCLUDED = {face_map: {"x", "r", "solver", "dt"}}
+#: The parameters a map sets itself, with why (the grid sets the impact point, the map its
+#: solver), as the library declares them.
+_MAP_SETS: dict[str, str] = dict(json.loads(_native.map_sets()))
+#: The parameters a function does not take.
+_EXCLUDED = {face_map: set(_MAP_SETS)}
 
 
 def _taken(function) -> list[dict[str, Any]]:

@@ -294,143 +294,162 @@ def simulate(
         the paper's racket, strings and ball, and the impact moves to the centre of its head.
     config : str or os.PathLike, optional
         A TOML file with any parameter key (as the command line's --config); keywords win.
-    x : float, m
+    x : float, m [Impact]
         Impact distance from the tip, m (0 <= x <= length).
-        Default: 0.16 m.
-    r : float, m
+        Allowed: 0 <= x <= length.
+        Default: 0.16 m (the centre of the string face; with racket=, the centre of its head).
+    r : float, m [Impact]
         Impact distance from the long axis, m (|r| <= half-width).
-        Default: 0 m.
-    ks : float, N/m
+        Allowed: |r| <= half-width.
+        Default: 0 m (on the long axis).
+    ks : float, N/m [Strings]
         String-plane stiffness, N/m (1 ..= 1e12).
         Allowed: 1 <= ks <= 1e12 N/m.
         Usual: 5000 .. 200000 N/m (outside: a warning).
-        Default: 40000 N/m.
+        Default: 40000 N/m (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:36000:44000 (nominal 40000).
-    ei : float, N m^2
+    ei : float, N m^2 [Racket]
         Frame bending stiffness EI, N m^2 (1e-2 ..= 1e9).
         Allowed: 0.01 <= ei <= 1e9 N m^2.
-        Default: 150 N m^2.
+        Default: 150 N m^2 (the paper's; with racket=, the racket file's).
+        Used only with frame = beam.
         Declared uncertainty: uniform:121.5:181.5 (nominal 150).
-    mass : float, kg
+    mass : float, kg [Racket]
         Racket mass, kg (1e-3 ..= 1e6).
-        Allowed: 0.001 <= mass <= 1e6 kg.
+        Allowed: 0.001 <= mass <= 1000000 kg.
         Usual: 0.15 .. 1 kg (outside: a warning).
-        Default: 0.34 kg.
+        Default: 0.34 kg (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:0.32:0.36 (nominal 0.34).
-    length : float, m
+    length : float, m [Racket]
         Racket length, m (0.05 ..= 5).
         Allowed: 0.05 <= length <= 5 m.
         Usual: 0.4 .. 1 m (outside: a warning).
-        Default: 0.71 m.
+        Default: 0.71 m (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:0.686:0.737 (nominal 0.71).
-    ix : float, kg m^2
+    ix : float, kg m^2 [Racket]
         Moment of inertia about the long axis, kg m^2 (1e-7 ..= 1e4).
         Allowed: 1e-7 <= ix <= 10000 kg m^2.
         Usual: 0.0003 .. 0.006 kg m^2 (outside: a warning).
-        Default: 0.0015 kg m^2.
+        Default: 0.0015 kg m^2 (the paper's; with racket=, the racket file's).
+        Used only off the long axis (r != 0) or for an oblique ball.
         Declared uncertainty: uniform:0.0012:0.0018 (nominal 0.0015).
-    half_width : float, m
+    half_width : float, m [Racket]
         Half-width of the string face, m (1e-3 ..= 1): the largest |r|.
         Allowed: 0.001 <= half_width <= 1 m.
         Usual: 0.05 .. 0.2 m (outside: a warning).
-        Default: 0.125 m.
-    mb : float, kg
+        Default: 0.125 m (the paper's; with racket=, the racket file's).
+        Used only off the long axis (r != 0).
+    mb : float, kg [Ball]
         Ball mass, kg (1e-4 ..= 10).
         Allowed: 0.0001 <= mb <= 10 kg.
         Usual: 0.02 .. 0.2 kg (outside: a warning).
-        Default: 0.057 kg.
+        Default: 0.057 kg (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:0.0558:0.0576 (nominal 0.057).
-    k1 : float, N/m
+    k1 : float, N/m [Ball]
         Ball compression stiffness k1, N/m (1 ..= 1e9).
         Allowed: 1 <= k1 <= 1e9 N/m.
         Usual: 5000 .. 200000 N/m (outside: a warning).
-        Default: 30000 N/m.
+        Default: 30000 N/m (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:24000:36000 (nominal 30000).
-    p : float
+    p : float [Ball]
         Ball hysteresis exponent p (1 < p <= 10).
+        Allowed: 1 < p <= 10.
         Usual: 1.2 .. 5 (outside: a warning).
-        Default: 2.55.
+        Default: 2.55 (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:2.44445:2.7737 (nominal 2.55).
-    v1 : float, m/s
+    v1 : float, m/s [Impact]
         Incident ball speed, m/s (1e-3 ..= 1e3).
         Allowed: 0.001 <= v1 <= 1000 m/s.
         Usual: 0 .. 70 m/s (outside: a warning).
         Default: 7.05938 m/s.
         Declared uncertainty: uniform:27:33 (nominal 30).
-    segments : int
+    segments : int [Numerics]
         Number of beam segments N (4..=400).
+        Allowed: 4 <= segments <= 400.
         Default: 39.
-    load : str
+    load : str [Numerics]
         Load rule: node (the paper's) or hat.
         ``node``
         ``hat``
         Default: hat.
-    dt : float, s
+    dt : float, s [Numerics]
         Time step, s (must be below the stability limit).
-        Default: auto.
-    solver : str
+        Allowed: 0 < dt, below the stability limit of the beam.
+        Default: auto (the converged automatic step).
+        Used only with frame = beam and solver = fd.
+    solver : str [Numerics]
         Solver: fd (explicit time stepping, the reference) or modal (modal superposition).
         ``fd``
         ``modal``
         Default: fd.
-    frame : str
+        Used only with frame = beam.
+    frame : str [Racket]
         Frame model: beam (the paper's flexible beam) or rigid (closed-form rigid racket).
         ``beam``: The paper's flexible beam
         ``rigid``: The textbook rigid racket (effective mass at the impact point, plus twist), in closed form
         Default: beam.
-    grip : str
+    grip : str [Racket]
         Grip: free (the paper's) or hand (springs and dampers over the grip length).
         ``free``: The paper's freely suspended racket
         ``hand``: A hand: springs and dampers spread over the grip length from the butt
         Default: free.
-    strings : str
+    strings : str [Strings]
         String law: linear (the paper's) or stiffening.
         ``linear``: The paper's constant `k_s`
         ``stiffening``: `F = k_s Y_s (1 + s (Y_s / d)^2)`: the secant stiffness grows by the fraction `s` at the deflection `d` (the paper quotes about 10 % for large deflections)
         Default: linear.
-    string_stiffening : float
+    string_stiffening : float [Strings]
         Stiffening fraction s at the stiffening deflection (0 ..= 10).
         Allowed: 0 <= string_stiffening <= 10.
         Default: 0.1.
-    stiffening_deflection : float, m
+        Used only with strings = stiffening.
+    stiffening_deflection : float, m [Strings]
         Deflection at which the strings are stiffer by s, m (1e-4 ..= 1).
         Allowed: 0.0001 <= stiffening_deflection <= 1 m.
         Default: 0.04 m.
-    hand_stiffness : float, N/m
+        Used only with strings = stiffening.
+    hand_stiffness : float, N/m [Racket]
         Total hand stiffness, N/m (0 ..= 1e7).
         Allowed: 0 <= hand_stiffness <= 1e7 N/m.
         Default: 5000 N/m.
-    hand_damping : float, N s/m
+        Used only with grip = hand.
+    hand_damping : float, N s/m [Racket]
         Total hand damping, N s/m (0 ..= 1e4).
         Allowed: 0 <= hand_damping <= 10000 N s/m.
         Default: 10 N s/m.
-    grip_length : float, m
+        Used only with grip = hand.
+    grip_length : float, m [Racket]
         Grip length from the butt, m (up to half the racket).
+        Allowed: 1e-3 <= grip_length <= length / 2.
         Default: 0.15 m.
-    angle_deg : float, deg
+        Used only with grip = hand.
+    angle_deg : float, deg [Oblique impact]
         Incidence angle from the string-plane normal, degrees (0 ..= 85).
         Allowed: 0 <= angle_deg <= 85 deg.
         Usual: 0 .. 80 deg (outside: a warning).
         Default: 0 deg.
-    azimuth_deg : float, deg
+    azimuth_deg : float, deg [Oblique impact]
         In-plane direction of the incoming ball, degrees from the long axis towards the handle; 90 = across the face to +r (-360 ..= 360).
         Allowed: -360 <= azimuth_deg <= 360 deg.
         Default: 0 deg.
-    spin_rpm : float, rpm
+        Used only for an oblique or spinning ball.
+    spin_rpm : float, rpm [Oblique impact]
         Incoming spin, rpm; > 0 topspin relative to the ball's motion along the strings (-2e4 ..= 2e4).
         Allowed: -20000 <= spin_rpm <= 20000 rpm.
         Usual: -6000 .. 6000 rpm (outside: a warning).
         Default: 0 rpm.
-    mu : float
+    mu : float [Oblique impact]
         Friction coefficient of ball on strings (0 ..= 2).
         Allowed: 0 <= mu <= 2.
         Usual: 0 .. 1 (outside: a warning).
         Default: 0.4.
-    kt : float, N/m
+        Used only for an oblique or spinning ball.
+    kt : float, N/m [Oblique impact]
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
         Default: 20000 N/m.
-    tangential : str
+        Used only for an oblique or spinning ball.
+    tangential : str [Oblique impact]
         Tangential contact law: elastic, loss, offset, bed, radius or physical (all four).
         ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex; the default)
@@ -439,12 +458,14 @@ def simulate(
         ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)
         ``physical``: All four mechanisms
         Default: loss.
-    mu_ss : float
-        String-to-string friction coefficient, for the bed mechanism (0 ..= 2).
+        Used only for an oblique or spinning ball.
+    mu_ss : float [Strings]
+        String-to-string friction coefficient (0 ..= 2).
         Allowed: 0 <= mu_ss <= 2.
         Usual: 0 .. 0.5 (outside: a warning).
         Default: 0.08.
-    string : str
+        Used only for an oblique or spinning ball, with tangential = bed or physical.
+    string : str [Strings]
         The string, from data/strings: sets mu and mu-ss (its TWU database values).
         ``none``: No string named: mu and mu-ss as given (the default)
         ``tonic-gut-16``: Babolat Tonic Gut 16 (gut; no friction row of its own: the TWU gut median)
@@ -455,26 +476,32 @@ def simulate(
         ``nrg2-16``: Tecnifibre NRG2 16 (nylon)
         ``nxt-16``: Wilson NXT 16 (nylon)
         Default: none.
-    ball_radius : float, m
+        Used only for an oblique or spinning ball.
+    ball_radius : float, m [Ball]
         Ball radius, m (1e-3 ..= 1).
         Allowed: 0.001 <= ball_radius <= 1 m.
         Usual: 0.015 .. 0.05 m (outside: a warning).
         Default: 0.033 m.
-    ball_inertia_factor : float
+        Used only for an oblique or spinning ball.
+    ball_inertia_factor : float [Ball]
         Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55).
+        Allowed: 0.1 <= ball_inertia_factor <= 2/3.
         Usual: 0.4 .. 0.67 (outside: a warning).
         Default: 0.55.
-    ball_ex : float
-        The ball's tangential restitution in a gripping bounce e_x, for the loss mechanism (0.01 ..= 0.99).
+        Used only for an oblique or spinning ball.
+    ball_ex : float [Ball]
+        The ball's tangential restitution in a gripping bounce e_x (0.01 ..= 0.99).
         Allowed: 0.01 <= ball_ex <= 0.99.
         Usual: 0.05 .. 0.5 (outside: a warning).
         Default: 0.135.
+        Used only for an oblique or spinning ball, with tangential = loss or physical.
         Declared uncertainty: uniform:0.1:0.17 (nominal 0.135).
-    ball_kdyn : float, N/m
-        The ball's dynamic compression stiffness for the contact geometry, for the radius and offset mechanisms, N/m (1e3 ..= 1e9).
+    ball_kdyn : float, N/m [Ball]
+        The ball's dynamic compression stiffness for the contact geometry, N/m (1e3 ..= 1e9).
         Allowed: 1000 <= ball_kdyn <= 1e9 N/m.
         Usual: 10000 .. 300000 N/m (outside: a warning).
         Default: 78905.1 N/m.
+        Used only for an oblique or spinning ball, with tangential = offset, radius or physical.
         Declared uncertainty: uniform:57971.1:113623 (nominal 78905.1).
     """
 
@@ -542,143 +569,162 @@ def sweep(
         the paper's racket, strings and ball, and the impact moves to the centre of its head.
     config : str or os.PathLike, optional
         A TOML file with any parameter key (as the command line's --config); keywords win.
-    x : float, m
+    x : float, m [Impact]
         Impact distance from the tip, m (0 <= x <= length).
-        Default: 0.16 m.
-    r : float, m
+        Allowed: 0 <= x <= length.
+        Default: 0.16 m (the centre of the string face; with racket=, the centre of its head).
+    r : float, m [Impact]
         Impact distance from the long axis, m (|r| <= half-width).
-        Default: 0 m.
-    ks : float, N/m
+        Allowed: |r| <= half-width.
+        Default: 0 m (on the long axis).
+    ks : float, N/m [Strings]
         String-plane stiffness, N/m (1 ..= 1e12).
         Allowed: 1 <= ks <= 1e12 N/m.
         Usual: 5000 .. 200000 N/m (outside: a warning).
-        Default: 40000 N/m.
+        Default: 40000 N/m (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:36000:44000 (nominal 40000).
-    ei : float, N m^2
+    ei : float, N m^2 [Racket]
         Frame bending stiffness EI, N m^2 (1e-2 ..= 1e9).
         Allowed: 0.01 <= ei <= 1e9 N m^2.
-        Default: 150 N m^2.
+        Default: 150 N m^2 (the paper's; with racket=, the racket file's).
+        Used only with frame = beam.
         Declared uncertainty: uniform:121.5:181.5 (nominal 150).
-    mass : float, kg
+    mass : float, kg [Racket]
         Racket mass, kg (1e-3 ..= 1e6).
-        Allowed: 0.001 <= mass <= 1e6 kg.
+        Allowed: 0.001 <= mass <= 1000000 kg.
         Usual: 0.15 .. 1 kg (outside: a warning).
-        Default: 0.34 kg.
+        Default: 0.34 kg (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:0.32:0.36 (nominal 0.34).
-    length : float, m
+    length : float, m [Racket]
         Racket length, m (0.05 ..= 5).
         Allowed: 0.05 <= length <= 5 m.
         Usual: 0.4 .. 1 m (outside: a warning).
-        Default: 0.71 m.
+        Default: 0.71 m (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:0.686:0.737 (nominal 0.71).
-    ix : float, kg m^2
+    ix : float, kg m^2 [Racket]
         Moment of inertia about the long axis, kg m^2 (1e-7 ..= 1e4).
         Allowed: 1e-7 <= ix <= 10000 kg m^2.
         Usual: 0.0003 .. 0.006 kg m^2 (outside: a warning).
-        Default: 0.0015 kg m^2.
+        Default: 0.0015 kg m^2 (the paper's; with racket=, the racket file's).
+        Used only off the long axis (r != 0) or for an oblique ball.
         Declared uncertainty: uniform:0.0012:0.0018 (nominal 0.0015).
-    half_width : float, m
+    half_width : float, m [Racket]
         Half-width of the string face, m (1e-3 ..= 1): the largest |r|.
         Allowed: 0.001 <= half_width <= 1 m.
         Usual: 0.05 .. 0.2 m (outside: a warning).
-        Default: 0.125 m.
-    mb : float, kg
+        Default: 0.125 m (the paper's; with racket=, the racket file's).
+        Used only off the long axis (r != 0).
+    mb : float, kg [Ball]
         Ball mass, kg (1e-4 ..= 10).
         Allowed: 0.0001 <= mb <= 10 kg.
         Usual: 0.02 .. 0.2 kg (outside: a warning).
-        Default: 0.057 kg.
+        Default: 0.057 kg (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:0.0558:0.0576 (nominal 0.057).
-    k1 : float, N/m
+    k1 : float, N/m [Ball]
         Ball compression stiffness k1, N/m (1 ..= 1e9).
         Allowed: 1 <= k1 <= 1e9 N/m.
         Usual: 5000 .. 200000 N/m (outside: a warning).
-        Default: 30000 N/m.
+        Default: 30000 N/m (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:24000:36000 (nominal 30000).
-    p : float
+    p : float [Ball]
         Ball hysteresis exponent p (1 < p <= 10).
+        Allowed: 1 < p <= 10.
         Usual: 1.2 .. 5 (outside: a warning).
-        Default: 2.55.
+        Default: 2.55 (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:2.44445:2.7737 (nominal 2.55).
-    v1 : float, m/s
+    v1 : float, m/s [Impact]
         Incident ball speed, m/s (1e-3 ..= 1e3).
         Allowed: 0.001 <= v1 <= 1000 m/s.
         Usual: 0 .. 70 m/s (outside: a warning).
         Default: 7.05938 m/s.
         Declared uncertainty: uniform:27:33 (nominal 30).
-    segments : int
+    segments : int [Numerics]
         Number of beam segments N (4..=400).
+        Allowed: 4 <= segments <= 400.
         Default: 39.
-    load : str
+    load : str [Numerics]
         Load rule: node (the paper's) or hat.
         ``node``
         ``hat``
         Default: hat.
-    dt : float, s
+    dt : float, s [Numerics]
         Time step, s (must be below the stability limit).
-        Default: auto.
-    solver : str
+        Allowed: 0 < dt, below the stability limit of the beam.
+        Default: auto (the converged automatic step).
+        Used only with frame = beam and solver = fd.
+    solver : str [Numerics]
         Solver: fd (explicit time stepping, the reference) or modal (modal superposition).
         ``fd``
         ``modal``
         Default: fd.
-    frame : str
+        Used only with frame = beam.
+    frame : str [Racket]
         Frame model: beam (the paper's flexible beam) or rigid (closed-form rigid racket).
         ``beam``: The paper's flexible beam
         ``rigid``: The textbook rigid racket (effective mass at the impact point, plus twist), in closed form
         Default: beam.
-    grip : str
+    grip : str [Racket]
         Grip: free (the paper's) or hand (springs and dampers over the grip length).
         ``free``: The paper's freely suspended racket
         ``hand``: A hand: springs and dampers spread over the grip length from the butt
         Default: free.
-    strings : str
+    strings : str [Strings]
         String law: linear (the paper's) or stiffening.
         ``linear``: The paper's constant `k_s`
         ``stiffening``: `F = k_s Y_s (1 + s (Y_s / d)^2)`: the secant stiffness grows by the fraction `s` at the deflection `d` (the paper quotes about 10 % for large deflections)
         Default: linear.
-    string_stiffening : float
+    string_stiffening : float [Strings]
         Stiffening fraction s at the stiffening deflection (0 ..= 10).
         Allowed: 0 <= string_stiffening <= 10.
         Default: 0.1.
-    stiffening_deflection : float, m
+        Used only with strings = stiffening.
+    stiffening_deflection : float, m [Strings]
         Deflection at which the strings are stiffer by s, m (1e-4 ..= 1).
         Allowed: 0.0001 <= stiffening_deflection <= 1 m.
         Default: 0.04 m.
-    hand_stiffness : float, N/m
+        Used only with strings = stiffening.
+    hand_stiffness : float, N/m [Racket]
         Total hand stiffness, N/m (0 ..= 1e7).
         Allowed: 0 <= hand_stiffness <= 1e7 N/m.
         Default: 5000 N/m.
-    hand_damping : float, N s/m
+        Used only with grip = hand.
+    hand_damping : float, N s/m [Racket]
         Total hand damping, N s/m (0 ..= 1e4).
         Allowed: 0 <= hand_damping <= 10000 N s/m.
         Default: 10 N s/m.
-    grip_length : float, m
+        Used only with grip = hand.
+    grip_length : float, m [Racket]
         Grip length from the butt, m (up to half the racket).
+        Allowed: 1e-3 <= grip_length <= length / 2.
         Default: 0.15 m.
-    angle_deg : float, deg
+        Used only with grip = hand.
+    angle_deg : float, deg [Oblique impact]
         Incidence angle from the string-plane normal, degrees (0 ..= 85).
         Allowed: 0 <= angle_deg <= 85 deg.
         Usual: 0 .. 80 deg (outside: a warning).
         Default: 0 deg.
-    azimuth_deg : float, deg
+    azimuth_deg : float, deg [Oblique impact]
         In-plane direction of the incoming ball, degrees from the long axis towards the handle; 90 = across the face to +r (-360 ..= 360).
         Allowed: -360 <= azimuth_deg <= 360 deg.
         Default: 0 deg.
-    spin_rpm : float, rpm
+        Used only for an oblique or spinning ball.
+    spin_rpm : float, rpm [Oblique impact]
         Incoming spin, rpm; > 0 topspin relative to the ball's motion along the strings (-2e4 ..= 2e4).
         Allowed: -20000 <= spin_rpm <= 20000 rpm.
         Usual: -6000 .. 6000 rpm (outside: a warning).
         Default: 0 rpm.
-    mu : float
+    mu : float [Oblique impact]
         Friction coefficient of ball on strings (0 ..= 2).
         Allowed: 0 <= mu <= 2.
         Usual: 0 .. 1 (outside: a warning).
         Default: 0.4.
-    kt : float, N/m
+        Used only for an oblique or spinning ball.
+    kt : float, N/m [Oblique impact]
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
         Default: 20000 N/m.
-    tangential : str
+        Used only for an oblique or spinning ball.
+    tangential : str [Oblique impact]
         Tangential contact law: elastic, loss, offset, bed, radius or physical (all four).
         ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex; the default)
@@ -687,12 +733,14 @@ def sweep(
         ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)
         ``physical``: All four mechanisms
         Default: loss.
-    mu_ss : float
-        String-to-string friction coefficient, for the bed mechanism (0 ..= 2).
+        Used only for an oblique or spinning ball.
+    mu_ss : float [Strings]
+        String-to-string friction coefficient (0 ..= 2).
         Allowed: 0 <= mu_ss <= 2.
         Usual: 0 .. 0.5 (outside: a warning).
         Default: 0.08.
-    string : str
+        Used only for an oblique or spinning ball, with tangential = bed or physical.
+    string : str [Strings]
         The string, from data/strings: sets mu and mu-ss (its TWU database values).
         ``none``: No string named: mu and mu-ss as given (the default)
         ``tonic-gut-16``: Babolat Tonic Gut 16 (gut; no friction row of its own: the TWU gut median)
@@ -703,26 +751,32 @@ def sweep(
         ``nrg2-16``: Tecnifibre NRG2 16 (nylon)
         ``nxt-16``: Wilson NXT 16 (nylon)
         Default: none.
-    ball_radius : float, m
+        Used only for an oblique or spinning ball.
+    ball_radius : float, m [Ball]
         Ball radius, m (1e-3 ..= 1).
         Allowed: 0.001 <= ball_radius <= 1 m.
         Usual: 0.015 .. 0.05 m (outside: a warning).
         Default: 0.033 m.
-    ball_inertia_factor : float
+        Used only for an oblique or spinning ball.
+    ball_inertia_factor : float [Ball]
         Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55).
+        Allowed: 0.1 <= ball_inertia_factor <= 2/3.
         Usual: 0.4 .. 0.67 (outside: a warning).
         Default: 0.55.
-    ball_ex : float
-        The ball's tangential restitution in a gripping bounce e_x, for the loss mechanism (0.01 ..= 0.99).
+        Used only for an oblique or spinning ball.
+    ball_ex : float [Ball]
+        The ball's tangential restitution in a gripping bounce e_x (0.01 ..= 0.99).
         Allowed: 0.01 <= ball_ex <= 0.99.
         Usual: 0.05 .. 0.5 (outside: a warning).
         Default: 0.135.
+        Used only for an oblique or spinning ball, with tangential = loss or physical.
         Declared uncertainty: uniform:0.1:0.17 (nominal 0.135).
-    ball_kdyn : float, N/m
-        The ball's dynamic compression stiffness for the contact geometry, for the radius and offset mechanisms, N/m (1e3 ..= 1e9).
+    ball_kdyn : float, N/m [Ball]
+        The ball's dynamic compression stiffness for the contact geometry, N/m (1e3 ..= 1e9).
         Allowed: 1000 <= ball_kdyn <= 1e9 N/m.
         Usual: 10000 .. 300000 N/m (outside: a warning).
         Default: 78905.1 N/m.
+        Used only for an oblique or spinning ball, with tangential = offset, radius or physical.
         Declared uncertainty: uniform:57971.1:113623 (nominal 78905.1).
     """
 
@@ -806,129 +860,143 @@ def face_map(
         the paper's racket, strings and ball, and the impact moves to the centre of its head.
     config : str or os.PathLike, optional
         A TOML file with any parameter key (as the command line's --config); keywords win.
-    ks : float, N/m
+    ks : float, N/m [Strings]
         String-plane stiffness, N/m (1 ..= 1e12).
         Allowed: 1 <= ks <= 1e12 N/m.
         Usual: 5000 .. 200000 N/m (outside: a warning).
-        Default: 40000 N/m.
+        Default: 40000 N/m (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:36000:44000 (nominal 40000).
-    ei : float, N m^2
+    ei : float, N m^2 [Racket]
         Frame bending stiffness EI, N m^2 (1e-2 ..= 1e9).
         Allowed: 0.01 <= ei <= 1e9 N m^2.
-        Default: 150 N m^2.
+        Default: 150 N m^2 (the paper's; with racket=, the racket file's).
+        Used only with frame = beam.
         Declared uncertainty: uniform:121.5:181.5 (nominal 150).
-    mass : float, kg
+    mass : float, kg [Racket]
         Racket mass, kg (1e-3 ..= 1e6).
-        Allowed: 0.001 <= mass <= 1e6 kg.
+        Allowed: 0.001 <= mass <= 1000000 kg.
         Usual: 0.15 .. 1 kg (outside: a warning).
-        Default: 0.34 kg.
+        Default: 0.34 kg (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:0.32:0.36 (nominal 0.34).
-    length : float, m
+    length : float, m [Racket]
         Racket length, m (0.05 ..= 5).
         Allowed: 0.05 <= length <= 5 m.
         Usual: 0.4 .. 1 m (outside: a warning).
-        Default: 0.71 m.
+        Default: 0.71 m (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:0.686:0.737 (nominal 0.71).
-    ix : float, kg m^2
+    ix : float, kg m^2 [Racket]
         Moment of inertia about the long axis, kg m^2 (1e-7 ..= 1e4).
         Allowed: 1e-7 <= ix <= 10000 kg m^2.
         Usual: 0.0003 .. 0.006 kg m^2 (outside: a warning).
-        Default: 0.0015 kg m^2.
+        Default: 0.0015 kg m^2 (the paper's; with racket=, the racket file's).
+        Used only off the long axis (r != 0) or for an oblique ball.
         Declared uncertainty: uniform:0.0012:0.0018 (nominal 0.0015).
-    half_width : float, m
+    half_width : float, m [Racket]
         Half-width of the string face, m (1e-3 ..= 1): the largest |r|.
         Allowed: 0.001 <= half_width <= 1 m.
         Usual: 0.05 .. 0.2 m (outside: a warning).
-        Default: 0.125 m.
-    mb : float, kg
+        Default: 0.125 m (the paper's; with racket=, the racket file's).
+        Used only off the long axis (r != 0).
+    mb : float, kg [Ball]
         Ball mass, kg (1e-4 ..= 10).
         Allowed: 0.0001 <= mb <= 10 kg.
         Usual: 0.02 .. 0.2 kg (outside: a warning).
-        Default: 0.057 kg.
+        Default: 0.057 kg (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:0.0558:0.0576 (nominal 0.057).
-    k1 : float, N/m
+    k1 : float, N/m [Ball]
         Ball compression stiffness k1, N/m (1 ..= 1e9).
         Allowed: 1 <= k1 <= 1e9 N/m.
         Usual: 5000 .. 200000 N/m (outside: a warning).
-        Default: 30000 N/m.
+        Default: 30000 N/m (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:24000:36000 (nominal 30000).
-    p : float
+    p : float [Ball]
         Ball hysteresis exponent p (1 < p <= 10).
+        Allowed: 1 < p <= 10.
         Usual: 1.2 .. 5 (outside: a warning).
-        Default: 2.55.
+        Default: 2.55 (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:2.44445:2.7737 (nominal 2.55).
-    v1 : float, m/s
+    v1 : float, m/s [Impact]
         Incident ball speed, m/s (1e-3 ..= 1e3).
         Allowed: 0.001 <= v1 <= 1000 m/s.
         Usual: 0 .. 70 m/s (outside: a warning).
         Default: 7.05938 m/s.
         Declared uncertainty: uniform:27:33 (nominal 30).
-    segments : int
+    segments : int [Numerics]
         Number of beam segments N (4..=400).
+        Allowed: 4 <= segments <= 400.
         Default: 39.
-    load : str
+    load : str [Numerics]
         Load rule: node (the paper's) or hat.
         ``node``
         ``hat``
         Default: hat.
-    frame : str
+    frame : str [Racket]
         Frame model: beam (the paper's flexible beam) or rigid (closed-form rigid racket).
         ``beam``: The paper's flexible beam
         ``rigid``: The textbook rigid racket (effective mass at the impact point, plus twist), in closed form
         Default: beam.
-    grip : str
+    grip : str [Racket]
         Grip: free (the paper's) or hand (springs and dampers over the grip length).
         ``free``: The paper's freely suspended racket
         ``hand``: A hand: springs and dampers spread over the grip length from the butt
         Default: free.
-    strings : str
+    strings : str [Strings]
         String law: linear (the paper's) or stiffening.
         ``linear``: The paper's constant `k_s`
         ``stiffening``: `F = k_s Y_s (1 + s (Y_s / d)^2)`: the secant stiffness grows by the fraction `s` at the deflection `d` (the paper quotes about 10 % for large deflections)
         Default: linear.
-    string_stiffening : float
+    string_stiffening : float [Strings]
         Stiffening fraction s at the stiffening deflection (0 ..= 10).
         Allowed: 0 <= string_stiffening <= 10.
         Default: 0.1.
-    stiffening_deflection : float, m
+        Used only with strings = stiffening.
+    stiffening_deflection : float, m [Strings]
         Deflection at which the strings are stiffer by s, m (1e-4 ..= 1).
         Allowed: 0.0001 <= stiffening_deflection <= 1 m.
         Default: 0.04 m.
-    hand_stiffness : float, N/m
+        Used only with strings = stiffening.
+    hand_stiffness : float, N/m [Racket]
         Total hand stiffness, N/m (0 ..= 1e7).
         Allowed: 0 <= hand_stiffness <= 1e7 N/m.
         Default: 5000 N/m.
-    hand_damping : float, N s/m
+        Used only with grip = hand.
+    hand_damping : float, N s/m [Racket]
         Total hand damping, N s/m (0 ..= 1e4).
         Allowed: 0 <= hand_damping <= 10000 N s/m.
         Default: 10 N s/m.
-    grip_length : float, m
+        Used only with grip = hand.
+    grip_length : float, m [Racket]
         Grip length from the butt, m (up to half the racket).
+        Allowed: 1e-3 <= grip_length <= length / 2.
         Default: 0.15 m.
-    angle_deg : float, deg
+        Used only with grip = hand.
+    angle_deg : float, deg [Oblique impact]
         Incidence angle from the string-plane normal, degrees (0 ..= 85).
         Allowed: 0 <= angle_deg <= 85 deg.
         Usual: 0 .. 80 deg (outside: a warning).
         Default: 0 deg.
-    azimuth_deg : float, deg
+    azimuth_deg : float, deg [Oblique impact]
         In-plane direction of the incoming ball, degrees from the long axis towards the handle; 90 = across the face to +r (-360 ..= 360).
         Allowed: -360 <= azimuth_deg <= 360 deg.
         Default: 0 deg.
-    spin_rpm : float, rpm
+        Used only for an oblique or spinning ball.
+    spin_rpm : float, rpm [Oblique impact]
         Incoming spin, rpm; > 0 topspin relative to the ball's motion along the strings (-2e4 ..= 2e4).
         Allowed: -20000 <= spin_rpm <= 20000 rpm.
         Usual: -6000 .. 6000 rpm (outside: a warning).
         Default: 0 rpm.
-    mu : float
+    mu : float [Oblique impact]
         Friction coefficient of ball on strings (0 ..= 2).
         Allowed: 0 <= mu <= 2.
         Usual: 0 .. 1 (outside: a warning).
         Default: 0.4.
-    kt : float, N/m
+        Used only for an oblique or spinning ball.
+    kt : float, N/m [Oblique impact]
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
         Default: 20000 N/m.
-    tangential : str
+        Used only for an oblique or spinning ball.
+    tangential : str [Oblique impact]
         Tangential contact law: elastic, loss, offset, bed, radius or physical (all four).
         ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex; the default)
@@ -937,12 +1005,14 @@ def face_map(
         ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)
         ``physical``: All four mechanisms
         Default: loss.
-    mu_ss : float
-        String-to-string friction coefficient, for the bed mechanism (0 ..= 2).
+        Used only for an oblique or spinning ball.
+    mu_ss : float [Strings]
+        String-to-string friction coefficient (0 ..= 2).
         Allowed: 0 <= mu_ss <= 2.
         Usual: 0 .. 0.5 (outside: a warning).
         Default: 0.08.
-    string : str
+        Used only for an oblique or spinning ball, with tangential = bed or physical.
+    string : str [Strings]
         The string, from data/strings: sets mu and mu-ss (its TWU database values).
         ``none``: No string named: mu and mu-ss as given (the default)
         ``tonic-gut-16``: Babolat Tonic Gut 16 (gut; no friction row of its own: the TWU gut median)
@@ -953,26 +1023,32 @@ def face_map(
         ``nrg2-16``: Tecnifibre NRG2 16 (nylon)
         ``nxt-16``: Wilson NXT 16 (nylon)
         Default: none.
-    ball_radius : float, m
+        Used only for an oblique or spinning ball.
+    ball_radius : float, m [Ball]
         Ball radius, m (1e-3 ..= 1).
         Allowed: 0.001 <= ball_radius <= 1 m.
         Usual: 0.015 .. 0.05 m (outside: a warning).
         Default: 0.033 m.
-    ball_inertia_factor : float
+        Used only for an oblique or spinning ball.
+    ball_inertia_factor : float [Ball]
         Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55).
+        Allowed: 0.1 <= ball_inertia_factor <= 2/3.
         Usual: 0.4 .. 0.67 (outside: a warning).
         Default: 0.55.
-    ball_ex : float
-        The ball's tangential restitution in a gripping bounce e_x, for the loss mechanism (0.01 ..= 0.99).
+        Used only for an oblique or spinning ball.
+    ball_ex : float [Ball]
+        The ball's tangential restitution in a gripping bounce e_x (0.01 ..= 0.99).
         Allowed: 0.01 <= ball_ex <= 0.99.
         Usual: 0.05 .. 0.5 (outside: a warning).
         Default: 0.135.
+        Used only for an oblique or spinning ball, with tangential = loss or physical.
         Declared uncertainty: uniform:0.1:0.17 (nominal 0.135).
-    ball_kdyn : float, N/m
-        The ball's dynamic compression stiffness for the contact geometry, for the radius and offset mechanisms, N/m (1e3 ..= 1e9).
+    ball_kdyn : float, N/m [Ball]
+        The ball's dynamic compression stiffness for the contact geometry, N/m (1e3 ..= 1e9).
         Allowed: 1000 <= ball_kdyn <= 1e9 N/m.
         Usual: 10000 .. 300000 N/m (outside: a warning).
         Default: 78905.1 N/m.
+        Used only for an oblique or spinning ball, with tangential = offset, radius or physical.
         Declared uncertainty: uniform:57971.1:113623 (nominal 78905.1).
     """
 
@@ -1068,143 +1144,162 @@ def uncertainty(
         the paper's racket, strings and ball, and the impact moves to the centre of its head.
     config : str or os.PathLike, optional
         A TOML file with any parameter key (as the command line's --config); keywords win.
-    x : float, m
+    x : float, m [Impact]
         Impact distance from the tip, m (0 <= x <= length).
-        Default: 0.16 m.
-    r : float, m
+        Allowed: 0 <= x <= length.
+        Default: 0.16 m (the centre of the string face; with racket=, the centre of its head).
+    r : float, m [Impact]
         Impact distance from the long axis, m (|r| <= half-width).
-        Default: 0 m.
-    ks : float, N/m
+        Allowed: |r| <= half-width.
+        Default: 0 m (on the long axis).
+    ks : float, N/m [Strings]
         String-plane stiffness, N/m (1 ..= 1e12).
         Allowed: 1 <= ks <= 1e12 N/m.
         Usual: 5000 .. 200000 N/m (outside: a warning).
-        Default: 40000 N/m.
+        Default: 40000 N/m (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:36000:44000 (nominal 40000).
-    ei : float, N m^2
+    ei : float, N m^2 [Racket]
         Frame bending stiffness EI, N m^2 (1e-2 ..= 1e9).
         Allowed: 0.01 <= ei <= 1e9 N m^2.
-        Default: 150 N m^2.
+        Default: 150 N m^2 (the paper's; with racket=, the racket file's).
+        Used only with frame = beam.
         Declared uncertainty: uniform:121.5:181.5 (nominal 150).
-    mass : float, kg
+    mass : float, kg [Racket]
         Racket mass, kg (1e-3 ..= 1e6).
-        Allowed: 0.001 <= mass <= 1e6 kg.
+        Allowed: 0.001 <= mass <= 1000000 kg.
         Usual: 0.15 .. 1 kg (outside: a warning).
-        Default: 0.34 kg.
+        Default: 0.34 kg (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:0.32:0.36 (nominal 0.34).
-    length : float, m
+    length : float, m [Racket]
         Racket length, m (0.05 ..= 5).
         Allowed: 0.05 <= length <= 5 m.
         Usual: 0.4 .. 1 m (outside: a warning).
-        Default: 0.71 m.
+        Default: 0.71 m (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:0.686:0.737 (nominal 0.71).
-    ix : float, kg m^2
+    ix : float, kg m^2 [Racket]
         Moment of inertia about the long axis, kg m^2 (1e-7 ..= 1e4).
         Allowed: 1e-7 <= ix <= 10000 kg m^2.
         Usual: 0.0003 .. 0.006 kg m^2 (outside: a warning).
-        Default: 0.0015 kg m^2.
+        Default: 0.0015 kg m^2 (the paper's; with racket=, the racket file's).
+        Used only off the long axis (r != 0) or for an oblique ball.
         Declared uncertainty: uniform:0.0012:0.0018 (nominal 0.0015).
-    half_width : float, m
+    half_width : float, m [Racket]
         Half-width of the string face, m (1e-3 ..= 1): the largest |r|.
         Allowed: 0.001 <= half_width <= 1 m.
         Usual: 0.05 .. 0.2 m (outside: a warning).
-        Default: 0.125 m.
-    mb : float, kg
+        Default: 0.125 m (the paper's; with racket=, the racket file's).
+        Used only off the long axis (r != 0).
+    mb : float, kg [Ball]
         Ball mass, kg (1e-4 ..= 10).
         Allowed: 0.0001 <= mb <= 10 kg.
         Usual: 0.02 .. 0.2 kg (outside: a warning).
-        Default: 0.057 kg.
+        Default: 0.057 kg (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:0.0558:0.0576 (nominal 0.057).
-    k1 : float, N/m
+    k1 : float, N/m [Ball]
         Ball compression stiffness k1, N/m (1 ..= 1e9).
         Allowed: 1 <= k1 <= 1e9 N/m.
         Usual: 5000 .. 200000 N/m (outside: a warning).
-        Default: 30000 N/m.
+        Default: 30000 N/m (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:24000:36000 (nominal 30000).
-    p : float
+    p : float [Ball]
         Ball hysteresis exponent p (1 < p <= 10).
+        Allowed: 1 < p <= 10.
         Usual: 1.2 .. 5 (outside: a warning).
-        Default: 2.55.
+        Default: 2.55 (the paper's; with racket=, the racket file's).
         Declared uncertainty: uniform:2.44445:2.7737 (nominal 2.55).
-    v1 : float, m/s
+    v1 : float, m/s [Impact]
         Incident ball speed, m/s (1e-3 ..= 1e3).
         Allowed: 0.001 <= v1 <= 1000 m/s.
         Usual: 0 .. 70 m/s (outside: a warning).
         Default: 7.05938 m/s.
         Declared uncertainty: uniform:27:33 (nominal 30).
-    segments : int
+    segments : int [Numerics]
         Number of beam segments N (4..=400).
+        Allowed: 4 <= segments <= 400.
         Default: 39.
-    load : str
+    load : str [Numerics]
         Load rule: node (the paper's) or hat.
         ``node``
         ``hat``
         Default: hat.
-    dt : float, s
+    dt : float, s [Numerics]
         Time step, s (must be below the stability limit).
-        Default: auto.
-    solver : str
+        Allowed: 0 < dt, below the stability limit of the beam.
+        Default: auto (the converged automatic step).
+        Used only with frame = beam and solver = fd.
+    solver : str [Numerics]
         Solver: fd (explicit time stepping, the reference) or modal (modal superposition).
         ``fd``
         ``modal``
         Default: fd.
-    frame : str
+        Used only with frame = beam.
+    frame : str [Racket]
         Frame model: beam (the paper's flexible beam) or rigid (closed-form rigid racket).
         ``beam``: The paper's flexible beam
         ``rigid``: The textbook rigid racket (effective mass at the impact point, plus twist), in closed form
         Default: beam.
-    grip : str
+    grip : str [Racket]
         Grip: free (the paper's) or hand (springs and dampers over the grip length).
         ``free``: The paper's freely suspended racket
         ``hand``: A hand: springs and dampers spread over the grip length from the butt
         Default: free.
-    strings : str
+    strings : str [Strings]
         String law: linear (the paper's) or stiffening.
         ``linear``: The paper's constant `k_s`
         ``stiffening``: `F = k_s Y_s (1 + s (Y_s / d)^2)`: the secant stiffness grows by the fraction `s` at the deflection `d` (the paper quotes about 10 % for large deflections)
         Default: linear.
-    string_stiffening : float
+    string_stiffening : float [Strings]
         Stiffening fraction s at the stiffening deflection (0 ..= 10).
         Allowed: 0 <= string_stiffening <= 10.
         Default: 0.1.
-    stiffening_deflection : float, m
+        Used only with strings = stiffening.
+    stiffening_deflection : float, m [Strings]
         Deflection at which the strings are stiffer by s, m (1e-4 ..= 1).
         Allowed: 0.0001 <= stiffening_deflection <= 1 m.
         Default: 0.04 m.
-    hand_stiffness : float, N/m
+        Used only with strings = stiffening.
+    hand_stiffness : float, N/m [Racket]
         Total hand stiffness, N/m (0 ..= 1e7).
         Allowed: 0 <= hand_stiffness <= 1e7 N/m.
         Default: 5000 N/m.
-    hand_damping : float, N s/m
+        Used only with grip = hand.
+    hand_damping : float, N s/m [Racket]
         Total hand damping, N s/m (0 ..= 1e4).
         Allowed: 0 <= hand_damping <= 10000 N s/m.
         Default: 10 N s/m.
-    grip_length : float, m
+        Used only with grip = hand.
+    grip_length : float, m [Racket]
         Grip length from the butt, m (up to half the racket).
+        Allowed: 1e-3 <= grip_length <= length / 2.
         Default: 0.15 m.
-    angle_deg : float, deg
+        Used only with grip = hand.
+    angle_deg : float, deg [Oblique impact]
         Incidence angle from the string-plane normal, degrees (0 ..= 85).
         Allowed: 0 <= angle_deg <= 85 deg.
         Usual: 0 .. 80 deg (outside: a warning).
         Default: 0 deg.
-    azimuth_deg : float, deg
+    azimuth_deg : float, deg [Oblique impact]
         In-plane direction of the incoming ball, degrees from the long axis towards the handle; 90 = across the face to +r (-360 ..= 360).
         Allowed: -360 <= azimuth_deg <= 360 deg.
         Default: 0 deg.
-    spin_rpm : float, rpm
+        Used only for an oblique or spinning ball.
+    spin_rpm : float, rpm [Oblique impact]
         Incoming spin, rpm; > 0 topspin relative to the ball's motion along the strings (-2e4 ..= 2e4).
         Allowed: -20000 <= spin_rpm <= 20000 rpm.
         Usual: -6000 .. 6000 rpm (outside: a warning).
         Default: 0 rpm.
-    mu : float
+    mu : float [Oblique impact]
         Friction coefficient of ball on strings (0 ..= 2).
         Allowed: 0 <= mu <= 2.
         Usual: 0 .. 1 (outside: a warning).
         Default: 0.4.
-    kt : float, N/m
+        Used only for an oblique or spinning ball.
+    kt : float, N/m [Oblique impact]
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
         Default: 20000 N/m.
-    tangential : str
+        Used only for an oblique or spinning ball.
+    tangential : str [Oblique impact]
         Tangential contact law: elastic, loss, offset, bed, radius or physical (all four).
         ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex; the default)
@@ -1213,12 +1308,14 @@ def uncertainty(
         ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)
         ``physical``: All four mechanisms
         Default: loss.
-    mu_ss : float
-        String-to-string friction coefficient, for the bed mechanism (0 ..= 2).
+        Used only for an oblique or spinning ball.
+    mu_ss : float [Strings]
+        String-to-string friction coefficient (0 ..= 2).
         Allowed: 0 <= mu_ss <= 2.
         Usual: 0 .. 0.5 (outside: a warning).
         Default: 0.08.
-    string : str
+        Used only for an oblique or spinning ball, with tangential = bed or physical.
+    string : str [Strings]
         The string, from data/strings: sets mu and mu-ss (its TWU database values).
         ``none``: No string named: mu and mu-ss as given (the default)
         ``tonic-gut-16``: Babolat Tonic Gut 16 (gut; no friction row of its own: the TWU gut median)
@@ -1229,26 +1326,32 @@ def uncertainty(
         ``nrg2-16``: Tecnifibre NRG2 16 (nylon)
         ``nxt-16``: Wilson NXT 16 (nylon)
         Default: none.
-    ball_radius : float, m
+        Used only for an oblique or spinning ball.
+    ball_radius : float, m [Ball]
         Ball radius, m (1e-3 ..= 1).
         Allowed: 0.001 <= ball_radius <= 1 m.
         Usual: 0.015 .. 0.05 m (outside: a warning).
         Default: 0.033 m.
-    ball_inertia_factor : float
+        Used only for an oblique or spinning ball.
+    ball_inertia_factor : float [Ball]
         Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55).
+        Allowed: 0.1 <= ball_inertia_factor <= 2/3.
         Usual: 0.4 .. 0.67 (outside: a warning).
         Default: 0.55.
-    ball_ex : float
-        The ball's tangential restitution in a gripping bounce e_x, for the loss mechanism (0.01 ..= 0.99).
+        Used only for an oblique or spinning ball.
+    ball_ex : float [Ball]
+        The ball's tangential restitution in a gripping bounce e_x (0.01 ..= 0.99).
         Allowed: 0.01 <= ball_ex <= 0.99.
         Usual: 0.05 .. 0.5 (outside: a warning).
         Default: 0.135.
+        Used only for an oblique or spinning ball, with tangential = loss or physical.
         Declared uncertainty: uniform:0.1:0.17 (nominal 0.135).
-    ball_kdyn : float, N/m
-        The ball's dynamic compression stiffness for the contact geometry, for the radius and offset mechanisms, N/m (1e3 ..= 1e9).
+    ball_kdyn : float, N/m [Ball]
+        The ball's dynamic compression stiffness for the contact geometry, N/m (1e3 ..= 1e9).
         Allowed: 1000 <= ball_kdyn <= 1e9 N/m.
         Usual: 10000 .. 300000 N/m (outside: a warning).
         Default: 78905.1 N/m.
+        Used only for an oblique or spinning ball, with tangential = offset, radius or physical.
         Declared uncertainty: uniform:57971.1:113623 (nominal 78905.1).
     """
 

@@ -87,11 +87,13 @@ fn defaults() -> racket_impact::Params {
     racket_impact::racket::resolve(None, &Overrides::default()).map(|(p, _)| p).unwrap_or_default()
 }
 
-/// The declaration of every parameter, as JSON: key, name (the key with underscores),
-/// help, what it is, unit, CSV column, kind (number, count, choice) with the choices, the
-/// allowed range, the usual range, the default as the flag spells it, and the declared
-/// uncertainty.
+/// The declaration of every parameter, as JSON: key (the flag), name (the identifier, the
+/// Python keyword), help, what it is, unit, CSV column, help heading, role (property or method
+/// option), when an impact uses it (in words), kind (number, count, choice) with the choices,
+/// the allowed range (as numbers where it is one, and in words), the usual range, the default
+/// as the flag spells it with how it is chosen, and the declared uncertainty.
 fn parameters() -> PyResult<String> {
+    use racket_impact::params::spec::{Check, Role};
     let defaults = defaults();
     let rows: Vec<serde_json::Value> = keys::ALL
         .iter()
@@ -104,21 +106,26 @@ fn parameters() -> PyResult<String> {
                 }
             };
             let range = match s.check {
-                racket_impact::params::spec::Check::Within(lo, hi) => serde_json::json!([lo, hi]),
+                Check::Within(lo, hi) => serde_json::json!([lo, hi]),
                 _ => serde_json::Value::Null,
             };
             serde_json::json!({
                 "key": s.key,
-                "name": s.key.replace('-', "_"),
+                "name": s.name,
                 "help": s.help(),
                 "what": s.what,
                 "unit": s.unit,
                 "column": s.column,
+                "heading": s.heading.title(),
+                "role": match s.role { Role::Property => "property", Role::MethodOption => "method option" },
+                "used_when": racket_impact::params::used::words(&s.used_when),
                 "kind": kind,
                 "choices": choices,
                 "range": range,
+                "range_text": s.range_text(),
                 "usual": s.usual.map(|(lo, hi)| [lo, hi]),
                 "default": keys::value_text(s.key, &defaults),
+                "default_words": s.default_words,
                 "uncertainty": s.uncertainty.map(|u| serde_json::json!({
                     "dist": u.dist.text(), "nominal": u.nominal, "source": u.source
                 })),
@@ -126,6 +133,12 @@ fn parameters() -> PyResult<String> {
         })
         .collect();
     json_text(&serde_json::Value::Array(rows))
+}
+
+/// The parameters a map sets itself, each with why (`study::map::MAP_SETS`), as JSON pairs.
+fn map_sets() -> PyResult<String> {
+    let rows: Vec<(&str, &str)> = racket_impact::study::map::MAP_SETS.iter().map(|(s, why)| (s.key, *why)).collect();
+    serde_json::to_string(&rows).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
 /// The result fields of one impact (`solve::outcome::FIELDS`), as JSON: key, unit, doc, flag
@@ -340,14 +353,14 @@ fn push(column: &mut Column, cell: &Cell<'_>) {
 /// the map `map` computes, without its files: (metadata JSON, table, (x, r, values), diagnostics
 /// JSON).
 fn face_map(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyAny>> {
-    use racket_impact::study::map::{MapRequest, Quantity, NOT_TAKEN};
+    use racket_impact::study::map::{MapRequest, Quantity, MAP_SETS};
     let mut sources = sources(args, "map")?;
     let quantity: String = arg(args, 3)?;
     let (nx, nr): (usize, usize) = (arg(args, 4)?, arg(args, 5)?);
     let compare_racket: Option<String> = arg(args, 6)?;
     let compare_tension_lb: Vec<f64> = arg(args, 7)?;
     // (the command has no flag for what the grid sets: a config file's values are noted)
-    sources.not_taken = NOT_TAKEN.to_vec();
+    sources.not_taken = MAP_SETS.iter().map(|(s, _)| s.key).collect();
     if compare_tension_lb.len() >= 2 {
         sources.set_by_options.extend(racket_impact::study::TENSION_SETS);
     }
@@ -467,6 +480,7 @@ where
 fn module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     add(m, c"parameters", c"parameters() -> JSON of every declared parameter", |_, _| parameters())?;
+    add(m, c"map_sets", c"map_sets() -> JSON [(key, why)] of what a map sets itself", |_, _| map_sets())?;
     add(m, c"result_fields", c"result_fields() -> JSON of every result field", |_, _| result_fields())?;
     add(m, c"simulate", c"simulate(racket, config, pairs) -> simulate's JSON", simulate)?;
     add(m, c"sweep", c"sweep(racket, config, axes) -> (columns, diagnostics JSON)", sweep)?;

@@ -72,9 +72,9 @@ def test_unknown_keyword_is_type_error_with_the_nearest_names():
         ri.simulate(kss=3e4)
     with pytest.raises(TypeError, match=r"sweep\(\) got an unexpected keyword argument 'angle'"):
         ri.sweep(angle=[1, 2])
-    with pytest.raises(TypeError, match="face_map\\(\\) got an unexpected keyword argument 'x' \\(the grid sets"):
+    with pytest.raises(TypeError, match="face_map\\(\\) got an unexpected keyword argument 'x': the grid sets the impact point"):
         ri.face_map(nx=5, nr=5, x=0.1)
-    with pytest.raises(TypeError, match="face_map\\(\\) got an unexpected keyword argument 'solver' \\(the grid sets"):
+    with pytest.raises(TypeError, match="face_map\\(\\) got an unexpected keyword argument 'solver': a map runs the modal solver"):
         ri.face_map(nx=5, nr=5, solver="fd")
     with pytest.raises(TypeError, match="at least one parameter"):
         ri.sweep()

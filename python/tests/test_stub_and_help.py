@@ -35,18 +35,22 @@ def entries(doc):
 
 def test_every_parameter_is_a_keyword_with_its_unit_range_and_default_in_the_help():
     text = pydoc.render_doc(ri.simulate, renderer=pydoc.plaintext)
-    assert "Default: 40000 N/m." in text and "ks : float, N/m" in text
+    assert "Default: 40000 N/m (the paper's; with racket=, the racket file's)." in text
+    assert "ks : float, N/m [Strings]" in text and "Used only for an oblique or spinning ball." in text
     signature = inspect.signature(ri.simulate)
     documented = entries(ri.simulate.__doc__)
     for p in ri.parameters():
         assert signature.parameters[p["name"]].kind is inspect.Parameter.KEYWORD_ONLY
         header, lines = documented[p["name"]]
         body = " ".join(lines)
-        assert header == f"{p['name']} : {dict(number='float', count='int', choice='str')[p['kind']]}" + (f", {p['unit']}" if p["unit"] else "")
+        kind = dict(number="float", count="int", choice="str")[p["kind"]]
+        assert header == f"{p['name']} : {kind}" + (f", {p['unit']}" if p["unit"] else "") + f" [{p['heading']}]"
         assert p["help"] in body, p["name"]
-        if p["range"]:
-            assert f"Allowed: {ri._num(p['range'][0])} <= {p['name']} <= {ri._num(p['range'][1])}" in body, p["name"]
+        if p["kind"] != "choice":
+            # (the library's words for the range: "1 <= ks <= 1e12 N/m", "|r| <= half-width")
+            assert f"Allowed: {p['range_text'].replace(p['key'], p['name'])}." in body, p["name"]
         assert p["default"] is not None and f"Default: {p['default']}" in body, p["name"]
+        assert (f"Used only {p['used_when']}." in body) == (p["used_when"] != "always"), p["name"]
         for c in p["choices"]:
             assert f"``{c['name']}``" in body
     # the keywords are the command line's parameter flags
@@ -68,5 +72,5 @@ def test_a_new_declaration_row_reaches_every_python_name(monkeypatch):
     for spelling in ("made_up", "made-up", "made_up_n_per_m"):
         assert ri._param(spelling, "simulate")["key"] == "made-up"
     assert ri._pairs({"made_up": 3e4}, "simulate") == [("made-up", "30000.0")]
-    assert "made_up : float, N/m" in ri._docstring(ri.simulate)
+    assert "made_up : float, N/m [Strings]" in ri._docstring(ri.simulate)
     assert "    made_up: float | str | None = None," in _stub.stub()

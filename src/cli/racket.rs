@@ -2,6 +2,7 @@
 
 use clap::Args;
 use racket_impact::numfmt::sig;
+use racket_impact::params;
 use racket_impact::racket::{self, Fitted};
 use racket_impact::{Error, Result};
 

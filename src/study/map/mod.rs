@@ -59,11 +59,6 @@ pub use request::{MapOutcome, MapRequest};
 /// Length of the default face of a racket without a head outline, m (the paper's "centre of
 /// the strings" is its centre, 16 cm from the tip); declared with the racket's parameters.
 pub use crate::params::DEFAULT_FACE_LENGTH;
-/// The parameters a map sets itself and so does not take (the `map` command has no flag for
-/// them; a config file's values are named as unused): the impact point, which the grid
-/// chooses, and the solver and its step (the modal solver wherever the variants allow it, else
-/// fd with its automatic step, [`with_map_solver`]).
-pub const NOT_TAKEN: [&str; 4] = ["x", "r", "solver", "dt"];
 /// Fewest grid points along either axis.
 pub const MIN_GRID: usize = 2;
 /// Most grid points along either axis.
