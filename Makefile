@@ -42,7 +42,7 @@ PYTHON_PATH = PATH="$$($(PYTHON) -c 'import sysconfig; print(sysconfig.get_path(
 python-test: build
 	@if $(PYTHON) -c "import $(shell echo $(PYTHON_TOOLS) | tr ' ' ',')" 2>/dev/null; then \
 		$(PYTHON_PATH) $(PYTHON) -m pip install --quiet --no-build-isolation --no-deps --upgrade --target target/python ./python && \
-		PYTHONPATH=target/python RACKET_IMPACT_BIN=$(BIN) $(PYTHON) -m pytest -q -p no:cacheprovider python/tests; \
+		PYTHONPATH=$(CURDIR)/target/python RACKET_IMPACT_BIN=$(BIN) $(PYTHON) -m pytest -q -p no:cacheprovider python/tests; \
 	elif [ -n "$$CI" ]; then \
 		echo "error: the Python tests need $(PYTHON) with $(PYTHON_TOOLS)" >&2; exit 1; \
 	else \
@@ -53,7 +53,7 @@ python-test: build
 # while it is stale).
 python-stub: build
 	$(PYTHON_PATH) $(PYTHON) -m pip install --quiet --no-build-isolation --no-deps --upgrade --target target/python ./python
-	PYTHONPATH=target/python $(PYTHON) -m racket_impact._stub > python/racket_impact/__init__.pyi
+	PYTHONPATH=$(CURDIR)/target/python $(PYTHON) -m racket_impact._stub > python/racket_impact/__init__.pyi
 
 # The string-face maps (CSV + PNG + JSON each; tests/map.rs checks the committed ones against
 # these lines).
