@@ -62,10 +62,10 @@ figures: build
 	$(BIN) map --racket paper-125hz --load node --quantity power --out figures/map_paper_power.csv
 	$(BIN) map --racket tweener --quantity power --out figures/map_tweener_power.csv
 	$(BIN) map --racket tweener --quantity power --compare-tension-lb 50,60 --out figures/map_tweener_50_vs_60lb.csv
-	$(BIN) report
+	$(BIN) report --summary
 
 report: build
-	$(BIN) report
+	$(BIN) report --summary
 
 # Deliberately re-bless: regenerate figures/ and REPORT.md, then rewrite the golden snapshots
 # (review `git diff golden/ figures/ REPORT.md` afterwards).

@@ -19,6 +19,16 @@ pub fn sig(v: f64, digits: usize) -> String {
     readable(rounded)
 }
 
+/// `v` as a message shows a value that was given: to `digits` significant digits, or to as
+/// many more (at most [`MESSAGE_DIGITS`]) as it takes to show it exactly where that is possible
+/// (`1.000001`, not `1`, which reads as another value; a computed `36666.666...` to `digits`).
+pub fn given(v: f64, digits: usize) -> String {
+    (digits.max(1)..=MESSAGE_DIGITS)
+        .map(|d| sig(v, d))
+        .find(|text| text.parse::<f64>() == Ok(v))
+        .unwrap_or_else(|| sig(v, digits))
+}
+
 /// `v` as a message shows it: the shortest form that reads back as `v`, plain (`0.16`,
 /// `40000`) or, where the plain form would run to many zeros (`|v| >= 1e7` or `|v| < 1e-4`),
 /// with an exponent (`1e30`, not 31 digits; `1.5e-7`).
@@ -245,6 +255,14 @@ mod tests {
             let expect: f64 = format!("{x:.5e}").parse().expect("parse");
             assert_eq!(back, expect, "{x} -> {s}");
         }
+    }
+
+    #[test]
+    fn a_given_value_shows_every_digit_it_was_given_with() {
+        // `--p 1.000001` once warned "p = 1 is outside the usual range"
+        assert_eq!(given(1.000001, 6), "1.000001");
+        assert_eq!(given(4e4 * 55.0 / 60.0, 6), "36666.7");
+        assert_eq!(given(0.057, 6), "0.057");
     }
 
     #[test]

@@ -114,3 +114,35 @@ fn make_test_builds_with_the_release_profile_make_figures_built() {
     };
     assert!(cargo_commands(&build).iter().any(|c| is(c, &["build"], &["--release"])), "{build:?}");
 }
+
+/// `make figures` ends with one line for the report (`report --summary`), not the whole of
+/// REPORT.md, which pushed the per-figure lines off the screen; that line names the file and
+/// the counts its headline gives.
+#[test]
+fn make_figures_ends_with_one_line_for_the_report() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let out = Command::new("make")
+        .args(["-n", "--no-print-directory", "figures"])
+        .current_dir(root)
+        .env_remove("MAKEFLAGS")
+        .output()
+        .expect("make runs");
+    let plan = String::from_utf8_lossy(&out.stdout);
+    let last: Vec<&str> = plan.lines().last().unwrap_or_default().split_whitespace().collect();
+    assert_eq!(last.get(1..), Some(&["report", "--summary"][..]), "{plan}");
+    let dir = tempfile::tempdir().unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_racket-impact"))
+        .args(["report", "--summary", "--out", "r.md"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let printed = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(printed.lines().count(), 1, "{printed}");
+    let report = std::fs::read_to_string(dir.path().join("r.md")).unwrap();
+    let headline = report.lines().find(|l| l.starts_with("**")).unwrap().split("**").nth(1).unwrap();
+    assert!(
+        printed.starts_with(&format!("wrote r.md: {headline}; conclusions under the inputs' uncertainty: ")),
+        "{printed}"
+    );
+}

@@ -303,6 +303,7 @@ const PROBES: &[(&str, &str, &[&str], &[&str])] = &[
     ("figures", "quiet", &["--quiet", "--only", "modes"], &["--only", "modes"]),
     ("report", "out", &["--out", "r.md"], &[]),
     ("report", "no_write", &["--no-write"], &[]),
+    ("report", "summary", &["--summary", "--out", "r.md"], &["--out", "r.md"]),
     ("report", "quiet", &["--quiet", "--no-write"], &["--no-write"]),
     ("racket", "racket", &["tweener"], &["players"]),
     ("racket", "list", &["--list"], &["players"]),

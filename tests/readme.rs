@@ -82,3 +82,55 @@ fn every_readme_example_runs_and_prints_what_the_readme_shows() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
+
+/// `uncertainty --claims`, README and REPORT.md tell the same counts of verdicts (the command
+/// once counted no borderline verdict where the report, which checks every verdict again at
+/// twice the samples, counted one).
+#[test]
+fn the_claims_counts_agree_in_the_command_readme_and_report() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let o = Command::new(env!("CARGO_BIN_EXE_racket-impact"))
+        .args(["uncertainty", "--claims", "--format", "json"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let count = |group: &str, verdict: &str| -> u64 {
+        json[group][verdict].as_u64().unwrap_or_else(|| panic!("{group}.{verdict} in {}", json[group]))
+    };
+    let claims = json["outputs"].as_object().unwrap().len() as u64;
+    let c = |v| count("conclusion_verdicts", v);
+    let n = |v| count("verdicts", v);
+    // the README's prose, a count of none written as a word
+    let readme = std::fs::read_to_string(format!("{root}/README.md")).unwrap();
+    let readme = readme.split_whitespace().collect::<Vec<_>>().join(" ");
+    let word = |k: u64, none: &str| if k == 0 { none.to_string() } else { k.to_string() };
+    let phrases = [
+        format!("{} of the {claims} hold in every sample", c("holds")),
+        format!("{} mostly", c("mostly")),
+        format!("{} are contested", c("contested")),
+        format!("{} fails", word(c("fails"), "none")),
+        format!("{} do not depend on the sampled inputs", c("independent")),
+        format!("{} hold over the whole 5-95 % interval", n("holds")),
+        format!("{} over part of it", n("part")),
+        format!("{} nowhere", n("not at all")),
+        format!("{} do not depend on the sampled inputs (a closed form", n("independent")),
+        format!("{} is borderline", word(n("borderline"), "none")),
+    ];
+    let missing: Vec<&String> = phrases.iter().filter(|p| !readme.contains(p.as_str())).collect();
+    assert!(missing.is_empty(), "README does not say what `uncertainty --claims` counts: {missing:?}");
+    // REPORT.md's two count lines
+    let report = std::fs::read_to_string(format!("{root}/REPORT.md")).unwrap();
+    let line =
+        |start: &str| report.lines().find(|l| l.starts_with(start)).unwrap_or_else(|| panic!("{start}")).to_string();
+    let conclusions = format!(
+        "**Conclusions: {} hold in every sample, {} mostly, {} contested, {} fail; {} do not depend on the sampled inputs; borderline, counted apart: {}.**",
+        c("holds"), c("mostly"), c("contested"), c("fails"), c("independent"), c("borderline")
+    );
+    assert_eq!(line("**Conclusions:"), conclusions);
+    let numbers = format!(
+        "**Numbers: {} hold over the whole interval, {} over part of it, {} not at all; {} do not depend on the sampled inputs; borderline, counted apart: {}.**",
+        n("holds"), n("part"), n("not at all"), n("independent"), n("borderline")
+    );
+    assert!(line("**Numbers:").starts_with(&numbers), "REPORT.md: {}\ncommand: {numbers}", line("**Numbers:"));
+}

@@ -96,6 +96,14 @@ pub fn warn(message: &str) {
     }
 }
 
+/// How long a run took, one line on stderr (`map: 861 impacts in 3.2 s`), unless `--quiet`: not
+/// on standard output, which the same command twice prints the same.
+pub fn elapsed_line(message: &str) {
+    if !QUIET.load(std::sync::atomic::Ordering::Relaxed) {
+        stderr_line(message);
+    }
+}
+
 /// Print each diagnostic as one `warning:` line, unless `--quiet` (the only place the library's
 /// diagnostics are printed).
 pub fn print_diagnostics<'a>(diagnostics: impl IntoIterator<Item = &'a Diagnostic>) {
@@ -169,37 +177,82 @@ pub fn check_used<'a>(sources: &Sources, params: impl IntoIterator<Item = &'a Pa
     sources.check_used(&params)
 }
 
-/// A progress bar on stderr for long runs: hidden, and shown only on a terminal once the run
-/// has taken more than a second.
+/// A progress bar (or spinner) on stderr for long runs: drawn only on a terminal, without
+/// `--quiet`, and only once the run has taken more than [`Progress::DELAY`] (a short run prints
+/// nothing); it ticks on its own, so the elapsed time moves during a long step, and it is cleared
+/// when dropped.
 pub struct Progress {
     bar: indicatif::ProgressBar,
     /// When the run started.
     pub started: std::time::Instant,
-    terminal: bool,
+    /// Dropped to tell the watcher the run is over.
+    stop: Option<std::sync::mpsc::Sender<()>>,
+    /// Shows the bar once [`Progress::DELAY`] has passed.
+    watcher: Option<std::thread::JoinHandle<()>>,
 }
 
 impl Progress {
+    /// How long a run goes before its progress is drawn.
+    pub const DELAY: std::time::Duration = std::time::Duration::from_secs(1);
+
+    /// A bar over `total` impacts, with their rate and the time left.
     pub fn new(total: u64) -> Self {
-        use std::io::IsTerminal;
-        let bar = indicatif::ProgressBar::hidden();
-        bar.set_length(total);
-        bar.set_style(
-            indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} impacts, {per_sec}, eta {eta}")
-                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-        );
-        Progress { bar, started: std::time::Instant::now(), terminal: std::io::stderr().is_terminal() }
+        Self::start(total, "{bar:40} {pos}/{len} impacts, {per_sec}, eta {eta}")
     }
 
-    pub fn update(&self, done: u64) {
-        if self.terminal && self.bar.is_hidden() && self.started.elapsed().as_secs_f64() > 1.0 {
-            self.bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+    /// A bar over `total` steps named `unit` (`experiments`), each named as it starts
+    /// ([`Progress::at`]), with the time elapsed.
+    pub fn steps(total: u64, unit: &str) -> Self {
+        Self::start(total, &format!("{{bar:30}} {{pos}}/{{len}} {unit}: {{msg}} ({{elapsed}})"))
+    }
+
+    /// A spinner for one long step told in `message`, with the time elapsed.
+    pub fn spinner(message: &str) -> Self {
+        let p = Self::start(0, "{spinner} {msg} ({elapsed})");
+        p.bar.set_message(message.to_string());
+        p
+    }
+
+    fn start(total: u64, template: &str) -> Self {
+        use std::io::IsTerminal;
+        let bar = indicatif::ProgressBar::with_draw_target(Some(total), indicatif::ProgressDrawTarget::hidden());
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(template)
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        let started = std::time::Instant::now();
+        if !std::io::stderr().is_terminal() || QUIET.load(std::sync::atomic::Ordering::Relaxed) {
+            return Progress { bar, started, stop: None, watcher: None };
         }
+        let (stop, stopped) = std::sync::mpsc::channel::<()>();
+        let shown = bar.clone();
+        let watcher = std::thread::spawn(move || {
+            if let Err(std::sync::mpsc::RecvTimeoutError::Timeout) = stopped.recv_timeout(Self::DELAY) {
+                shown.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+                shown.enable_steady_tick(std::time::Duration::from_millis(200));
+            }
+        });
+        Progress { bar, started, stop: Some(stop), watcher: Some(watcher) }
+    }
+
+    /// `done` of the total.
+    pub fn update(&self, done: u64) {
         self.bar.set_position(done);
+    }
+
+    /// Step `done` (0-based) of the total is `name`.
+    pub fn at(&self, done: u64, name: &str) {
+        self.bar.set_position(done);
+        self.bar.set_message(name.to_string());
     }
 }
 
 impl Drop for Progress {
     fn drop(&mut self) {
+        drop(self.stop.take());
+        if let Some(w) = self.watcher.take() {
+            let _ = w.join();
+        }
         self.bar.finish_and_clear();
     }
 }

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use clap::Args;
 use racket_impact::Result;
 
-use super::common::outln;
+use super::common::{outln, Progress};
 
 #[derive(Args, Debug)]
 pub struct FiguresArgs {
@@ -74,24 +74,40 @@ pub fn run(a: FiguresArgs) -> Result<()> {
             racket_impact::render::io::check_output_dir("out", &path)?;
         }
     }
-    let mut staged = racket_impact::render::io::Staged::new();
-    let mut lines = Vec::new();
-    for e in &selected {
-        let start = std::time::Instant::now();
-        let (table, files) = experiments::run_and_stage(e, &ctx, &out)?;
-        staged.append(files);
-        lines.push(format!(
-            "{:<24} {:>4} rows  {:>6.2} s  -> {}/{}.{{csv,png}}",
-            e.id,
-            table.rows.len(),
-            start.elapsed().as_secs_f64(),
-            out.display(),
-            e.id
-        ));
+    let done = run_all(&selected, &ctx, &out);
+    if done.is_err() {
+        // (a directory this run created is not left behind empty)
+        racket_impact::render::temps::remove_created_dirs();
     }
-    staged.commit()?;
-    for line in lines {
+    for line in done? {
         super::common::stderr_line(&line);
     }
     Ok(())
+}
+
+/// Run and stage every selected experiment, then publish them all: the summary line of each.
+fn run_all(
+    selected: &[racket_impact::experiments::Experiment],
+    ctx: &racket_impact::experiments::Context,
+    out: &std::path::Path,
+) -> Result<Vec<String>> {
+    let mut staged = racket_impact::render::io::Staged::new();
+    let mut lines = Vec::new();
+    let progress = Progress::steps(selected.len() as u64, "experiments");
+    for (i, e) in selected.iter().enumerate() {
+        progress.at(i as u64, e.id);
+        let start = std::time::Instant::now();
+        let (table, files) = racket_impact::experiments::run_and_stage(e, ctx, out)?;
+        staged.append(files);
+        lines.push(format!(
+            "{:<24} {:>4} rows  {:>6.2} s  -> {}",
+            e.id,
+            table.rows.len(),
+            start.elapsed().as_secs_f64(),
+            out.join(format!("{}.{{csv,png}}", e.id)).display()
+        ));
+    }
+    drop(progress);
+    staged.commit()?;
+    Ok(lines)
 }

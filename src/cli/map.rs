@@ -9,7 +9,7 @@ use racket_impact::render::map_files::Outputs;
 use racket_impact::study::map::{MapRequest, Quantity};
 use racket_impact::Result;
 
-use super::common::{out, outln, print_diagnostics, Common, Format, Progress};
+use super::common::{elapsed_line, out, outln, print_diagnostics, warn, Common, Format, Progress};
 use super::overrides::MapKeys;
 
 /// What each quantity is, in the help.
@@ -74,10 +74,12 @@ pub fn run(a: MapArgs) -> Result<()> {
     request.check()?;
     // (the inputs read first: no output may be one of them)
     let (configs, total) = request.configurations()?;
+    let default_out = a.out.is_none();
     let outputs = Outputs::for_csv(&a.out.unwrap_or_else(|| request.default_csv()))?;
     super::common::check_stdout()?;
     let noted = request.check_used(&configs)?;
 
+    let replaced = default_out && [&outputs.csv, &outputs.png, &outputs.json].iter().any(|p| p.exists());
     let bar = Progress::new(total as u64);
     let started = bar.started;
     let computed = request.run(&configs, &mut |done| bar.update(done));
@@ -96,12 +98,7 @@ pub fn run(a: MapArgs) -> Result<()> {
                     Some(target) => format!("{} (a link to {})", outputs.csv.display(), target.display()),
                     None => outputs.csv.display().to_string(),
                 };
-                outln!(
-                    "wrote {csv}, {}, {} ({:.2} s)",
-                    outputs.png.display(),
-                    outputs.json.display(),
-                    started.elapsed().as_secs_f64()
-                );
+                outln!("wrote {csv}, {}, {}", outputs.png.display(), outputs.json.display());
             }
             Format::Json => out!("{json}"),
             Format::Csv => out!("{csv}"),
@@ -109,5 +106,16 @@ pub fn run(a: MapArgs) -> Result<()> {
         Ok(())
     })?;
     print_diagnostics(noted.iter().chain(&map.diagnostics(configs.iter().map(|(_, p)| p))));
+    if replaced {
+        // (without --out the files go into the current folder under a name of the quantity)
+        warn(&format!(
+            "replaced {}, {} and {} of an earlier map in this folder (--out FILE.csv names them)",
+            outputs.csv.display(),
+            outputs.png.display(),
+            outputs.json.display()
+        ));
+    }
+    // (the time on standard error: the same map twice prints the same standard output)
+    elapsed_line(&format!("map: {total} impacts in {:.2} s", started.elapsed().as_secs_f64()));
     Ok(())
 }

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use clap::Args;
 use racket_impact::Result;
 
-use super::common::out;
+use super::common::{out, outln};
 
 #[derive(Args, Debug)]
 pub struct ReportArgs {
@@ -15,6 +15,10 @@ pub struct ReportArgs {
     /// Print the report without writing the file
     #[arg(long)]
     pub no_write: bool,
+    /// Print one line (the file written and the claims' count) instead of the whole report
+    /// (`make figures` ends with it)
+    #[arg(long, conflicts_with = "no_write")]
+    pub summary: bool,
 }
 
 /// Write REPORT.md (unless told not to) and print it.
@@ -31,15 +35,33 @@ pub fn run(a: ReportArgs) -> Result<()> {
         racket_impact::render::io::check_output_dir("out", &out)?;
     }
     super::common::check_stdout()?;
+    let progress =
+        super::common::Progress::spinner("report: every claim of the paper, its robustness and the sections beyond it");
     let rows = racket_impact::report::evaluate()?;
     let md = racket_impact::report::document(&rows)?;
+    drop(progress);
     // REPORT.md is published only once the report has been printed (a device before it)
     let mut staged = racket_impact::render::io::Staged::new();
     if !a.no_write {
         staged.bytes(&out, md.as_bytes())?;
     }
     staged.publish(|| {
-        out!("{md}");
+        if a.summary {
+            outln!("wrote {}: {}", out.display(), headline(&md));
+        } else {
+            out!("{md}");
+        }
         Ok(())
     })
+}
+
+/// The report's headline counts in one line, without the Markdown: the claims reproduced (its
+/// first bold text) and the conclusions under the inputs' uncertainty (the bold "Conclusions:").
+fn headline(md: &str) -> String {
+    let bold = |line: &str| line.split("**").nth(1).unwrap_or_default().trim_end_matches('.').to_string();
+    let first = md.lines().find(|l| l.starts_with("**")).map(bold).unwrap_or_default();
+    match md.lines().find(|l| l.starts_with("**Conclusions:")).map(bold) {
+        Some(c) => format!("{first}; {}", c.replacen("Conclusions:", "conclusions under the inputs' uncertainty:", 1)),
+        None => first,
+    }
 }

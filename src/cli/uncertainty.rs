@@ -23,7 +23,8 @@ pub struct UncertaintyArgs {
     /// KEY alone draws the distribution declared with the parameter (see the long help)
     #[arg(long = "vary", value_name = "KEY=DIST")]
     pub vary: Vec<String>,
-    /// Base samples N of the Saltelli design, 1..=65536: N (d + 2) impacts for d inputs [default: 256; with --claims 128]
+    /// Base samples N of the Saltelli design, 1..=65536: N (d + 2) impacts for d inputs (with
+    /// --claims at most 32768, each verdict checked again at 2N) [default: 256; with --claims 128]
     #[arg(long)]
     pub samples: Option<u64>,
     /// Seed of the scrambled Sobol' sequence and of the bootstrap [default: 0; with --claims 2000]
@@ -109,13 +110,24 @@ fn run_claims(a: UncertaintyArgs) -> Result<()> {
     let samples = a.samples.unwrap_or(robustness::SAMPLES);
     let seed = a.seed.unwrap_or(robustness::SEED);
     let inputs = robustness::inputs();
-    let design = Design::new(samples, inputs.len(), seed)?;
+    Design::new(samples, inputs.len(), seed)?; // the count first, before anything else
+    let most = racket_impact::study::sensitivity::MAX_SAMPLES / 2;
+    if samples > most {
+        return Err(Error::invalid(
+            "samples",
+            samples,
+            format!("with --claims must be at most {most} (every verdict is checked again at twice the samples)"),
+        ));
+    }
     match &a.out {
         Some(path) => racket_impact::render::io::check_output_dir("out", path)?,
         None => super::common::check_stdout()?,
     }
-    let progress = Progress::new(design.runs() as u64);
-    let rows = robustness::study(&racket_impact::experiments::Context::paper(), samples, seed, false, None, |done| {
+    // twice the samples too, as the report does: a verdict that changes there is borderline,
+    // counted apart (the first half are the same runs)
+    let doubled = Design::new(2 * samples, inputs.len(), seed)?;
+    let progress = Progress::new(doubled.runs() as u64);
+    let rows = robustness::study(&racket_impact::experiments::Context::paper(), samples, seed, true, None, |done| {
         progress.update(done as u64)
     })?;
     drop(progress);

@@ -15,11 +15,42 @@ impl Overrides {
     /// errors with one line naming the file and, where TOML knows it, the key and line.
     pub fn from_toml_bytes(path: &std::path::Path, bytes: &[u8]) -> Result<Self> {
         let hint = "give at least one key, e.g. ks = 4e4";
+        unknown_key(path, bytes)?;
         match canonical_keys(path, bytes)? {
             Some(text) => parse_toml(path, text.as_bytes(), hint),
             None => parse_toml(path, bytes, hint),
         }
     }
+}
+
+/// Refuse a key of a config file that is no parameter, in one line that says what a config file
+/// holds (a file shared between commands holds parameters; a command's own options, such as
+/// `speed --swing`, are given on its command line) and the nearest key where one is near. A
+/// file that is not a TOML table is left to [`parse_toml`].
+fn unknown_key(path: &std::path::Path, bytes: &[u8]) -> Result<()> {
+    let Some(text) = std::str::from_utf8(bytes).ok() else { return Ok(()) };
+    let Ok(table) = text.parse::<toml::Table>() else { return Ok(()) };
+    let Some(name) = table.keys().find(|k| super::keys::find_any(k).is_none()) else { return Ok(()) };
+    let line = text
+        .lines()
+        .position(|l| l.trim_start().trim_start_matches(['"', '\'']).starts_with(name.as_str()))
+        .map(|i| format!(" (line {})", i + 1))
+        .unwrap_or_default();
+    let near = super::keys::ALL
+        .iter()
+        .map(|s| s.key)
+        .filter(|k| strsim::levenshtein(name, k) == 1 || strsim::levenshtein(name, k) * 4 <= name.len().max(k.len()))
+        .min_by_key(|k| strsim::levenshtein(name, k))
+        .map(|k| format!("did you mean {k}? "))
+        .unwrap_or_default();
+    Err(Error::Config {
+        path: path.into(),
+        message: escaped(&format!(
+            "unknown key `{name}`{line}: {near}a config file holds parameters, the flags under the headings of \
+             `racket-impact simulate --help` (x, ks, mb, ...); a command's own options (speed's --swing, map's --nx, \
+             uncertainty's --vary) go on its command line"
+        )),
+    })
 }
 
 /// The config text with every alias of a key ([`super::keys::aliases`]: `angle_deg`,
@@ -92,13 +123,22 @@ pub(crate) fn parse_toml<T: serde::de::DeserializeOwned>(
     toml::from_str(text).map_err(|e| err(one_line(&e.to_string())))
 }
 
-/// Fold a multi-line message (e.g. a TOML parse error with a source excerpt) into one line.
+/// Fold a multi-line message (e.g. a TOML parse error with a source excerpt) into one line, its
+/// control characters escaped ([`escaped`]).
 fn one_line(msg: &str) -> String {
-    msg.lines()
-        .map(str::trim)
-        .filter(|l| !l.is_empty() && !l.chars().all(|c| "|^ ".contains(c)))
-        .collect::<Vec<_>>()
-        .join("; ")
+    escaped(
+        &msg.lines()
+            .map(str::trim)
+            .filter(|l| !l.is_empty() && !l.chars().all(|c| "|^ ".contains(c)))
+            .collect::<Vec<_>>()
+            .join("; "),
+    )
+}
+
+/// `msg` with every control character escaped as Rust writes it (`\0` as `\u{0}`, a tab as
+/// `\t`): a file's bytes quoted in a message never reach the terminal raw.
+fn escaped(msg: &str) -> String {
+    msg.chars().map(|c| if c.is_control() { c.escape_default().to_string() } else { c.to_string() }).collect()
 }
 
 #[cfg(test)]
@@ -113,6 +153,21 @@ mod tests {
         assert_eq!(o.half_width, Some(0.1));
         assert_eq!(o.load, Some(LoadRule::Node));
         assert!(toml::from_str::<Overrides>("xx = 0.2").is_err());
+    }
+
+    #[test]
+    fn an_unknown_key_says_what_a_config_holds_and_raw_bytes_are_escaped() {
+        let p = std::path::Path::new("c.toml");
+        let msg = Overrides::from_toml_bytes(p, b"x = 0.1\nswing = 30").unwrap_err().to_string();
+        assert!(
+            msg.starts_with("config file c.toml: unknown key `swing` (line 2): a config file holds parameters"),
+            "{msg}"
+        );
+        assert!(msg.contains("speed's --swing"), "{msg}");
+        let msg = Overrides::from_toml_bytes(p, b"kss = 3e4").unwrap_err().to_string();
+        assert!(msg.contains("did you mean ks?"), "{msg}");
+        let msg = Overrides::from_toml_bytes(p, b"ks = 3e4\x00\x01\n").unwrap_err().to_string();
+        assert!(!msg.chars().any(char::is_control) && msg.contains("\\u{0}"), "{msg}");
     }
 
     #[test]

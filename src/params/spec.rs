@@ -206,7 +206,7 @@ impl ParamSpec {
         Some(format!(
             "{} = {}{unit} is outside the usual {}..{}{unit} of {} (computed anyway)",
             self.key,
-            sig(v, 6),
+            crate::numfmt::given(v, 6),
             sig(lo, 3),
             sig(hi, 3),
             self.what

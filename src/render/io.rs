@@ -140,7 +140,7 @@ fn temp_for(target: &Resolved, shown: &Path, suffix: &str) -> Result<Temp> {
         use std::os::unix::fs::PermissionsExt;
         builder.permissions(fs::Permissions::from_mode(0o666));
     }
-    builder.tempfile_in(&dir).map(Temp::new).map_err(|e| Error::io(shown, cannot_create(&dir, &e)))
+    Temp::create(|| builder.tempfile_in(&dir)).map_err(|e| Error::io(shown, cannot_create(&dir, &e)))
 }
 
 /// Why no file can be created in `dir`, in a few words (`directory d is not writable: permission
@@ -167,7 +167,7 @@ fn replace(tmp: Temp, target: &Path, shown: &Path) -> Result<()> {
     if let Ok(meta) = fs::metadata(target) {
         tmp.as_file().set_permissions(meta.permissions()).map_err(|e| Error::io(shown, e))?;
     }
-    tmp.persist(target).map_err(|e| Error::io(shown, e))
+    tmp.persist(target).map_err(|e| Error::io(shown, format!("cannot replace it with the new output: {e}")))
 }
 
 /// One staged output: its temporary file, where it goes and the path the user gave.
@@ -353,12 +353,31 @@ pub fn check_output_dir(field: &'static str, path: &Path) -> Result<()> {
     let target = resolve(path).map_err(|e| refuse(message(e)))?;
     match &target {
         // a probe of the same kind as the real temporary file, removed at once
-        Resolved::File(_) => {
+        Resolved::File(file) => {
             temp_for(&target, path, "").map_err(|e| refuse(message(e)))?;
+            if let Some(why) = cannot_replace(file) {
+                return Err(refuse(why));
+            }
         }
         Resolved::Through(device) => probe_device(device).map_err(|e| refuse(format!("cannot be written: {e}")))?,
     }
     Ok(())
+}
+
+/// Why the existing regular file `file` cannot be replaced by a rename, where it is marked
+/// immutable or append-only (`chattr +i`, `+a`): opening it for writing (which writes nothing)
+/// then fails with "Operation not permitted", where a file that is merely read-only fails with
+/// "Permission denied" and is replaced all the same. `None` for any other file.
+fn cannot_replace(file: &Path) -> Option<String> {
+    if !fs::symlink_metadata(file).is_ok_and(|m| m.is_file()) {
+        return None;
+    }
+    match OpenOptions::new().write(true).open(file) {
+        Err(e) if e.kind() == std::io::ErrorKind::PermissionDenied && e.raw_os_error() == Some(1) => Some(format!(
+            "the existing file cannot be replaced ({e}: it is marked immutable or append-only, see lsattr)"
+        )),
+        _ => None,
+    }
 }
 
 /// Whether a character device can be written, without writing to it: opened for writing and
@@ -465,7 +484,15 @@ pub fn check_dir_path(field: &'static str, dir: &Path) -> Result<()> {
 /// Succeeds if the directory already exists; fails with an [`Error::Io`] naming `dir` if it
 /// cannot be created (for example because a regular file is in the way).
 pub fn ensure_dir(dir: &Path) -> Result<()> {
-    fs::create_dir_all(dir).map_err(|e| Error::io(dir, format!("cannot create directory: {e}")))?;
+    // the directories this creates, outermost first, are removed again if the run fails or is
+    // interrupted while they are empty (`render::temps::remove_created_dirs`)
+    let mut created = super::temps::created_dirs();
+    let missing: Vec<&Path> =
+        dir.ancestors().take_while(|a| !a.as_os_str().is_empty() && fs::symlink_metadata(a).is_err()).collect();
+    let made = fs::create_dir_all(dir);
+    created.extend(missing.iter().rev().map(|d| d.to_path_buf()));
+    drop(created);
+    made.map_err(|e| Error::io(dir, format!("cannot create directory: {e}")))?;
     if dir.is_dir() {
         Ok(())
     } else {

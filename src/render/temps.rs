@@ -20,9 +20,27 @@ fn staged() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
     STAGED.lock().unwrap_or_else(|e| e.into_inner())
 }
 
-/// Known to [`remove_staged`] from now on.
-pub(crate) fn register(path: &Path) {
-    staged().push(path.to_path_buf());
+/// The directories a run has created for its outputs (`figures --out new/dir`), outermost first:
+/// an interrupted or failed run removes those it leaves empty.
+static CREATED_DIRS: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// The directories this run created: held while a directory is created and recorded, so that an
+/// interrupt sees every directory that exists.
+pub(crate) fn created_dirs() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
+    CREATED_DIRS.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// Remove the directories this run created ([`created_dirs`]) that are empty, innermost first
+/// (one that holds a file, published or not, is kept); for a run that failed. Returns how many
+/// were removed.
+pub fn remove_created_dirs() -> usize {
+    remove_dirs(&mut created_dirs())
+}
+
+fn remove_dirs(dirs: &mut Vec<PathBuf>) -> usize {
+    let removed = dirs.iter().rev().filter(|d| std::fs::remove_dir(d).is_ok()).count();
+    dirs.clear();
+    removed
 }
 
 /// No longer staged (renamed into place, or removed).
@@ -33,13 +51,20 @@ pub(crate) fn unregister(path: &Path) {
     }
 }
 
-/// Remove every staged temporary file (for an interrupted run, which then exits): after any
-/// set of outputs being renamed into place is whole. Returns how many were removed.
+/// Remove every staged temporary file and then every directory the run created that is left
+/// empty (for an interrupted run, which then exits: no directory is created after this), after
+/// any set of outputs being renamed into place is whole. Returns how many files were removed.
 pub fn remove_staged() -> usize {
     let _whole = PUBLISHING.lock().unwrap_or_else(|e| e.into_inner());
     let mut staged = staged();
     let removed = staged.iter().filter(|p| std::fs::remove_file(p).is_ok()).count();
     staged.clear();
+    // the directories last; the run exits next, so both registers stay locked: no temporary
+    // file or directory is created after them (one being created now is finished first, and seen)
+    let mut dirs = created_dirs();
+    remove_dirs(&mut dirs);
+    std::mem::forget(dirs);
+    std::mem::forget(staged);
     removed
 }
 
@@ -48,10 +73,14 @@ pub fn remove_staged() -> usize {
 pub(crate) struct Temp(Option<NamedTempFile>);
 
 impl Temp {
-    /// Stage `file`.
-    pub(crate) fn new(file: NamedTempFile) -> Temp {
-        register(file.path());
-        Temp(Some(file))
+    /// Create a temporary file with `create` and stage it, holding the register meanwhile: an
+    /// interrupt then sees every temporary file that exists, and none is created after it
+    /// ([`remove_staged`] keeps the register until the run exits).
+    pub(crate) fn create(create: impl FnOnce() -> std::io::Result<NamedTempFile>) -> std::io::Result<Temp> {
+        let mut staged = staged();
+        let file = create()?;
+        staged.push(file.path().to_path_buf());
+        Ok(Temp(Some(file)))
     }
 
     fn file(&self) -> &NamedTempFile {
@@ -115,8 +144,8 @@ mod tests {
         // (remove_staged is not called here: it would take the files of tests running beside
         // this one; tests/traps.rs interrupts a real run)
         let dir = tempfile::tempdir().unwrap();
-        let a = Temp::new(NamedTempFile::new_in(dir.path()).unwrap());
-        let b = Temp::new(NamedTempFile::new_in(dir.path()).unwrap());
+        let a = Temp::create(|| NamedTempFile::new_in(dir.path())).unwrap();
+        let b = Temp::create(|| NamedTempFile::new_in(dir.path())).unwrap();
         let (pa, pb) = (a.path().to_path_buf(), b.path().to_path_buf());
         assert!(staged().contains(&pa) && staged().contains(&pb));
         a.persist(&dir.path().join("out.csv")).unwrap();

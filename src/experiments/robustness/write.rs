@@ -133,6 +133,11 @@ pub fn text(rows: &[ClaimRobustness], samples: u64, seed: u32) -> String {
         "conclusion",
         "share"
     );
+    if rows.iter().any(|r| r.doubled.is_some()) {
+        // (the verdicts were checked at twice the samples: say so on the first line)
+        let at = s.find('\n').unwrap_or(0);
+        s.insert_str(at, &format!("; every verdict checked again at {} base samples", 2 * samples));
+    }
     if let Some(line) = not_meaningful(samples) {
         s.insert_str(s.find('\n').unwrap_or(0) + 1, &line);
     }
