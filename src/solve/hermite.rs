@@ -3,7 +3,7 @@
 //! the values and rates at the step's ends (the modal solver finds maximum compression in
 //! closed form).
 
-use crate::model::root::{bisect, Bracket};
+use crate::numeric::root::{bisect, Bracket};
 
 /// Cubic Hermite interpolant on a step of length `h` with values `p0, p1` and derivatives
 /// `m0, m1`, evaluated at the fraction `s` of the step.

@@ -9,7 +9,7 @@
 //!
 //! Until maximum compression the contact is a linear spring (Eq 9), so the compression phase is
 //! solved in closed form: the coupled modes of ball, strings and frame are found once per
-//! prepared model (a rank-one secular equation, [`crate::model::rank_one`]) and the run finds the
+//! prepared model (a rank-one secular equation, [`crate::numeric::rank_one`]) and the run finds the
 //! time of maximum compression and every coordinate there (`compression`). No step is taken
 //! before it, so no error is made there, and the steps start where the force's rate is zero on
 //! both sides and the expansion law (Eq 10) takes over.
@@ -58,7 +58,7 @@
 //!   expansion law, Newton + powers       12k  (3-4 iterations a step)
 //!   predict + correct, 14 pairs, check, ledger, the separation root: the rest
 //! peak bending PE after separation      23k  (20 sin_cos, short rotations, the Newton polish)
-//! re-contact check, result, buffers     ~3k  (no allocation: `model::spare`)
+//! re-contact check, result, buffers     ~3k  (no allocation: `numeric::spare`)
 //! ```
 //! The floor of this design is the step count times the cost of a step: each attempt is a
 //! prediction, an end-of-step law solve, a check of the cubic against the law and a correction,
@@ -100,7 +100,7 @@ mod steps;
 use crate::error::{Error, Result};
 use crate::model::contact::{ContactLaw, Cross, Phase};
 use crate::model::free::FreeVibration;
-use crate::model::spare::{pooled, Buf, Pooled};
+use crate::numeric::spare::{pooled, Buf, Pooled};
 use crate::model::tangential::ForcePiece;
 use crate::params::{Params, TangentialLaw};
 use crate::solve::oblique::Follower;
@@ -412,7 +412,7 @@ impl ModalModel {
 }
 
 /// The coordinates (mass-normalised, rigid first) and their rates, `[q, q']` each (storage
-/// reused from impact to impact, [`crate::model::spare`]).
+/// reused from impact to impact, [`crate::numeric::spare`]).
 #[derive(Debug, Clone)]
 struct State {
     x: Buf<Pair>,
