@@ -64,8 +64,8 @@ mod steps;
 use crate::error::{Error, Result};
 use crate::model::contact::{ContactLaw, Cross, Phase};
 use crate::model::free::FreeVibration;
-use crate::numeric::spare::{pooled, Buf, Pooled};
 use crate::model::tangential::ForcePiece;
+use crate::numeric::spare::{pooled, Buf, Pooled};
 use crate::params::{Params, TangentialLaw};
 use crate::solve::oblique::Follower;
 use crate::solve::outcome::ImpactResult;
@@ -293,36 +293,17 @@ impl ModalModel {
             }
             run.advance()?;
         }
-        let (tau, theta) = run.separated.unwrap_or_default();
-        let mut result = self.finish(
-            &run.s,
-            run.t - tau,
-            y0,
-            tau,
-            theta,
-            run.at.t_max,
-            run.peak_force,
-            run.energy_err,
-            run.momentum_err,
-        )?;
+        let mut result = self.finish(&run, y0);
         run.tangential.complete(self.impact.oblique.as_ref(), &mut result, v1)?;
         result.check_finite()?;
         Ok(result)
     }
 
-    #[allow(clippy::too_many_arguments)]
-    fn finish(
-        &self,
-        s: &State,
-        since_separation: f64,
-        y0: f64,
-        tau: f64,
-        theta: f64,
-        t_max: f64,
-        peak_force: f64,
-        energy_err: f64,
-        momentum_err: f64,
-    ) -> Result<ImpactResult> {
+    /// The result of the separated impact `run` whose ball was compressed by `y0` at most, m
+    /// (its oblique fields aside).
+    fn finish(&self, run: &Run<'_>, y0: f64) -> ImpactResult {
+        let (s, (tau, theta)) = (&run.s, run.separated.unwrap_or_default());
+        let since_separation = run.t - tau;
         let p = &self.impact.params;
         let e0 = 0.5 * p.ball.mass * p.impact.v1 * p.impact.v1;
         let e_a = -s.v(0) / (p.ball.mass.sqrt() * p.impact.v1);
@@ -331,7 +312,7 @@ impl ModalModel {
             .map(|k| 0.5 * (s.v(k) * s.v(k) + self.set.lam[k] * s.q(k) * s.q(k)))
             .fold(0.0, |a, b| a + b);
         let (peak_pe, recontact) = self.after_impact(s, since_separation);
-        let result = ImpactResult {
+        ImpactResult {
             e_a,
             tau_s: tau,
             theta_end_deg: theta.to_degrees(),
@@ -342,17 +323,16 @@ impl ModalModel {
             f_spin: 0.5 * s.v(3) * s.v(3) / e0,
             f_rigid: 0.5 * (s.v(1) * s.v(1) + s.v(2) * s.v(2)) / e0,
             f_ke_ball: e_a * e_a,
-            peak_force_n: peak_force,
-            energy_error: energy_err,
-            momentum_error: momentum_err,
+            peak_force_n: run.peak_force,
+            energy_error: run.energy_err,
+            momentum_error: run.momentum_err,
             x_load_m: self.impact.coupling.load.x_load,
-            t_max_compression_s: t_max,
+            t_max_compression_s: run.at.t_max,
             y0_m: y0,
             recontact,
             dt_s: self.step(),
             ..ImpactResult::ZERO
-        };
-        Ok(result)
+        }
     }
 
     /// Peak bending PE over two fundamental periods of free vibration from separation, and
