@@ -221,7 +221,7 @@ fn a_sweep_with_a_bad_value_anywhere_writes_nothing() {
     let out = run(&["sweep", "--out", path.to_str().unwrap(), "--x", "0.1:0.9:5"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("invalid x = 0.9"));
-    assert!(std::fs::read_dir(&dir).unwrap().next().is_none(), "left a file behind");
+    assert!(std::fs::read_dir(dir).unwrap().next().is_none(), "left a file behind");
     let stdout = run(&["sweep", "--x", "0.1:0.9:5"]);
     assert!(stdout.stdout.is_empty());
 }
