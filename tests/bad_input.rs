@@ -28,7 +28,7 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
     let wrong_type = s.file("wrong_type.toml", b"ks = \"stiff\"\n");
     let empty = s.file("empty.toml", b"");
     let blank = s.file("blank.toml", b"  \n\n");
-    let binary = s.file("binary.toml", &[0xff, 0xfe, 0x00, 0x81, 0x13, 0x37, 0xc3, 0x28]);
+    let binary = s.file("binary.toml", [0xff, 0xfe, 0x00, 0x81, 0x13, 0x37, 0xc3, 0x28]);
     let nul = s.file("nul.toml", b"ks = 4e4\0\n");
     let nan_cfg = s.file("nan.toml", b"ks = nan\n");
     let p_cfg = s.file("p.toml", b"p = 1\n");

@@ -382,7 +382,7 @@ fn series_values_too_small_are_refused_as_written() {
 #[test]
 fn a_name_with_a_line_break_is_refused() {
     let s = Scratch::new("traps");
-    s.file("g.toml", &RACKET.replace("name = \"g\"", "name = \"two\\nlines\""));
+    s.file("g.toml", RACKET.replace("name = \"g\"", "name = \"two\\nlines\""));
     refused(&s.run(&["racket", "g.toml"]), "line breaks");
     refused(&s.run(&["speed", "--swing", "100", "--compare-racket", "a\nb"]), "line breaks");
 }
