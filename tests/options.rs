@@ -23,9 +23,8 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 use clap::CommandFactory;
-use racket_impact::params::keys;
-use racket_impact::params::spec::Values;
-use racket_impact::params::{Overrides, Params};
+use racket_impact::params::spec::{UsedWhen, Values};
+use racket_impact::params::{keys, used, Overrides, Params};
 
 /// What a run produced: its exit code and everything a user sees of it.
 #[derive(Debug, PartialEq)]
@@ -99,7 +98,7 @@ fn files_below(dir: &Path, root: &Path, out: &mut BTreeMap<String, Vec<u8>>) {
 }
 
 /// Accepted with one note naming the option as not exercised by the impact (a property of the
-/// racket, ball or strings this impact does not exercise, `params::used::is_refused`).
+/// racket, ball or strings this impact does not exercise, `params::used`).
 fn noted(seen: &Seen, key: &str) -> bool {
     seen.code == Some(0)
         && seen.warnings.iter().filter(|w| w.contains(&format!("--{key} ")) && w.contains("not exercised")).count() == 1
@@ -395,7 +394,7 @@ fn every_option_of_every_command_changes_the_output_or_is_refused() {
 }
 
 #[test]
-fn config_keys_change_the_output_or_are_named_in_one_warning() {
+fn config_keys_change_the_output_or_are_named_in_one_warning_or_refused() {
     let mut failures = Vec::new();
     for (command, options) in option_table() {
         if !options.iter().any(|(id, _)| id == "config") {
@@ -416,18 +415,23 @@ fn config_keys_change_the_output_or_are_named_in_one_warning() {
                 _ => vec![sample_value(spec.key)],
             };
             let other = if spec.key == "segments" { "" } else { "segments = 39\n" };
-            let (mut used, mut said, mut seen_last) = (false, false, None);
+            let (mut used, mut said, mut refused, mut seen_last) = (false, false, false, None);
             for toml_value in values {
                 let seen = run(&command, &with_config(&[]), &format!("{other}{} = {toml_value}\n", spec.key));
                 let named = seen.warnings.iter().filter(|w| w.contains("config file") && w.contains(spec.key)).count();
                 used |= seen.code == Some(0) && differs(&seen, &plain) && named == 0;
                 said |= seen.code == Some(0) && named == 1;
+                // a method's option none of the impacts can honour is refused, as its flag is
+                refused |= seen.code == Some(2)
+                    && seen.error.contains(&format!("invalid {}", spec.key))
+                    && seen.error.contains("(config file cfg.toml)")
+                    && spec.role == racket_impact::params::spec::Role::MethodOption;
                 seen_last = Some(seen);
             }
             let seen = seen_last.unwrap();
-            if !(used || said) {
+            if !(used || said || refused) {
                 failures.push(format!(
-                    "{command}: config key {} neither changes the output nor is named in one warning ({:?}, {})",
+                    "{command}: config key {} neither changes the output nor is named in one warning nor refused ({:?}, {})",
                     spec.key, seen.warnings, seen.error
                 ));
             }
@@ -467,10 +471,21 @@ const SELECTIONS: &[&[&str]] = &[
     &["--r", "0.03"],
 ];
 
+/// The parameters of `simulate` run with the flags `args` (pairs of `--KEY VALUE`, every one a
+/// parameter), as the command resolves them.
+fn simulate_params(args: &[String]) -> Option<Params> {
+    let mut o = Overrides::default();
+    for pair in args.chunks(2) {
+        o.set(pair[0].trim_start_matches("--"), pair.get(1)?).ok()?;
+    }
+    racket_impact::racket::resolve(None, &o).ok().map(|(p, _)| p)
+}
+
 #[test]
-fn every_parameter_under_every_model_selection_changes_the_output_or_is_refused() {
-    // simulate takes every parameter; which ones a model reads is decided in one place
-    // (params/used.rs) for every command
+fn every_parameter_under_every_model_selection_does_what_its_row_says() {
+    // simulate takes every parameter; which impacts use one is its row's used_when, and what a
+    // value it does not use is told its row's role (params/used.rs): used -> the output
+    // changes; a property not exercised -> one note; a method's option not honoured -> refused
     let mut failures = Vec::new();
     let mut checked = 0;
     for spec in &keys::ALL {
@@ -488,20 +503,55 @@ fn every_parameter_under_every_model_selection_changes_the_output_or_is_refused(
                 continue; // the selection itself is refused with this context (rigid + hand, ...)
             }
             checked += 1;
-            let with: Vec<String> =
-                [format!("--{}", spec.key), sample_value(spec.key)].into_iter().chain(ctx).collect();
+            let flag = [format!("--{}", spec.key), sample_value(spec.key)];
+            let with: Vec<String> = flag.iter().cloned().chain(ctx.clone()).collect();
             let seen = run("simulate", &with, "");
+            let pairs: Vec<String> =
+                flag.iter().chain(ctx.iter().filter(|a| *a != "--format" && *a != "json")).cloned().collect();
             let refused = seen.code == Some(2) && seen.error.contains(&format!("invalid {}", spec.key));
-            let used = seen.code == Some(0) && differs(&seen, &without);
-            // (a property this impact does not exercise: accepted with one note, issue 32)
-            let used = used || noted(&seen, spec.key);
-            // (a value the selection cannot take is refused naming another field: also not ignored)
-            let refused_other = seen.code == Some(2) && seen.error.contains("invalid");
-            if !(refused || used || refused_other) {
-                failures.push(format!("simulate {with:?}: silently ignored ({})", seen.error));
+            let ok = match simulate_params(&pairs).as_ref().map(|p| used::unused(spec, p)) {
+                Some(Some(unused)) if unused.refused => refused && seen.error.contains(&unused.why),
+                Some(Some(unused)) => noted(&seen, spec.key) && seen.warnings.iter().any(|w| w.contains(&unused.why)),
+                // used: the output changes, or the value is one the selection cannot take
+                // (refused naming another field: rigid with a spinning ball)
+                Some(None) => (seen.code == Some(0) && differs(&seen, &without)) || seen.code == Some(2),
+                None => seen.code == Some(2),
+            };
+            if !ok {
+                failures.push(format!(
+                    "simulate {with:?}: not as its row says ({:?}, {}, {:?})",
+                    simulate_params(&pairs).map(|p| used::unused(spec, &p)),
+                    seen.error,
+                    seen.warnings
+                ));
             }
         }
     }
     assert!(checked > 100, "only {checked} combinations ran");
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+#[test]
+fn every_parameter_flag_is_under_its_declared_heading_and_says_when_it_is_used() {
+    // the help is derived from the rows (params/keys.rs): each flag under its row's heading,
+    // and, where not every impact uses it, the row's used_when in words
+    let mut cmd = cli::Cli::command();
+    cmd.build();
+    let mut checked = 0;
+    for command in cmd.get_subcommands() {
+        for arg in command.get_arguments() {
+            let Some(spec) = keys::find(arg.get_id().as_str()) else { continue };
+            let at = format!("{} --{}", command.get_name(), spec.key);
+            assert_eq!(arg.get_help_heading(), Some(spec.heading.title()), "{at}");
+            let help = arg.get_help().map(ToString::to_string).unwrap_or_default();
+            assert!(help.starts_with(spec.help()), "{at}: {help}");
+            let said = help.rsplit_once(" [used only ").map(|(_, w)| w.trim_end_matches(']'));
+            match spec.used_when {
+                UsedWhen::Always => assert_eq!(said, None, "{at}: {help}"),
+                when => assert_eq!(said, Some(used::words(&when).as_str()), "{at}: {help}"),
+            }
+            checked += 1;
+        }
+    }
+    assert!(checked > 100, "only {checked} parameter flags");
 }

@@ -308,10 +308,16 @@ fn the_string_option_is_used_or_refused() {
             "{err}"
         );
     }
-    // and --mu-ss only by a law with the sliding string bed
+    // and --mu-ss only by a law with the sliding string bed: a property of the strings, which
+    // the default law does not exercise, so it runs with one note (issue 39)
     let (code, _, err) = cli(&["simulate", "--angle-deg", "30", "--mu-ss", "0.1"]);
-    assert_eq!(code, Some(2), "{err}");
-    assert!(err.contains("mu-ss") && err.contains("bed and physical"), "{err}");
+    assert_eq!(code, Some(0), "{err}");
+    assert!(
+        err.trim_end().lines().count() == 1
+            && err.starts_with("warning: --mu-ss 0.1 is not exercised by this impact")
+            && err.contains("tangential = bed or physical"),
+        "{err}"
+    );
     let (code, _, err) = cli(&["simulate", "--angle-deg", "30", "--mu-ss", "0.1", "--tangential", "bed"]);
     assert_eq!(code, Some(0), "{err}");
     // a sweep over mu beside a string that sets it would be the string's value at every point

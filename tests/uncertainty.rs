@@ -144,7 +144,7 @@ fn bad_specs_are_refused_in_one_line_and_nothing_is_written() {
         (&["--claims", "--vary", "ks=uniform:2e4:3e4"], "invalid claims"),
         // an input the model does not read is refused as the same fixed flag is
         (&["--vary", "mu=uniform:0.2:0.5"], "mu is used only for an oblique or spinning ball"),
-        (&["--vary", "dt=uniform:1e-7:1e-6"], "dt is used only by the fd solver"),
+        (&["--vary", "dt=uniform:1e-7:1e-6"], "dt is used only with solver = fd"),
         (&["--vary", "hand-damping=uniform:1:20"], "hand-damping is used only with grip = hand"),
         // and a friction the named string sets from its database entry
         (

@@ -8,31 +8,21 @@
 use clap::error::{ContextKind, ContextValue, ErrorKind};
 use racket_impact::params::keys;
 
-use super::overrides::{KeySet, MapKeys, ModesKeys, SpeedKeys};
+use super::overrides::{KeySet, ModesKeys};
 
 /// Why `command` has no flag for the parameter `key` and where it comes from, if the
-/// parameter is one the command sets or does not use.
+/// parameter is one the command sets or does not use (the library says which, and why).
 fn parameter_hint(command: &str, key: &str) -> Option<String> {
+    use racket_impact::study::{map::set_by_map, speed::set_by_speed};
     let spec = keys::find(key)?;
-    let takes = match command {
-        "speed" => SpeedKeys::takes(spec.key),
-        "map" => MapKeys::takes(spec.key),
-        "modes" => ModesKeys::takes(spec.key),
-        "sweep" | "simulate" | "uncertainty" => true,
-        _ => return None,
-    };
-    if takes {
-        return None;
-    }
-    let why = match (command, spec.key) {
-        ("speed", "v1") => "the ball speed comes from --swing and --incoming".to_string(),
-        ("speed", "angle-deg" | "azimuth-deg") => "the incidence comes from --swing-path-deg".to_string(),
-        ("speed", "spin-rpm") => "the incoming ball's spin is --incoming-spin-rpm (court frame)".to_string(),
-        ("map", "x" | "r") => "the grid sets the impact point (--nx, --nr over the string face)".to_string(),
-        ("map", _) => {
-            "a map runs the modal solver wherever the model allows it, else fd with its automatic step".to_string()
+    let why = match command {
+        "speed" => set_by_speed(spec.key)?.to_string(),
+        "map" => set_by_map(spec.key)?.to_string(),
+        "modes" if !ModesKeys::takes(spec.key) => {
+            let free: Vec<String> = keys::FREE_RACKET.iter().map(|s| format!("--{}", s.key)).collect();
+            let (last, init) = free.split_last()?;
+            format!("the free racket's modes depend only on {} and {last}", init.join(", "))
         }
-        ("modes", _) => "the free racket's modes depend only on --length, --mass, --ei and --segments".to_string(),
         _ => return None,
     };
     Some(format!("{command} does not take --{}: {why}", spec.key))

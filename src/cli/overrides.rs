@@ -3,8 +3,8 @@
 
 use clap::builder::{PossibleValue, PossibleValuesParser};
 use clap::{value_parser, Arg, ArgAction, ArgMatches, Command, FromArgMatches};
-use racket_impact::params::keys;
-use racket_impact::params::spec::{ParamSpec, Values};
+use racket_impact::params::spec::{Heading, ParamSpec, UsedWhen, Values};
+use racket_impact::params::{keys, used};
 use racket_impact::params::{Overrides, Params};
 
 /// The parameter keys a command takes: it has a flag for each, and reads each from a config
@@ -40,13 +40,13 @@ key_set! {
     /// `simulate`: every parameter.
     SimulateKeys = "simulate": |_key| true;
     /// `modes`: the free racket's modes depend only on its length, mass, stiffness and segments.
-    ModesKeys = "modes": |key| ["length", "mass", "ei", "segments"].contains(&key);
+    ModesKeys = "modes": |key| keys::FREE_RACKET.iter().any(|s| s.key == key);
     /// `speed`: every parameter but the impact speed, incidence and spin, which the swing sets.
-    SpeedKeys = "speed": |key| !racket_impact::study::speed::SPEED_SETS.contains(&key);
+    SpeedKeys = "speed": |key| racket_impact::study::speed::set_by_speed(key).is_none();
     /// `map`: every parameter but the impact point (the grid sets it) and the solver and its
     /// step (a map runs the modal solver wherever the variants allow it, else fd with its
     /// automatic step).
-    MapKeys = "map": |key| !["x", "r", "solver", "dt"].contains(&key);
+    MapKeys = "map": |key| racket_impact::study::map::set_by_map(key).is_none();
     /// `uncertainty`: every parameter, as `simulate` (its solver default is the modal one).
     UncertaintyKeys = "uncertainty": |_key| true;
 }
@@ -62,29 +62,13 @@ impl<K: KeySet> Default for OverrideArgs<K> {
     }
 }
 
-/// The help headings of the parameter flags, in the order the help shows them (the options a
-/// command has of its own come first, under clap's "Options", and the output options last).
-pub const HEADINGS: [&str; 6] = ["Impact", "Racket", "Ball", "Strings", "Oblique impact", "Numerics"];
-
-/// The heading a parameter's flag is listed under in the help: what it describes.
-pub fn heading(key: &str) -> &'static str {
-    match key {
-        "x" | "r" | "v1" => "Impact",
-        "ei" | "mass" | "length" | "ix" | "half-width" | "frame" | "grip" | "hand-stiffness" | "hand-damping"
-        | "grip-length" => "Racket",
-        "mb" | "k1" | "p" | "ball-radius" | "ball-inertia-factor" => "Ball",
-        "ks" | "strings" | "string-stiffening" | "stiffening-deflection" | "string" | "mu-ss" => "Strings",
-        "angle-deg" | "azimuth-deg" | "spin-rpm" | "mu" | "kt" | "tangential" => "Oblique impact",
-        _ => "Numerics",
-    }
-}
-
-/// The clap argument of one parameter: `--KEY <KEY>` with its help under its [`heading`];
-/// numbers may be negative (the validation names the range), choices list their names.
+/// The clap argument of one parameter: `--KEY <KEY>` with its help under its declared heading
+/// ([`ParamSpec::heading`]); numbers may be negative (the validation names the range), choices
+/// list their names.
 fn arg(spec: &ParamSpec, defaults: &Params, command: &str) -> Arg {
     let arg = Arg::new(spec.key)
         .long(spec.key)
-        .help_heading(heading(spec.key))
+        .help_heading(spec.heading.title())
         .value_name(spec.key.to_uppercase().replace('-', "_"))
         .action(ArgAction::Set)
         .help(help(spec, defaults, command));
@@ -102,11 +86,16 @@ fn arg(spec: &ParamSpec, defaults: &Params, command: &str) -> Arg {
 }
 
 /// The help line with the default the commands use, read from the parameters the commands
-/// start from (the paper's racket hit at its face centre).
+/// start from (the paper's racket hit at its face centre), how the default is chosen where the
+/// declaration says, and which impacts use the parameter where not every one does.
 fn help(spec: &ParamSpec, defaults: &Params, command: &str) -> String {
-    if spec.key == "solver" && command == "uncertainty" {
+    let used = match spec.used_when {
+        UsedWhen::Always => String::new(),
+        ref when => format!(" [used only {}]", used::words(when)),
+    };
+    if spec.key == keys::SOLVER.key && command == UncertaintyKeys::COMMAND {
         // its runs default to the fast solver, as a sweep's do (study::sweep::default_solver)
-        return format!("{} [default: modal; fd where a hand grip or stiffening strings need it]", spec.help());
+        return format!("{} [default: modal; fd where a hand grip or stiffening strings need it]{used}", spec.help());
     }
     let value = keys::value_text(spec.key, defaults).unwrap_or_default();
     let unit = if spec.unit.is_empty() || value.parse::<f64>().is_err() || matches!(spec.values, Values::Choice(_)) {
@@ -114,16 +103,8 @@ fn help(spec: &ParamSpec, defaults: &Params, command: &str) -> String {
     } else {
         format!(" {}", spec.unit)
     };
-    let note = match spec.key {
-        "x" => ", the centre of the string face; with --racket, the centre of its head",
-        "r" => ", on the long axis",
-        "dt" => ", the converged automatic step",
-        "ks" | "mass" | "length" | "ei" | "ix" | "half-width" | "mb" | "k1" | "p" => {
-            ", the paper's; with --racket, the racket file's"
-        }
-        _ => "",
-    };
-    format!("{} [default: {value}{unit}{note}]", spec.help())
+    let how = spec.default_words.map_or(String::new(), |words| format!(", {words}"));
+    format!("{} [default: {value}{unit}{how}]{used}", spec.help())
 }
 
 impl<K: KeySet> clap::Args for OverrideArgs<K> {
@@ -132,9 +113,9 @@ impl<K: KeySet> clap::Args for OverrideArgs<K> {
             Ok((p, _)) => p,
             Err(_) => Params::default(),
         };
-        // grouped by heading, in the order of HEADINGS, each group in the declarations' order
+        // grouped by heading, in the order of Heading::ALL, each group in the declarations' order
         let mut specs: Vec<&ParamSpec> = keys::ALL.iter().filter(|s| K::takes(s.key)).collect();
-        specs.sort_by_key(|s| HEADINGS.iter().position(|h| *h == heading(s.key)));
+        specs.sort_by_key(|s| Heading::ALL.iter().position(|h| *h == s.heading));
         specs.into_iter().fold(cmd, |cmd, spec| cmd.arg(arg(spec, &defaults, K::COMMAND)))
     }
 

@@ -15,8 +15,8 @@ pub struct RacketArgs {
     /// List the presets and exit
     #[arg(long)]
     pub list: bool,
-    /// Number of beam segments the fit is made for (4..=400)
-    #[arg(long, default_value_t = 39)]
+    /// Number of beam segments N (4..=400): the beam the fit is made for
+    #[arg(long, default_value_t = params::Numerics::default().segments, help_heading = params::keys::SEGMENTS.heading.title())]
     pub segments: usize,
     /// Output format
     #[arg(long, value_enum, default_value_t = Format::Text)]

@@ -144,7 +144,7 @@ fn run_claims(a: UncertaintyArgs) -> Result<()> {
         racket_impact::render::io::check_output_dir("out", path)?;
     }
     let progress = Progress::new(design.runs() as u64);
-    let rows = robustness::study(&racket_impact::experiments::Context::paper(), samples, seed, false, |done| {
+    let rows = robustness::study(&racket_impact::experiments::Context::paper(), samples, seed, false, None, |done| {
         progress.update(done as u64)
     })?;
     drop(progress);

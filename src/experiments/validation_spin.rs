@@ -18,8 +18,6 @@
 //! whose model denominator is below [`RATIO_FLOOR_RPM`] is undefined (an empty field): it would
 //! describe how small the denominator happened to be, not the racket.
 
-use serde::Deserialize;
-
 use super::{Context, Experiment, CENTRE_X};
 use crate::error::{Error, Result};
 use crate::params::{ks_from_tension_lb, strings, Grip, Oblique, Params, StringName, TangentialLaw};
@@ -38,69 +36,7 @@ pub const EXPERIMENT: Experiment = Experiment {
     claims: &[],
 };
 
-/// The measurements, compiled in.
-const MEASUREMENTS: &str = include_str!("../../data/measured/measurements.csv");
-
-/// One measured row: id, quantity, value, uncertainty, string, tension (lb).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Measured {
-    /// Row id (`M001`...).
-    pub id: String,
-    /// What was measured.
-    pub quantity: String,
-    /// The value, in the row's unit.
-    pub value: f64,
-    /// The row's string (empty if none).
-    pub string: String,
-    /// The row's tension, lb (NaN if none).
-    pub tension_lb: f64,
-}
-
-/// Where the measurements live, for the messages.
-const MEASUREMENTS_FILE: &str = "data/measured/measurements.csv";
-
-/// The columns of a measured row this experiment reads (the others are skipped).
-#[derive(Debug, Deserialize)]
-struct Row {
-    id: String,
-    quantity: String,
-    value: f64,
-    string: String,
-    string_tension_lb: Option<f64>,
-}
-
-/// Every row of a measurements table (`file` names it in the messages), read with the `csv`
-/// crate: a row that does not parse is an error naming the file and its line.
-pub fn parse_measurements(text: &str, file: &str) -> Result<Vec<Measured>> {
-    let mut rdr = csv::Reader::from_reader(text.as_bytes());
-    let headers =
-        rdr.headers().map_err(|e| Error::csv_row("measurements", file, text, &csv::StringRecord::new(), &e))?.clone();
-    rdr.deserialize::<Row>()
-        .map(|row| {
-            let r = row.map_err(|e| Error::csv_row("measurements", file, text, &headers, &e))?;
-            Ok(Measured {
-                id: r.id,
-                quantity: r.quantity,
-                value: r.value,
-                string: r.string,
-                tension_lb: r.string_tension_lb.unwrap_or(f64::NAN),
-            })
-        })
-        .collect()
-}
-
-/// The measured rows `ids`, in that order.
-pub fn measured(ids: &[&str]) -> Result<Vec<Measured>> {
-    let rows = parse_measurements(MEASUREMENTS, MEASUREMENTS_FILE)?;
-    ids.iter()
-        .map(|want| {
-            rows.iter()
-                .find(|r| r.id == *want)
-                .cloned()
-                .ok_or_else(|| Error::invalid("measurements", want, format!("no such row in {MEASUREMENTS_FILE}")))
-        })
-        .collect()
-}
+pub use crate::study::measured::{parse as parse_measurements, rows as measured, Measured};
 
 /// The smallest model spin, rpm, a ratio of spins is formed over: a tenth of the smallest
 /// measured table spin (1207 rpm, M013). Below it the ratio is undefined (NaN).
@@ -165,6 +101,11 @@ pub fn string_of(row: &Measured) -> Result<StringName> {
         .find(|e| row.string.starts_with(&e.name))
         .ok_or_else(|| Error::invalid("string", &row.string, "not in data/strings"))?;
     strings::parse(&entry.id)
+}
+
+/// The string tension of a measured row, lb (an error naming the row if it has none).
+pub fn tension_of(row: &Measured) -> Result<f64> {
+    row.tension_lb.ok_or_else(|| Error::invalid("measurements", &row.id, "the row states no string tension"))
 }
 
 /// The TWU shot's racket support and incoming ball on any parameters: the clamp (a frame too
@@ -252,16 +193,17 @@ fn run(ctx: &Context) -> Result<Table> {
     // the 14 table points
     let table = measured(&TABLE_IDS)?;
     let spread_at = |t: f64| {
-        let v: Vec<f64> = table.iter().filter(|m| m.tension_lb == t).map(|m| m.value).collect();
+        let v: Vec<f64> = table.iter().filter(|m| m.tension_lb == Some(t)).map(|m| m.value).collect();
         (v.iter().copied().fold(f64::MAX, f64::min), v.iter().copied().fold(f64::MIN, f64::max))
     };
     for (quantity, angle) in [("spin_out_rpm", 40.0), ("spin_out_rpm_50deg", 50.0)] {
         for m in &table {
             let string = string_of(m)?;
+            let tension_lb = tension_of(m)?;
             let params: Vec<Params> = LAWS
                 .iter()
                 .map(|&l| {
-                    let mut p = twu_shot(ctx, l, string, m.tension_lb);
+                    let mut p = twu_shot(ctx, l, string, tension_lb);
                     p.oblique.angle_deg = angle;
                     p
                 })
@@ -270,10 +212,10 @@ fn run(ctx: &Context) -> Result<Table> {
             rows.push(Compared {
                 quantity,
                 string: string.name().to_string(),
-                tension: m.tension_lb.into(),
+                tension: tension_lb.into(),
                 measured: m.value,
                 unit: "rpm",
-                spread: spread_at(m.tension_lb),
+                spread: spread_at(tension_lb),
                 source: m.id.clone(),
                 model,
             });
@@ -538,18 +480,8 @@ mod tests {
         let rows = measured(&TABLE_IDS).unwrap();
         for r in &rows {
             assert!(string_of(r).is_ok(), "{r:?}");
-            assert!(r.tension_lb == 52.0 || r.tension_lb == 62.0);
+            assert!(r.tension_lb == Some(52.0) || r.tension_lb == Some(62.0));
         }
         assert_eq!(rows.iter().filter(|r| string_of(r).unwrap() == StringName::Tcs16).count(), 2);
-    }
-
-    #[test]
-    fn a_bad_measured_row_is_an_error_naming_the_file_and_line() {
-        let head = MEASUREMENTS.lines().next().unwrap();
-        let good = MEASUREMENTS.lines().nth(1).unwrap();
-        let bad = good.replacen(",1642,", ",about 1642,", 1);
-        let msg = parse_measurements(&format!("{head}\n{good}\n{bad}\n"), "m.csv").unwrap_err().to_string();
-        assert!(msg.contains("m.csv:3") && msg.contains("value"), "{msg}");
-        assert!(parse_measurements(MEASUREMENTS, MEASUREMENTS_FILE).unwrap().len() >= 84);
     }
 }

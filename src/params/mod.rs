@@ -13,17 +13,21 @@
 //! - [`numerics`]: segments, load rule, time step, solver.
 //! - [`variants`]: frame model, grip, string law.
 //! - [`oblique`]: incidence angle, azimuth, incoming spin, friction (beyond the paper).
+//! - [`drop_test`]: the drop test the ball's values are read from (gravity, the 100-inch height, the
+//!   stiffness a drop's compression implies).
 //! - [`spec`] and [`keys`]: what a declaration is, and the declarations.
 //! - [`overrides`]: the `--config` file.
 //! - [`inputs`]: the input files a run has read (no output may replace one).
 //! - [`limits`]: the most work a command accepts (sweep sizes, series rows, comparisons).
-//! - [`used`]: which parameters an impact reads (a value given for one it does not is refused).
+//! - [`used`]: which impacts use a parameter, from its declaration, and what a value given for
+//!   one an impact does not use is told (a property noted, a method's option refused).
 //! - [`uncertainty`]: the distribution and source of a parameter's uncertainty.
 
 use serde::{Deserialize, Serialize};
 
 use crate::error::Result;
 
+pub mod drop_test;
 pub mod inputs;
 pub mod keys;
 pub mod limits;
@@ -37,6 +41,7 @@ pub mod uncertainty;
 pub mod used;
 pub mod variants;
 
+pub use drop_test::{drop_speed, DROP_HEIGHT_100_IN, G};
 pub use keys::Overrides;
 pub use numerics::{check_segments, LoadRule, Numerics, SolverKind, MAX_SEGMENTS, MIN_SEGMENTS};
 pub use oblique::Oblique;
@@ -45,16 +50,6 @@ pub use physical::{
     ellipse_half_width, Ball, Impact, Profile, Racket, Strings, DEFAULT_FACE_LENGTH, STIFFNESS_REL, TILT_MAX,
 };
 pub use variants::{Frame, Grip, StringLaw, StringName, TangentialLaw, Variants};
-
-/// Acceleration of gravity used for drop tests, m/s^2.
-pub const G: f64 = 9.81;
-/// 100 inches in metres (the ITF drop height).
-pub const DROP_HEIGHT_100_IN: f64 = 2.54;
-
-/// Speed of a ball dropped from `height` (m) at impact, `sqrt(2 g h)`, m/s.
-pub fn drop_speed(height: f64) -> f64 {
-    (2.0 * G * height).sqrt()
-}
 
 /// Calibration of SPEC.md section 3: `k_s` is proportional to the tension, 60 lb = 4e4 N/m (ours,
 /// inferred from the paper's 60 -> 50 lb arithmetic; the paper states no calibration).
@@ -102,7 +97,7 @@ impl Params {
         self.oblique.validate()?;
         if !self.oblique.is_normal() && self.variants.frame == Frame::Rigid {
             return Err(crate::Error::invalid(
-                "frame",
+                keys::FRAME.key,
                 "rigid",
                 "must be beam for an oblique or spinning ball (the tangential contact follows the normal force history of the fd or modal solver)",
             ));

@@ -36,7 +36,7 @@ impl std::str::FromStr for LoadRule {
         match s {
             "node" => Ok(LoadRule::Node),
             "hat" => Ok(LoadRule::Hat),
-            other => Err(Error::invalid("load", other, "must be 'node' or 'hat'")),
+            other => Err(Error::invalid(keys::LOAD.key, other, "must be 'node' or 'hat'")),
         }
     }
 }
@@ -75,7 +75,7 @@ impl std::str::FromStr for SolverKind {
         match s {
             "fd" => Ok(SolverKind::Fd),
             "modal" => Ok(SolverKind::Modal),
-            other => Err(Error::invalid("solver", other, "must be 'fd' or 'modal'")),
+            other => Err(Error::invalid(keys::SOLVER.key, other, "must be 'fd' or 'modal'")),
         }
     }
 }

@@ -4,8 +4,9 @@
 
 use serde::{Deserialize, Serialize};
 
+pub use super::drop_test::{kdyn_from_drop, BALL_KDYN};
 use super::keys;
-use super::{StringName, TangentialLaw, DROP_HEIGHT_100_IN, G};
+use super::{StringName, TangentialLaw};
 use crate::error::{Error, Result};
 
 /// How the ball arrives when it does not arrive along the string-plane normal, and the
@@ -69,17 +70,6 @@ pub struct Oblique {
     /// strings (measured about 3): see [`crate::model::tangential::radius`].
     pub ball_kdyn: f64,
 }
-
-/// The dynamic compression stiffness, N/m, of a ball of mass `mb` (kg) that a drop of
-/// [`DROP_HEIGHT_100_IN`] onto concrete compresses by `compression` (m) if it is a linear spring
-/// that stores the whole kinetic energy, `k = mb 2 g h / d^2`.
-pub const fn kdyn_from_drop(mb: f64, compression: f64) -> f64 {
-    mb * 2.0 * G * DROP_HEIGHT_100_IN / (compression * compression)
-}
-
-/// The default [`Oblique::ball_kdyn`]: the paper's 57 g ball as a linear spring compressed 6 mm
-/// by the drop on concrete (data/measured M081), 7.89e4 N/m.
-pub const BALL_KDYN: f64 = kdyn_from_drop(0.057, 0.006);
 
 /// The largest ball inertia factor `I / (m_b R^2)`: 2/3, a thin hollow shell, with all its
 /// mass at the radius `R` (no mass distribution within `R` has more).

@@ -1,7 +1,17 @@
-//! What a parameter declaration is: [`ParamSpec`] (key, help, unit, range, ...), the kinds of
-//! value a key takes ([`FlagValue`]), the range checks whose messages every validation uses, and
-//! the `declare_params!` macro that turns the one table in [`keys`](super::keys) into the
-//! specs, the [`Overrides`](super::Overrides) struct and its key list, setter, merge and apply.
+//! What a parameter declaration is: [`ParamSpec`] (key, help, unit, range, help heading, role
+//! and when an impact uses it, ...), the kinds of value a key takes ([`FlagValue`]), the range
+//! checks whose messages every validation uses, and the `declare_params!` macro that turns the
+//! one table in [`keys`](super::keys) into the specs, the [`Overrides`](super::Overrides) struct
+//! and its key list, setter, merge and apply.
+//!
+//! A declaration is what every surface of a parameter is derived from: the command line's flag
+//! (its help line, default and heading), the config key and its aliases, the validation
+//! messages, the notes and refusals of a value an impact does not use
+//! ([`used`](super::used)), the sweep column and the uncertainty. A library caller (the Python
+//! bindings) reads the same: [`ParamSpec::key`], [`ParamSpec::name`], [`ParamSpec::unit`],
+//! [`ParamSpec::range_text`], [`ParamSpec::help`], [`ParamSpec::heading`],
+//! [`ParamSpec::used_when`] and, for the default, [`keys::value_text`](super::keys::value_text)
+//! of the parameters a command starts from.
 
 use crate::error::{Error, Result};
 use crate::numfmt::{readable, sig};
@@ -11,6 +21,10 @@ use crate::numfmt::{readable, sig};
 pub struct ParamSpec {
     /// The flag and config key (`half-width`).
     pub key: &'static str,
+    /// The key as an identifier: its field in [`Overrides`](super::Overrides), and the name a
+    /// program (a Python keyword, a JSON member) spells it by: the key with underscores
+    /// (`half_width`).
+    pub name: &'static str,
     /// The flag's help line, as the doc comment of its [`Overrides`](super::Overrides) field.
     pub doc: &'static str,
     /// What it is, in words, for the validation messages (`string-plane stiffness`).
@@ -29,6 +43,83 @@ pub struct ParamSpec {
     /// How uncertain the paper's value is, with the source of that (the inputs of the
     /// `robustness` experiment); `None` for a parameter the paper fixes by choice.
     pub uncertainty: Option<super::uncertainty::Uncertainty>,
+    /// What it describes: the heading its flag is listed under in the help.
+    pub heading: Heading,
+    /// Whether it is a property (of the racket, ball, strings or shot) or a method's option:
+    /// what a value given for it is told where an impact does not use it.
+    pub role: Role,
+    /// Which impacts use it.
+    pub used_when: UsedWhen,
+    /// How its default is chosen, where the value alone does not say (`on the long axis`).
+    pub default_words: Option<&'static str>,
+}
+
+/// What a parameter describes, the heading its flag is listed under in the help, in the order
+/// the help shows them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Heading {
+    /// Where and how fast the ball arrives.
+    Impact,
+    /// The racket: its frame, how it is held.
+    Racket,
+    /// The ball.
+    Ball,
+    /// The string bed and the strings.
+    Strings,
+    /// An oblique or spinning ball: incidence, spin, friction, the tangential law.
+    Oblique,
+    /// The discretisation and the solver.
+    Numerics,
+}
+
+impl Heading {
+    /// Every heading, in the order the help shows them.
+    pub const ALL: [Heading; 6] =
+        [Heading::Impact, Heading::Racket, Heading::Ball, Heading::Strings, Heading::Oblique, Heading::Numerics];
+
+    /// The heading as the help prints it.
+    pub const fn title(self) -> &'static str {
+        match self {
+            Heading::Impact => "Impact",
+            Heading::Racket => "Racket",
+            Heading::Ball => "Ball",
+            Heading::Strings => "Strings",
+            Heading::Oblique => "Oblique impact",
+            Heading::Numerics => "Numerics",
+        }
+    }
+}
+
+/// What a parameter is, which decides what a value given for it is told where an impact does not
+/// use it (the brief, issue 32): a *property* of the racket, ball, strings or shot that the
+/// impact does not exercise is accepted with one note, so that a script describing one racket
+/// and ball can loop over impact points, angles and models; an *option of a method* the chosen
+/// method cannot honour is refused. (An option unused only because of where and how the ball
+/// arrives, a tangential law at normal incidence, is noted: no method was chosen against it.)
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Role {
+    /// Describes the racket, the ball, the strings or the shot.
+    Property,
+    /// Chooses or sets up a model or a solver (a frame, a grip, a law, a step).
+    MethodOption,
+}
+
+/// Which impacts use a parameter ([`super::used`] says why one does not, and whether a value
+/// given for it is then noted or refused).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum UsedWhen {
+    /// Every impact.
+    Always,
+    /// An oblique or spinning ball only: at normal incidence without spin no tangential force
+    /// acts.
+    Oblique,
+    /// An impact off the long axis (`r != 0`) only.
+    OffAxis,
+    /// An impact off the long axis or an oblique ball only: nothing else twists the frame.
+    Twisted,
+    /// Only where the choice parameter `.0` is used and takes one of the values named `.1` (for
+    /// the tangential law: a law with that mechanism, so `physical` too).
+    In(&'static ParamSpec, &'static [&'static str]),
 }
 
 /// The kind of value a parameter takes.
@@ -57,8 +148,9 @@ pub enum Check {
     /// A physical range, `lo <= v <= hi` ([`ParamSpec::check`]).
     Within(f64, f64),
     /// A rule of its own, in the `validate` of the struct that holds it (the impact point
-    /// against the face, `1 < p`, the segment count, the grip against the racket's length).
-    Rule,
+    /// against the face, `1 < p`, the segment count, the grip against the racket's length),
+    /// in words (`0 <= x <= length`).
+    Rule(&'static str),
     /// One of its names, checked when the text is parsed.
     Choice,
 }
@@ -74,7 +166,7 @@ impl ParamSpec {
     pub const fn range(&self) -> (f64, f64) {
         match self.check {
             Check::Within(lo, hi) => (lo, hi),
-            Check::Rule | Check::Choice => panic!("the parameter has no fixed range"),
+            Check::Rule(_) | Check::Choice => panic!("the parameter has no fixed range"),
         }
     }
 
@@ -83,7 +175,22 @@ impl ParamSpec {
     pub fn check(&self, v: f64) -> Result<()> {
         match self.check {
             Check::Within(lo, hi) => within(self.key, v, self.what, self.unit, (lo, hi)),
-            Check::Rule | Check::Choice => Ok(()),
+            Check::Rule(_) | Check::Choice => Ok(()),
+        }
+    }
+
+    /// The values it accepts, in words: `1 <= ks <= 1e12 N/m` (as its validation message says
+    /// them), its rule (`0 <= x <= length`), or its choices (`one of: node, hat`).
+    pub fn range_text(&self) -> String {
+        match (self.check, self.values) {
+            (Check::Within(lo, hi), _) => {
+                format!("{} <= {} <= {} {}", readable(lo), self.key, readable(hi), self.unit).trim_end().to_string()
+            }
+            (Check::Rule(words), _) => words.to_string(),
+            (Check::Choice, Values::Choice(choices)) => {
+                format!("one of: {}", choices.iter().map(|c| c.name).collect::<Vec<_>>().join(", "))
+            }
+            (Check::Choice, _) => String::new(),
         }
     }
 
@@ -102,6 +209,27 @@ impl ParamSpec {
             sig(v, 6),
             sig(lo, 3),
             sig(hi, 3),
+            self.what
+        ))
+    }
+
+    /// One warning line when the draws of `dist` for this parameter reach outside its usual
+    /// range (the range `simulate` warns with); `None` inside it or for a parameter without one.
+    pub fn unusual_draws(&self, dist: &super::uncertainty::Dist) -> Option<String> {
+        let (ulo, uhi) = self.usual?;
+        let ((lo, hi), which) = dist.plausibility_range();
+        if lo >= ulo && hi <= uhi {
+            return None;
+        }
+        let unit = if self.unit.is_empty() { String::new() } else { format!(" {}", self.unit) };
+        Some(format!(
+            "{} = {} reaches {}..{}{unit} ({which}), outside the usual {}..{}{unit} of {} (drawn anyway)",
+            self.key,
+            dist.text(),
+            sig(lo, 6),
+            sig(hi, 6),
+            sig(ulo, 3),
+            sig(uhi, 3),
             self.what
         ))
     }
@@ -260,16 +388,20 @@ pub(crate) fn one_of<T: Copy>(key: &'static str, text: &str, choices: &[(T, &str
 /// read from a config file) with `KEYS`, `set`, `or` and `apply`.
 ///
 /// Each entry: the doc line (the flag's help), then
-/// `CONST field: Type = "key" at place.in.params, what "...", unit "...", column "...", check;`
-/// where `check` is `within(lo, hi)`, `rule` or `choice`, optionally followed by
-/// `, usual(lo, hi)`: the range real equipment and shots lie in (outside it: a warning), and
-/// optionally by `, uncertain(dist, nominal, "source")`: the paper value's uncertainty
+/// `CONST field: Type = "key" at place.in.params, what "...", unit "...", column "...", check,`
+/// where `check` is `within(lo, hi)`, `rule "words"` or `choice`; then
+/// `under Heading, Role, used UsedWhen` ([`Heading`], [`Role`], [`UsedWhen`], by variant name),
+/// optionally followed by `, default WORDS`: how its default is chosen; by
+/// `, usual(lo, hi)`: the range real equipment and shots lie in (outside it: a warning); and by
+/// `, uncertain(dist, nominal, "source")`: the paper value's uncertainty
 /// ([`Uncertainty`](super::uncertainty::Uncertainty)).
 macro_rules! declare_params {
     ($(
         #[doc = $doc:literal]
         $konst:ident $field:ident: $ty:ty = $key:literal at $($place:ident).+,
-        what $what:literal, unit $unit:literal, column $column:literal, $check:ident $(($lo:expr, $hi:expr))?
+        what $what:literal, unit $unit:literal, column $column:literal, $check:ident $(($lo:expr, $hi:expr))? $($words:literal)?,
+        under $heading:ident, $role:ident, used $used:ident $(($($when:tt)*))?
+        $(, default $default:expr)?
         $(, usual($ulo:expr, $uhi:expr))?
         $(, uncertain($dist:expr, $nominal:expr, $source:literal))?;
     )*) => {
@@ -277,14 +409,19 @@ macro_rules! declare_params {
             #[doc = concat!("The `", $key, "` parameter:", $doc)]
             pub const $konst: ParamSpec = ParamSpec {
                 key: $key,
+                name: stringify!($field),
                 doc: $doc,
                 what: $what,
                 unit: $unit,
                 column: $column,
                 values: <$ty as FlagValue>::VALUES,
-                check: declare_params!(@check $check $(($lo, $hi))?),
+                check: declare_params!(@check $check $(($lo, $hi))? $($words)?),
                 usual: declare_params!(@usual $(($ulo, $uhi))?),
                 uncertainty: declare_params!(@uncertain $(($dist, $nominal, $source))?),
+                heading: super::spec::Heading::$heading,
+                role: super::spec::Role::$role,
+                used_when: super::spec::UsedWhen::$used $(($($when)*))?,
+                default_words: declare_params!(@default $($default)?),
             };
         )*
 
@@ -375,7 +512,7 @@ macro_rules! declare_params {
         }
     };
     (@check within ($lo:expr, $hi:expr)) => { Check::Within($lo, $hi) };
-    (@check rule) => { Check::Rule };
+    (@check rule $words:literal) => { Check::Rule($words) };
     (@check choice) => { Check::Choice };
     (@usual ($lo:expr, $hi:expr)) => { Some(($lo, $hi)) };
     (@usual) => { None };
@@ -383,6 +520,8 @@ macro_rules! declare_params {
         Some(super::uncertainty::Uncertainty { dist: $dist, nominal: $nominal, source: $source })
     };
     (@uncertain) => { None };
+    (@default $words:expr) => { Some($words) };
+    (@default) => { None };
 }
 
 pub(crate) use declare_params;

@@ -114,13 +114,13 @@ pub fn entry(name: StringName) -> Option<&'static StringEntry> {
 
 /// The string named `text` (a racket file's `string`), or a one-line refusal listing the names.
 pub fn parse(text: &str) -> Result<StringName> {
-    StringName::parse_flag("string", text)
+    StringName::parse_flag(super::keys::STRING.key, text)
 }
 
 /// Write the named string's friction coefficients into `o` (so that what is shown is what is
 /// used), refusing a `mu` or `mu-ss` given beside a string whose table entry sets it.
 pub fn apply(o: &mut Oblique, mu_given: bool, mu_ss_given: bool) -> Result<()> {
-    for (key, given) in [("mu", mu_given), ("mu-ss", mu_ss_given)] {
+    for (key, given) in [(super::keys::MU.key, mu_given), (super::keys::MU_SS.key, mu_ss_given)] {
         if given {
             refuse_if_set(o.string, key)?;
         }
@@ -133,7 +133,7 @@ pub fn apply(o: &mut Oblique, mu_given: bool, mu_ss_given: bool) -> Result<()> {
 /// `mu-ss`): a value given for that key beside it would never be used.
 pub fn sets(name: StringName, key: &str) -> Option<&'static str> {
     let e = entry(name)?;
-    matches!(key, "mu" | "mu-ss").then_some(e.id.as_str())
+    [super::keys::MU.key, super::keys::MU_SS.key].contains(&key).then_some(e.id.as_str())
 }
 
 /// Refuse a friction `key` given (as a flag, a config key or a swept axis) beside a string

@@ -1,5 +1,6 @@
 //! How uncertain a parameter is: a distribution ([`Dist`]: uniform, normal or log-uniform) and
-//! where it comes from ([`Uncertainty`]), declared beside the parameter in [`keys`](super::keys).
+//! where it comes from ([`Uncertainty`]), declared beside the parameter in [`keys`](super::keys)
+//! (the declaration, [`super::spec`], holds an [`Uncertainty`]; this file knows nothing of it).
 //! The `uncertainty` command and the `robustness` experiment draw their inputs through
 //! [`Dist::quantile`] (the inverse distribution function), so a low-discrepancy point in the
 //! unit cube maps to the same values everywhere.
@@ -106,29 +107,6 @@ impl Dist {
             ),
         }
     }
-}
-
-/// One warning line when the draws of `dist` for the parameter `spec` reach outside its usual
-/// range (the range `simulate` warns with, declared with the parameter); `None` inside it or
-/// for a parameter without one.
-pub fn unusual_draws(spec: &super::spec::ParamSpec, dist: &Dist) -> Option<String> {
-    use crate::numfmt::sig;
-    let (ulo, uhi) = spec.usual?;
-    let ((lo, hi), which) = dist.plausibility_range();
-    if lo >= ulo && hi <= uhi {
-        return None;
-    }
-    let unit = if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) };
-    Some(format!(
-        "{} = {} reaches {}..{}{unit} ({which}), outside the usual {}..{}{unit} of {} (drawn anyway)",
-        spec.key,
-        dist.text(),
-        sig(lo, 6),
-        sig(hi, 6),
-        sig(ulo, 3),
-        sig(uhi, 3),
-        spec.what
-    ))
 }
 
 /// A parameter's declared uncertainty: its distribution and the source of it.

@@ -175,14 +175,14 @@ impl Variants {
         let nonlinear = self.strings == StringLaw::Stiffening || self.grip == Grip::Hand;
         if nonlinear && self.frame == Frame::Rigid {
             return Err(Error::invalid(
-                "frame",
+                keys::FRAME.key,
                 "rigid",
                 "must be beam with stiffening strings or a hand grip (the rigid frame is the closed-form limit for linear strings and a free racket)",
             ));
         }
         if nonlinear && solver == SolverKind::Modal {
             return Err(Error::invalid(
-                "solver",
+                keys::SOLVER.key,
                 "modal",
                 "must be fd with stiffening strings or a hand grip (the modal solver needs a linear, undamped system)",
             ));

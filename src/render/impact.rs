@@ -4,7 +4,7 @@ use std::path::Path;
 
 use crate::error::Result;
 use crate::numfmt::fmt_sig;
-use crate::params::Params;
+use crate::params::{keys, Params};
 use crate::render::table::{Table, Value};
 use crate::solve::outcome::TEXT_ORDER;
 use crate::solve::{ImpactResult, SeriesRow};
@@ -46,24 +46,19 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
             fmt_sig(o.ball_radius, 6),
             fmt_sig(o.ball_inertia_factor, 6)
         ));
-        // the law, with only the parameters it uses
-        use crate::params::TangentialLaw as Law;
-        let law = o.tangential;
-        let mut used = Vec::new();
-        if law.has(Law::Bed) {
-            used.push(format!("mu-ss {}", fmt_sig(o.mu_ss, 6)));
-        }
-        if law.has(Law::Loss) {
-            used.push(format!("ball-ex {}", fmt_sig(o.ball_ex, 6)));
-        }
-        if law.has(Law::Radius) || law.has(Law::Offset) {
-            used.push(format!("ball-kdyn {} N/m", fmt_sig(o.ball_kdyn, 6)));
-        }
+        // the law, with only the parameters it uses (those declared as used under some laws)
+        let mut used: Vec<String> = law_parameters()
+            .filter(|spec| crate::params::used::unused(spec, p).is_none())
+            .filter_map(|spec| {
+                let unit = if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) };
+                Some(format!("{} {}{unit}", spec.key, fmt_sig(keys::value_number(spec.key, p)?, 6)))
+            })
+            .collect();
         if let Some(e) = crate::params::strings::entry(o.string) {
-            used.push(format!("string {}", e.name));
+            used.push(format!("{} {}", keys::STRING.key, e.name));
         }
         let used = if used.is_empty() { String::new() } else { format!(" ({})", used.join(", ")) };
-        s.push_str(&format!("tangential: {}{used}\n", law.name()));
+        s.push_str(&format!("tangential: {}{used}\n", o.tangential.name()));
     }
     let held = p.variants.grip == crate::params::Grip::Hand;
     for field in TEXT_ORDER {
@@ -91,6 +86,15 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
         s.push_str("recontact          yes: the frame meets the ball again after separation\n");
     }
     s
+}
+
+/// The parameters only some tangential laws use (their declaration's `used_when` names the
+/// law), in the order of their declaration.
+fn law_parameters() -> impl Iterator<Item = &'static crate::params::spec::ParamSpec> {
+    use crate::params::spec::UsedWhen;
+    keys::ALL
+        .iter()
+        .filter(|s| matches!(s.used_when, UsedWhen::In(selector, _) if selector.key == keys::TANGENTIAL.key))
 }
 
 /// Why a field of an oblique or spinning impact is undefined (NaN), in its text line.

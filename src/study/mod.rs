@@ -7,6 +7,7 @@
 
 pub mod diagnose;
 pub mod map;
+pub mod measured;
 pub mod sensitivity;
 pub mod speed;
 pub mod sweep;
@@ -16,7 +17,8 @@ use std::path::{Path, PathBuf};
 
 use crate::diagnostic::{Diagnostic, Kind};
 use crate::error::{Error, Result};
-use crate::params::{Overrides, Params};
+use crate::params::spec::ParamSpec;
+use crate::params::{keys, used, Overrides, Params};
 use crate::racket::Fitted;
 
 /// The columns of the commands' tables that are neither a parameter's column
@@ -89,52 +91,49 @@ impl Sources {
         Ok((config, dropped))
     }
 
-    /// Refuse a flag for a method's option that none of the command's impacts `params` can
-    /// honour ([`crate::params::used::is_refused`]); return the notes ([`Kind::NotUsed`]): one
-    /// for each flag of a property none of them exercises (field: its key), and one naming the
-    /// config file's keys that the command does not take or its impacts do not use (a config
-    /// file may be shared between commands, so these are not refused; field `config`).
+    /// Refuse a value for a method's option that none of the command's impacts `params` can
+    /// honour, from a flag or from the config file alike ([`crate::params::used`]); return the
+    /// notes ([`Kind::NotUsed`]): one for each flag of a property none of them exercises (field:
+    /// its key), and one naming the config file's keys that the command does not take, that are
+    /// set on the command line, or that are properties none of its impacts exercises (a config
+    /// file may be shared between commands, so a key a command does not take is not refused;
+    /// field `config`).
     pub fn check_used(&self, params: &[Params]) -> Result<Vec<Diagnostic>> {
         let mut noted = Vec::new();
-        for key in self.flags.given() {
-            let value =
-                |key: &str| params.first().and_then(|p| crate::params::keys::value_text(key, p)).unwrap_or_default();
-            noted.extend(unused_flag(key, value, params, ("parameter", "this impact"))?);
+        let first = params.first().copied().unwrap_or_default();
+        for spec in self.flags.given().into_iter().filter_map(keys::find) {
+            let value = keys::value_text(spec.key, &first).unwrap_or_default();
+            noted.extend(unused_flag(spec, &value, params, "this impact")?);
         }
         let (config, dropped) = self.config()?;
         let path = self.config.as_deref().unwrap_or(Path::new(""));
         let overridden: Vec<&str> = self.flags.given().into_iter().chain(self.set_by_options.iter().copied()).collect();
-        noted.extend(unused_config_note(path, &config, &overridden, &dropped, self.command, params));
+        noted.extend(unused_config_note(path, &config, &overridden, &dropped, self.command, params)?);
         Ok(noted)
     }
 }
 
-/// The note ([`Kind::NotUsed`]) for the flag `key` (its value written by `value`) that none of
-/// the impacts `params` uses, or its refusal if it is a method's option none of them can honour
-/// ([`crate::params::used::is_refused`]: a property an impact does not exercise is noted, a
-/// method's option it cannot honour refused); `None` if one of them uses it. `(fallback, these)`:
-/// the field for a key the parameters do not declare, and the words for the impacts.
-pub(crate) fn unused_flag(
-    key: &str,
-    value: impl FnOnce(&str) -> String,
-    params: &[Params],
-    (fallback, these): (&'static str, &str),
-) -> Result<Option<Diagnostic>> {
-    let Some((key, why)) = crate::params::used::first_unused(&[key], params) else {
+/// The note ([`Kind::NotUsed`]) for the flag of `spec` (its value written `value`) that none
+/// of the impacts `params` uses, or its refusal if it is a method's option none of them can
+/// honour ([`crate::params::used`]: a property an impact does not exercise is noted, a method's
+/// option it cannot honour refused); `None` if one of them uses it. `these`: the words for the
+/// impacts.
+pub(crate) fn unused_flag(spec: &ParamSpec, value: &str, params: &[Params], these: &str) -> Result<Option<Diagnostic>> {
+    let Some((spec, unused)) = used::first_unused(&[spec], params) else {
         return Ok(None);
     };
-    let value = value(key);
-    let field = crate::params::keys::find(key).map_or(fallback, |s| s.key);
-    if params.first().is_some_and(|p| crate::params::used::is_refused(key, p)) {
+    let (field, why) = (spec.key, unused.why);
+    if unused.refused {
         return Err(Error::invalid(field, value, why));
     }
     Ok(Some(Diagnostic::new(Kind::NotUsed, field, format!("--{field} {value} is not exercised by {these} ({why})"))))
 }
 
 /// One note ([`Kind::NotUsed`], field `config`) naming the keys of the config file at `path`
-/// (values `config`) that are not used: those the command does not take (`dropped`), and those
-/// none of its impacts `params` uses ([`crate::params::used`]) unless set otherwise
-/// (`overridden`: by a flag, or swept). `None` when every key is used.
+/// (values `config`) that are not used: those the command does not take (`dropped`), those set
+/// otherwise (`overridden`: by a flag, or swept), and the properties none of its impacts
+/// `params` exercises ([`crate::params::used`]); `None` when every key is used. A method's
+/// option none of the impacts can honour is refused, as its flag is.
 pub fn unused_config_note(
     path: &Path,
     config: &Overrides,
@@ -142,8 +141,7 @@ pub fn unused_config_note(
     dropped: &[&str],
     command: &str,
     params: &[Params],
-) -> Option<Diagnostic> {
-    use crate::params::used::{first_unused, unused_reason};
+) -> Result<Option<Diagnostic>> {
     let mut notes: Vec<String> = Vec::new();
     if !dropped.is_empty() {
         notes.push(format!("{} (not used by {command})", dropped.join(", ")));
@@ -152,16 +150,20 @@ pub fn unused_config_note(
     if !set.is_empty() {
         notes.push(format!("{} (set on the command line)", set.join(", ")));
     }
-    for key in config.given().into_iter().filter(|k| !overridden.contains(k)) {
-        if first_unused(&[key], params).is_some() {
-            let why = params.first().and_then(|p| unused_reason(key, p)).unwrap_or_default();
-            notes.push(format!("{key} ({why})"));
+    for spec in config.given().into_iter().filter(|k| !overridden.contains(k)).filter_map(keys::find) {
+        let Some((spec, unused)) = used::first_unused(&[spec], params) else { continue };
+        if unused.refused {
+            let mut values = Params::default();
+            config.apply(&mut values);
+            let value = keys::value_text(spec.key, &values).unwrap_or_default();
+            return Err(Error::invalid(spec.key, value, format!("{} (config file {})", unused.why, path.display())));
         }
+        notes.push(format!("{} ({})", spec.key, unused.why));
     }
-    (!notes.is_empty()).then(|| {
+    Ok((!notes.is_empty()).then(|| {
         let sentence = format!("config file {}: not used here: {}", path.display(), notes.join("; "));
         Diagnostic::new(Kind::NotUsed, "config", sentence)
-    })
+    }))
 }
 
 /// The overrides of a `--config` file, or none.

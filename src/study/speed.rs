@@ -9,6 +9,7 @@ use crate::diagnostic::{Diagnostic, Kind};
 use crate::error::{Error, Result};
 use crate::numfmt::sig;
 use crate::params::keys;
+use crate::params::spec::ParamSpec;
 use crate::params::{ks_from_tension_lb, Params};
 use crate::render::table::{Table, Value};
 use crate::solve::swing::{gain_pct, outgoing_speed, Swing};
@@ -40,8 +41,20 @@ impl SpeedUnit {
     pub const MS: SpeedUnit = SpeedUnit { si: 1.0, label: "m/s" };
 }
 
-/// The parameter keys `speed` sets itself (from the swing, the incoming ball and its spin).
-pub const SPEED_SETS: [&str; 4] = ["v1", "angle-deg", "azimuth-deg", "spin-rpm"];
+/// The parameters `speed` sets itself, each with where it comes from: the ball speed (from the
+/// swing and the incoming ball), the incidence (from the swing path) and the spin (from the
+/// incoming ball's).
+pub const SPEED_SETS: [(ParamSpec, &str); 4] = [
+    (keys::V1, "the ball speed comes from --swing and --incoming"),
+    (keys::ANGLE_DEG, "the incidence comes from --swing-path-deg"),
+    (keys::AZIMUTH_DEG, "the incidence comes from --swing-path-deg"),
+    (keys::SPIN_RPM, "the ball's spin comes from --incoming-spin-rpm (court frame)"),
+];
+
+/// Where `speed` takes the parameter `key` from, if it sets it itself ([`SPEED_SETS`]).
+pub fn set_by_speed(key: &str) -> Option<&'static str> {
+    SPEED_SETS.iter().find(|(s, _)| s.key == key).map(|(_, why)| *why)
+}
 
 /// A swing, an incoming ball and the variants to compare.
 #[derive(Debug, Clone)]
@@ -212,15 +225,14 @@ impl SpeedRequest {
     /// dropped with a note, [`SPEED_SETS`].)
     fn check_unused(&self) -> Result<()> {
         let given = &self.sources.flags;
-        let set: [(&'static str, Option<f64>, &str); 4] = [
-            ("v1", given.v1, "the ball speed comes from --swing and --incoming"),
-            ("angle-deg", given.angle_deg, "the incidence comes from --swing-path-deg"),
-            ("azimuth-deg", given.azimuth_deg, "the incidence comes from --swing-path-deg"),
-            ("spin-rpm", given.spin_rpm, "the ball's spin comes from --incoming-spin-rpm"),
-        ];
-        match set.iter().find(|(_, v, _)| v.is_some()) {
-            Some((key, Some(v), why)) => Err(Error::invalid(key, v, format!("speed does not use it: {why}"))),
-            _ => Ok(()),
+        match SPEED_SETS.iter().find(|(spec, _)| given.given().contains(&spec.key)) {
+            Some((spec, why)) => {
+                let mut values = Params::default();
+                given.apply(&mut values);
+                let value = keys::value_text(spec.key, &values).unwrap_or_default();
+                Err(Error::invalid(spec.key, value, format!("speed does not use it: {why}")))
+            }
+            None => Ok(()),
         }
     }
 }
@@ -307,7 +319,7 @@ impl SpeedComparison {
     fn diagnostics_of(&self, rows: &[&SpeedRow]) -> Vec<Diagnostic> {
         let (req, u) = (&self.request, self.request.unit);
         let mut out = self.noted.clone();
-        out.extend(diagnose::parameters(rows.iter().map(|r| &r.params), &SPEED_SETS));
+        out.extend(diagnose::parameters(rows.iter().map(|r| &r.params), &SPEED_SETS.map(|(s, _)| s.key)));
         if let Some((lo, hi)) = keys::V1.usual {
             let v = (req.swing + req.incoming) * u.si;
             if !(lo..=hi).contains(&v) {

@@ -66,6 +66,21 @@ pub const MAX_GRID: usize = 401;
 /// Impacts per parallel chunk (the progress callback runs after each).
 pub const CHUNK: usize = 256;
 
+/// The parameters a map sets itself, each with why: the impact point (the grid sets it), and
+/// the solver and its step ([`with_map_solver`]).
+pub const MAP_SETS: [(crate::params::spec::ParamSpec, &str); 4] = {
+    use crate::params::keys::{DT, R, SOLVER, X};
+    const GRID: &str = "the grid sets the impact point (--nx, --nr over the string face)";
+    const SOLVER_WHY: &str =
+        "a map runs the modal solver wherever the model allows it, else fd with its automatic step";
+    [(X, GRID), (R, GRID), (SOLVER, SOLVER_WHY), (DT, SOLVER_WHY)]
+};
+
+/// Why a map does not take the parameter `key`, if it sets it itself ([`MAP_SETS`]).
+pub fn set_by_map(key: &str) -> Option<&'static str> {
+    MAP_SETS.iter().find(|(s, _)| s.key == key).map(|(_, why)| *why)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

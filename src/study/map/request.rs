@@ -180,16 +180,16 @@ impl MapRequest {
         Ok(MapOutcome { table, heatmap, metadata, summary })
     }
 
-    /// The configuration with the racket `racket`: as [`Sources::resolve`], with the impact
-    /// position taken out of the flags (rejected) and the config file (ignored); the grid sets
-    /// it.
+    /// The configuration with the racket `racket`: as [`Sources::resolve`], with what a map
+    /// sets itself ([`super::MAP_SETS`]) refused as a flag and the config file's impact position
+    /// ignored; the grid sets it.
     fn params(&self, racket: Option<&str>) -> Result<Params> {
         let flags = &self.sources.flags;
-        if let Some(x) = flags.x {
-            return Err(Error::invalid("x", x, "a map chooses the impact points itself: give --nx/--nr, not --x"));
-        }
-        if let Some(r) = flags.r {
-            return Err(Error::invalid("r", r, "a map chooses the impact points itself: give --nx/--nr, not --r"));
+        if let Some((spec, why)) = super::MAP_SETS.iter().find(|(s, _)| flags.given().contains(&s.key)) {
+            let mut values = Params::default();
+            flags.apply(&mut values);
+            let value = crate::params::keys::value_text(spec.key, &values).unwrap_or_default();
+            return Err(Error::invalid(spec.key, value, format!("map does not take it: {why}")));
         }
         let (mut config, _) = self.sources.config()?;
         // an on-axis point at the tip is valid on every face; the grid replaces it

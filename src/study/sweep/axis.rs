@@ -3,7 +3,8 @@
 //! `start:stop:count:log`, expanded into one [`Axis`] of values.
 
 use crate::error::{Error, Result};
-use crate::params::{limits, Overrides};
+use crate::params::spec::Values;
+use crate::params::{keys, limits, Overrides};
 
 /// One varied parameter and its values (as text, parsed like a flag).
 #[derive(Debug, Clone, PartialEq)]
@@ -33,6 +34,8 @@ impl Axis {
 /// Expand a spec into values.
 pub fn parse_spec(key: &str, spec: &str) -> Result<Axis> {
     let bad = |why: &str| Error::invalid("sweep", format!("--{key} {spec}"), why);
+    // a count (the segments) takes whole values
+    let whole = keys::find(key).is_some_and(|s| matches!(s.values, Values::Count));
     let values = if spec.contains(':') {
         let parts: Vec<&str> = spec.split(':').collect();
         let log = match parts.len() {
@@ -67,7 +70,7 @@ pub fn parse_spec(key: &str, spec: &str) -> Result<Axis> {
             .map(|i| {
                 let f = if n == 1 { 0.0 } else { i as f64 / (n - 1) as f64 };
                 let v = if log { 10f64.powf(a.log10() + f * (b.log10() - a.log10())) } else { a + f * (b - a) };
-                if key == "segments" {
+                if whole {
                     format!("{}", v.round())
                 } else {
                     format!("{v}")
@@ -88,7 +91,7 @@ pub fn parse_spec(key: &str, spec: &str) -> Result<Axis> {
     // every value runs once: a value given twice (a list, or a range whose rounding to whole
     // segments repeats values) would run the same impacts twice
     if let Some(twice) = repeated(&values) {
-        let why = if key == "segments" && spec.contains(':') {
+        let why = if whole && spec.contains(':') {
             let distinct = distinct_count(&values);
             format!("rounded to whole segments the range repeats {twice}: it has {distinct} different values, so give a count of at most {distinct}")
         } else {

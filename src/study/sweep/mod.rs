@@ -19,6 +19,7 @@ use std::path::Path;
 
 use crate::diagnostic::Diagnostic;
 use crate::error::{Error, Result};
+use crate::params::spec::ParamSpec;
 use crate::params::{keys, limits, Overrides, Params};
 use run::Points;
 
@@ -31,15 +32,15 @@ pub const MAX_POINTS: u64 = limits::MAX_SWEEP_POINTS;
 /// given.
 pub fn default_solver(base: &Overrides, axes: &[Axis]) -> Option<crate::params::SolverKind> {
     use crate::params::{Grip, SolverKind, StringLaw};
-    if base.solver.is_some() || axes.iter().any(|a| a.key == "solver") {
+    if base.solver.is_some() || axes.iter().any(|a| a.key == keys::SOLVER.key) {
         return base.solver;
     }
     let swept =
         |key: &str, value: &str| axes.iter().any(|a| a.key == key && a.values.iter().any(|v| v.trim() == value));
     let needs_fd = base.grip == Some(Grip::Hand)
         || base.strings == Some(StringLaw::Stiffening)
-        || swept("grip", "hand")
-        || swept("strings", "stiffening");
+        || swept(keys::GRIP.key, Grip::Hand.name())
+        || swept(keys::STRINGS.key, StringLaw::Stiffening.name());
     Some(if needs_fd { SolverKind::Fd } else { SolverKind::Modal })
 }
 
@@ -121,13 +122,10 @@ impl Sweep {
     fn check_friction_not_set_by_string(&self) -> Result<()> {
         let given = |key: &str| {
             self.axes.iter().any(|a| a.key == key)
-                || match key {
-                    "mu" => self.base.mu.is_some(),
-                    _ => self.base.mu_ss.is_some(),
-                }
+                || if key == keys::MU.key { self.base.mu.is_some() } else { self.base.mu_ss.is_some() }
         };
         for p in self.representatives()? {
-            for key in ["mu", "mu-ss"] {
+            for key in [keys::MU.key, keys::MU_SS.key] {
                 if given(key) {
                     crate::params::strings::refuse_if_set(p.oblique.string, key)?;
                 }
@@ -139,19 +137,20 @@ impl Sweep {
     /// The notes of this sweep over its `representatives` ([`Sweep::representatives`]), as
     /// [`crate::diagnostic::Kind::NotUsed`] diagnostics: one for each swept property none of the impacts
     /// exercises (a method's option none of them can honour is refused, as for `simulate`,
-    /// [`crate::params::used::is_refused`]), and one naming the keys of the `config` file that
+    /// [`crate::params::used`]), and one naming the keys of the `config` file that
     /// none of them uses ([`crate::study::unused_config_note`]).
     pub fn check_used(&self, representatives: &[Params], config: Option<&Path>) -> Result<Vec<Diagnostic>> {
         let mut noted = Vec::new();
-        let swept: Vec<&str> = self.axes.iter().filter_map(|ax| keys::find(&ax.key).map(|s| s.key)).collect();
-        for key in &swept {
+        let swept: Vec<&ParamSpec> = self.axes.iter().filter_map(|ax| keys::find(&ax.key)).collect();
+        for spec in &swept {
             let values =
-                |key: &str| self.axes.iter().find(|ax| ax.key == key).map(|ax| ax.values.join(",")).unwrap_or_default();
-            noted.extend(crate::study::unused_flag(key, values, representatives, ("sweep", "these impacts"))?);
+                self.axes.iter().find(|ax| ax.key == spec.key).map(|ax| ax.values.join(",")).unwrap_or_default();
+            noted.extend(crate::study::unused_flag(spec, &values, representatives, "these impacts")?);
         }
         if let Some(path) = config {
             let file = crate::study::config_file(Some(path))?;
-            noted.extend(crate::study::unused_config_note(path, &file, &swept, &[], "sweep", representatives));
+            let swept: Vec<&str> = swept.iter().map(|s| s.key).collect();
+            noted.extend(crate::study::unused_config_note(path, &file, &swept, &[], "sweep", representatives)?);
         }
         Ok(noted)
     }
@@ -219,7 +218,7 @@ impl Sweep {
 
     /// Whether the solver is one of the axes (then its column is not repeated at the end).
     pub fn solver_swept(&self) -> bool {
-        self.axes.iter().any(|a| a.key == "solver")
+        self.axes.iter().any(|a| a.key == keys::SOLVER.key)
     }
 
     /// The [`recorded_keys`] that are not swept: their columns follow the swept ones.

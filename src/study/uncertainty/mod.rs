@@ -179,8 +179,8 @@ impl Study {
         for (input, text) in self.inputs.iter().zip(varies) {
             // (drawing a property the impact does not exercise changes nothing: refused here
             // too, as a study of it would find every index zero)
-            if let Some(why) = crate::params::used::unused_reason(input.key, &probe) {
-                return Err(Error::invalid("vary", text, format!("{} is {why}", input.key)));
+            if let Some(unused) = keys::find(input.key).and_then(|spec| crate::params::used::unused(spec, &probe)) {
+                return Err(Error::invalid("vary", text, format!("{} is {}", input.key, unused.why)));
             }
             if let Some(id) = crate::params::strings::sets(self.base.oblique.string, input.key) {
                 return Err(Error::invalid(
@@ -254,8 +254,7 @@ impl Study {
         out.extend(self.noted.iter().cloned());
         out.extend(crate::study::diagnose::parameters([&self.base], &drawn));
         for input in &self.inputs {
-            let line =
-                keys::find(input.key).and_then(|spec| crate::params::uncertainty::unusual_draws(spec, &input.dist));
+            let line = keys::find(input.key).and_then(|spec| spec.unusual_draws(&input.dist));
             out.extend(line.map(|s| Diagnostic::new(Kind::Unusual, input.key, s)));
         }
         out
