@@ -1,10 +1,12 @@
 """The example under examples/ reproduces its paper figure, and the README's Python example
 prints what the README shows."""
 
+import os
 import re
 import runpy
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -16,9 +18,16 @@ from conftest import ROOT
 EXAMPLE = ROOT / "python" / "examples" / "fig5a_position_soft.py"
 
 
+def python(*args, cwd):
+    """A new Python process that imports the package under test (wherever it is installed)."""
+    path = [str(Path(ri.__file__).resolve().parents[1]), os.environ.get("PYTHONPATH", "")]
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(p for p in path if p)}
+    return subprocess.run([sys.executable, *args], capture_output=True, text=True, cwd=cwd, env=env)
+
+
 def test_the_example_reproduces_fig5a_exactly(tmp_cwd):
     pytest.importorskip("pandas")
-    done = subprocess.run([sys.executable, str(EXAMPLE)], capture_output=True, text=True, cwd=tmp_cwd)
+    done = python(str(EXAMPLE), cwd=tmp_cwd)
     assert done.returncode == 0, done.stderr
     assert done.stderr == ""
     assert "at the centre (x = 16.4 cm): e_A = 0.4" in done.stdout
@@ -38,7 +47,7 @@ def readme_example():
 
 def test_the_readme_python_example_prints_the_readmes_numbers(tmp_cwd):
     code, shown = readme_example()
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=tmp_cwd)
+    done = python("-c", code, cwd=tmp_cwd)
     assert done.returncode == 0, done.stderr
     assert done.stdout == shown
 
