@@ -388,7 +388,7 @@ fn series_values_too_small_are_refused_as_written() {
 /// silently).
 #[test]
 fn a_series_spacing_below_the_step_is_noted() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     let o = s.run(&["simulate", "--solver", "fd", "--series", "t.csv", "--series-dt", "1e-9"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let notes: Vec<String> = stderr(&o).lines().filter(|l| l.contains("--series-dt")).map(String::from).collect();
