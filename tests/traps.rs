@@ -500,11 +500,11 @@ fn unused_properties_are_noted_not_refused() {
 /// (it left an empty `figs/`); a directory that was there before is kept.
 #[test]
 fn an_interrupted_figures_run_leaves_no_directory_it_created() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     std::fs::create_dir(s.path("kept")).unwrap();
     for (out, created) in [("figs/sub", "figs"), ("kept", "")] {
         let mut child = bin()
-            .current_dir(s.0.path())
+            .current_dir(s.dir())
             .args(["figures", "--out", out])
             .stdin(Stdio::null())
             .stdout(Stdio::null())
@@ -544,7 +544,7 @@ fn an_interrupted_figures_run_leaves_no_directory_it_created() {
 /// nothing.
 #[test]
 fn an_immutable_output_is_refused_before_the_work() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     let out = s.file("u.csv", "old");
     let set = Command::new("chattr").arg("+i").arg(&out).stderr(Stdio::null()).status();
     if !set.is_ok_and(|st| st.success()) {
@@ -560,7 +560,7 @@ fn an_immutable_output_is_refused_before_the_work() {
 /// The files `figures` names are joined as paths (`figures --out /` printed `//modes.csv`).
 #[test]
 fn figures_name_their_files_with_one_slash() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     let o = s.run(&["figures", "--only", "modes", "--out", "figs/"]);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(stderr(&o).contains("-> figs/modes.{csv,png}"), "{}", stderr(&o));
@@ -570,7 +570,7 @@ fn figures_name_their_files_with_one_slash() {
 /// not at all under `--quiet` (it printed "(0.05 s)" in its summary line).
 #[test]
 fn map_prints_the_same_standard_output_twice() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     let args = ["map", "--nx", "3", "--nr", "2", "--out", "m.csv"];
     let (a, b) = (s.run(&args), s.run(&args));
     assert!(a.status.success() && b.status.success(), "{}", stderr(&a));
@@ -585,7 +585,7 @@ fn map_prints_the_same_standard_output_twice() {
 /// earlier map there is said in one line (it was silent). The root's .gitignore ignores them.
 #[test]
 fn a_map_without_out_says_it_replaced_an_earlier_one() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     let first = s.run(&["map", "--nx", "3", "--nr", "2"]);
     assert!(first.status.success(), "{}", stderr(&first));
     assert!(!stderr(&first).contains("replaced"), "{}", stderr(&first));
@@ -603,7 +603,7 @@ fn a_map_without_out_says_it_replaced_an_earlier_one() {
 /// on its command line) is refused in one line that says where it goes, as README says.
 #[test]
 fn a_config_key_of_another_command_says_where_it_goes() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     s.file("shared.toml", "ks = 3e4\nswing = 30\n");
     let o = s.run(&["simulate", "--config", "shared.toml"]);
     refused(&o, "unknown key `swing` (line 2): a config file holds parameters");
@@ -617,7 +617,7 @@ fn a_config_key_of_another_command_says_where_it_goes() {
 /// warned "p = 1 is outside the usual range").
 #[test]
 fn a_warning_shows_the_digits_given() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     let o = s.run(&["simulate", "--p", "1.000001"]);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(stderr(&o).contains("warning: p = 1.000001 is outside the usual 1.2..5"), "{}", stderr(&o));
