@@ -87,3 +87,75 @@ fn the_limits_admit_the_work_they_are_meant_for() {
     // one row per 2e-5 s (rounded to whole steps of 1.27e-6 s) over 1 s
     assert!(rows > 45_000, "{rows} rows");
 }
+
+/// Work estimated before it starts (issue 40, item 3): a `map`, `sweep` or `uncertainty`
+/// estimated above ten minutes is refused, before anything is written, with the estimate and
+/// what makes it long, unless `--long` is given; one above a minute says so on its first line
+/// of standard error before the work. The cases are the issue's: a racket of 1e6 kg held in the
+/// hand rings at 0.07 Hz and is followed for two of its periods after every impact (millions of
+/// steps, about 2 s an impact), and a stiff contact on 400 segments keeps every mode in the
+/// modal solver's search after the impact (about 0.3 s an impact).
+#[test]
+fn long_work_is_told_before_it_starts_and_refused_beyond_the_bound_unless_asked() {
+    let dir = tempfile::tempdir().unwrap();
+    let held = ["--grip", "hand", "--mass", "1e6"];
+    let refused: Vec<Vec<&str>> = vec![
+        [&["uncertainty", "--vary", "ks", "--samples", "1024", "--out", "u.json"][..], &held[..]].concat(),
+        [&["sweep", "--out", "s.csv"][..], &held[..], &["--x", "0.05:0.25:2000"][..]].concat(),
+        [&["map", "--nx", "61", "--out", "m.csv"][..], &held[..]].concat(),
+    ];
+    for args in &refused {
+        let o = run_limited(args, dir.path());
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(": the run is estimated at about "), "{args:?}: {err}");
+        assert!(err.contains("two periods of its fundamental, f1 = 0.0727 Hz"), "{args:?}: {err}");
+        assert!(err.contains("give --long to run it anyway"), "{args:?}: {err}");
+    }
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0, "nothing written");
+    // told, then run: the first line of standard error is the estimate (the run is stopped there)
+    let told: Vec<Vec<&str>> = vec![
+        [&["uncertainty", "--vary", "ks", "--samples", "1024", "--out", "u.json", "--long"][..], &held[..]].concat(),
+        vec!["map", "--v1", "1e-3", "--k1", "1e9", "--ks", "1e12", "--segments", "400", "--out", "m.csv"],
+    ];
+    for args in &told {
+        use std::io::BufRead;
+        let mut child = Command::new(env!("CARGO_BIN_EXE_racket-impact"))
+            .current_dir(dir.path())
+            .args(args)
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        let mut first = String::new();
+        std::io::BufReader::new(child.stderr.take().unwrap()).read_line(&mut first).unwrap();
+        child.kill().unwrap();
+        child.wait().unwrap();
+        assert!(first.starts_with("warning: this run is estimated at about "), "{args:?}: {first}");
+    }
+    let first = {
+        let o = run_limited(
+            &[
+                "map",
+                "--v1",
+                "1e-3",
+                "--k1",
+                "1e9",
+                "--ks",
+                "1e12",
+                "--segments",
+                "400",
+                "--nx",
+                "3",
+                "--nr",
+                "2",
+                "--out",
+                "m.csv",
+            ],
+            dir.path(),
+        );
+        String::from_utf8_lossy(&o.stderr).into_owned()
+    };
+    assert!(!first.contains("estimated"), "a small map says nothing: {first}");
+}

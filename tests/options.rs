@@ -245,6 +245,7 @@ const PROBES: &[(&str, &str, &[&str], &[&str])] = &[
     ("map", "nx", &["--nx", "8", "--nr", "5"], &["--nx", "7", "--nr", "5"]),
     ("map", "nr", &["--nx", "7", "--nr", "6"], &["--nx", "7", "--nr", "5"]),
     ("map", "out", &["--nx", "7", "--nr", "5", "--out", "m.csv"], &["--nx", "7", "--nr", "5"]),
+    ("map", "long", &["--nx", "7", "--nr", "5", "--long"], &["--nx", "7", "--nr", "5"]),
     ("map", "compare_racket", &["--nx", "7", "--nr", "5", "--compare-racket", "light"], &["--nx", "7", "--nr", "5"]),
     (
         "map",
@@ -255,6 +256,7 @@ const PROBES: &[(&str, &str, &[&str], &[&str])] = &[
     ("sweep", "racket", &["--racket", "tweener", "--x", "0.1,0.2"], &["--x", "0.1,0.2"]),
     ("sweep", "config", &["--config", "cfg.toml", "--x", "0.1,0.2"], &["--x", "0.1,0.2"]),
     ("sweep", "out", &["--out", "s.csv", "--x", "0.1,0.2"], &["--x", "0.1,0.2"]),
+    ("sweep", "long", &["--long", "--x", "0.1,0.2"], &["--x", "0.1,0.2"]),
     ("sweep", "quiet", &["--quiet", "--ks", "1e3,2e3"], &["--ks", "1e3,2e3"]),
     ("sweep", "specs", &["--x", "0.1,0.3"], &["--x", "0.1,0.2"]),
     // uncertainty's other probes run over UNCERTAINTY_STUDY (see [`probes`]); its own probe of
@@ -300,6 +302,7 @@ const UNCERTAINTY_PROBES: &[(&str, &[&str], &[&str])] = &[
     ("format", &["--format", "json"], &[]),
     ("vary", &["--vary", "ks=uniform:3e4:5e4"], &[]),
     ("seed", &["--seed", "3"], &[]),
+    ("long", &["--long"], &[]),
     ("out", &["--out", "u.json"], &[]),
     ("dt", &["--solver", "fd", "--dt", "1e-6"], &["--solver", "fd"]),
 ];

@@ -55,6 +55,10 @@ pub struct MapArgs {
     /// or T1,T2 (A at T1, B at T2); k_s = 4e4 N/m * T / 60 lb
     #[arg(long, value_parser = super::common::number, value_delimiter = ',', allow_hyphen_values = true)]
     pub compare_tension_lb: Vec<f64>,
+    /// Run even when the work is estimated above ten minutes, which is refused without it (a run
+    /// estimated above a minute says so before it starts)
+    #[arg(long)]
+    pub long: bool,
 }
 
 /// Check, compute, write the three files, then print the chosen format.
@@ -78,6 +82,10 @@ pub fn run(a: MapArgs) -> Result<()> {
     let outputs = Outputs::for_csv(&a.out.unwrap_or_else(|| request.default_csv()))?;
     super::common::check_stdout()?;
     let noted = request.check_used(&configs)?;
+    let estimate = MapRequest::estimate(&configs, total, rayon::current_num_threads());
+    if let Some(note) = estimate.check("map", format!("{} x {} grid", a.nx, a.nr), a.long)? {
+        warn(&note);
+    }
 
     let replaced = default_out && [&outputs.csv, &outputs.png, &outputs.json].iter().any(|p| p.exists());
     let bar = Progress::new(total as u64);

@@ -23,6 +23,10 @@ pub struct SweepArgs {
     /// hard links to the old file keep the old content); standard output if absent
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Run even when the work is estimated above ten minutes, which is refused without it (a run
+    /// estimated above a minute says so before it starts)
+    #[arg(long)]
+    pub long: bool,
     /// The varied parameters: --KEY SPEC pairs
     #[arg(trailing_var_arg = true, allow_hyphen_values = true, value_name = "--KEY SPEC")]
     pub specs: Vec<String>,
@@ -33,7 +37,7 @@ pub fn long_about() -> String {
     format!(
         "Run the cartesian product of ranges or lists of any parameters, in parallel, as CSV\n\n\
          Example: racket-impact sweep --out s.csv --x 0.02:0.60:50 --ks 2e4,4e4 --load node\n\n\
-         After the options (--out, --config, --racket), give any parameter as `--KEY SPEC`, where SPEC is a \
+         After the options (--out, --config, --racket, --long), give any parameter as `--KEY SPEC`, where SPEC is a \
          value (0.1), a list (2e4,4e4 or node,hat), a range start:stop:count or a log range \
          start:stop:count:log.\n\n\
          Sweeps use the modal solver (~30x faster, within 2e-5 of fd at normal incidence and 1e-4 for an \
@@ -80,6 +84,11 @@ pub fn run(a: SweepArgs) -> Result<()> {
     let noted = sweep.check_used(&representatives, a.config.as_deref())?;
     if let Some(path) = &a.out {
         racket_impact::render::io::check_output_dir("out", path)?;
+    }
+    if let Some(note) =
+        sweep.estimate(rayon::current_num_threads()).check("sweep", format!("{} impacts", sweep.len()), a.long)?
+    {
+        super::common::warn(&note);
     }
     let progress = Progress::new(sweep.len());
     let mut file = match &a.out {

@@ -37,6 +37,10 @@ pub struct UncertaintyArgs {
     /// experiment); takes only --samples, --seed, --format and --out
     #[arg(long)]
     pub claims: bool,
+    /// Run even when the work is estimated above ten minutes, which is refused without it (a run
+    /// estimated above a minute says so before it starts)
+    #[arg(long)]
+    pub long: bool,
 }
 
 /// The long help: what is computed and the declared uncertainties `--claims` uses.
@@ -80,6 +84,9 @@ pub fn run(a: UncertaintyArgs) -> Result<()> {
         Some(path) => racket_impact::render::io::check_output_dir("out", path)?,
         None => super::common::check_stdout()?,
     }
+    if let Some(note) = study.estimate(rayon::current_num_threads()).check("samples", samples, a.long)? {
+        warn(&note);
+    }
     let progress = Progress::new(study.design.runs() as u64);
     let outputs = study.run(|done| progress.update(done as u64))?;
     drop(progress);
@@ -103,6 +110,9 @@ fn run_claims(a: UncertaintyArgs) -> Result<()> {
     }
     if let Some(k) = a.common.overrides.0.given().first() {
         return refuse(format!("--{k}"));
+    }
+    if a.long {
+        return refuse("--long".into());
     }
     if a.common.racket.is_some() || a.common.config.is_some() {
         return refuse(if a.common.racket.is_some() { "--racket".into() } else { "--config".into() });

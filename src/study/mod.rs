@@ -13,6 +13,7 @@ pub mod sensitivity;
 pub mod speed;
 pub mod sweep;
 pub mod uncertainty;
+pub mod work;
 
 use std::path::{Path, PathBuf};
 

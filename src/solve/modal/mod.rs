@@ -219,14 +219,22 @@ impl ModalModel {
         Shared::new(lam, g, residual, compression, basis, res.phase_per_step / omega_contact)
     }
 
+    /// The worst case of the free-vibration search after the impact, in mode-samples: two
+    /// fundamental periods sampled at [`PHASE_PER_SAMPLE`](crate::model::free::PHASE_PER_SAMPLE)
+    /// of the fastest kept mode, every kept mode at each sample (what [`MAX_MODE_SAMPLES`]
+    /// bounds, and `study::work` estimates a run by).
+    pub fn free_vibration_work(&self) -> f64 {
+        let modes = self.retained_modes();
+        let fastest = self.set.omega.last().copied().unwrap_or(0.0);
+        let samples = 2.0 / self.impact.f1_hz * fastest / crate::model::free::PHASE_PER_SAMPLE;
+        samples * modes as f64
+    }
+
     /// Refuse a model whose free-vibration search would exceed [`MAX_MODE_SAMPLES`] (the
     /// steps of the contact are bounded by the time limit and the finest step level).
     fn check_work(&self) -> Result<()> {
-        let modes = self.retained_modes();
-        let fastest = self.set.omega.last().copied().unwrap_or(0.0);
-        let f1_hz = self.impact.f1_hz;
-        let samples = 2.0 / f1_hz * fastest / crate::model::free::PHASE_PER_SAMPLE;
-        let work = samples * modes as f64;
+        let (modes, f1_hz) = (self.retained_modes(), self.impact.f1_hz);
+        let work = self.free_vibration_work();
         if work.is_nan() || work > MAX_MODE_SAMPLES {
             return Err(Error::TooManySamples { work, modes, f1_hz, limit: MAX_MODE_SAMPLES });
         }
@@ -239,6 +247,11 @@ impl ModalModel {
             let h = self.set.grids[START].get().expect("start grid").h * 2f64.powi(START as i32 - level as i32);
             Grid::new(&self.set.lam, &self.set.omega, &self.set.g, self.set.residual, h)
         })
+    }
+
+    /// The racket's fundamental frequency, Hz.
+    pub fn f1_hz(&self) -> f64 {
+        self.impact.f1_hz
     }
 
     /// Number of retained flexible modes.

@@ -199,6 +199,16 @@ impl MapRequest {
         Ok(MapOutcome { table, heatmap, metadata, summary, grid })
     }
 
+    /// The work of the map, estimated before it runs ([`crate::study::work`]): its `total`
+    /// impacts shared evenly among `configs`, each costed at the configuration's impact with the
+    /// solver the map runs ([`super::compute::with_map_solver`]; the cost hardly moves over the face).
+    pub fn estimate(configs: &[(String, Params)], total: usize, threads: usize) -> crate::study::work::Estimate {
+        let config_of = |i: u64| configs.get(i as usize * configs.len() / total.max(1));
+        crate::study::work::Estimate::of(total as u64, threads, |i| {
+            config_of(i).map(|(_, p)| super::compute::with_map_solver(p))
+        })
+    }
+
     /// The configuration with the racket `racket`: as [`Sources::resolve`], with what a map
     /// sets itself ([`super::MAP_SETS`]) refused as a flag and the config file's impact position
     /// ignored; the grid sets it.

@@ -66,7 +66,7 @@ pub struct Sweep {
 }
 
 /// The options of the `sweep` command, which go before the `--KEY SPEC` pairs.
-pub const OPTIONS: [&str; 4] = ["out", "config", "racket", "quiet"];
+pub const OPTIONS: [&str; 5] = ["out", "config", "racket", "quiet", "long"];
 impl Sweep {
     /// The sweep the command line asks for: the varied parameters as `--KEY SPEC` pairs over
     /// the defaults (the paper's, or those of `racket`, a file or preset, fitted at the config
@@ -78,7 +78,7 @@ impl Sweep {
             return Err(Error::invalid(
                 "sweep",
                 option,
-                "options (--out, --config, --racket, --quiet) go before the --KEY SPEC pairs",
+                "options (--out, --config, --racket, --quiet, --long) go before the --KEY SPEC pairs",
             ));
         }
         if pairs.len() % 2 != 0 || pairs.is_empty() {
@@ -97,7 +97,7 @@ impl Sweep {
                 return Err(Error::invalid(
                     "sweep",
                     &pair[0],
-                    "options (--out, --config, --racket, --quiet) go before the --KEY SPEC pairs",
+                    "options (--out, --config, --racket, --quiet, --long) go before the --KEY SPEC pairs",
                 ));
             }
             if keys::find(key).is_none() {
@@ -234,6 +234,11 @@ impl Sweep {
     /// The [`recorded_keys`] that are not swept: their columns follow the swept ones.
     pub fn fixed_keys(&self, oblique: bool) -> Vec<&'static str> {
         recorded_keys(oblique).into_iter().filter(|k| !self.axes.iter().any(|a| a.key == *k)).collect()
+    }
+
+    /// The work of the sweep, estimated before it runs ([`crate::study::work`]).
+    pub fn estimate(&self, threads: usize) -> crate::study::work::Estimate {
+        crate::study::work::Estimate::of(self.len(), threads, |i| self.point(i).ok().map(|(p, _)| p))
     }
 
     /// The parameters of impact `i` (row-major, first axis slowest) and its axis values.

@@ -271,6 +271,17 @@ impl Study {
         Ok(p)
     }
 
+    /// The parameters of run `k` of the design, drawn as [`Study::run`] draws them.
+    pub fn params_of_run(&self, k: usize) -> Result<Params> {
+        let x: Vec<f64> = self.design.point(k).iter().zip(&self.inputs).map(|(&u, i)| i.dist.quantile(u)).collect();
+        self.params_at(&x)
+    }
+
+    /// The work of the study, estimated before it runs ([`crate::study::work`]).
+    pub fn estimate(&self, threads: usize) -> crate::study::work::Estimate {
+        crate::study::work::Estimate::of(self.design.runs() as u64, threads, |k| self.params_of_run(k as usize).ok())
+    }
+
     /// Run the design (all cores) and summarise every output; `progress` gets the runs done.
     pub fn run(&self, progress: impl FnMut(usize)) -> Result<Vec<Output>> {
         let fields = self.output_fields();
