@@ -30,7 +30,7 @@ pub(crate) fn created_dirs() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
     CREATED_DIRS.lock().unwrap_or_else(|e| e.into_inner())
 }
 
-/// Remove the directories this run created ([`created_dirs`]) that are empty, innermost first
+/// Remove the directories this run created (for its outputs) that are empty, innermost first
 /// (one that holds a file, published or not, is kept); for a run that failed. Returns how many
 /// were removed.
 pub fn remove_created_dirs() -> usize {
