@@ -325,7 +325,7 @@ impl SpeedComparison {
             if !(lo..=hi).contains(&v) {
                 out.push(Diagnostic::new(
                     Kind::Unusual,
-                    "v1",
+                    keys::V1.key,
                     format!(
                         "swing + incoming = {} {} (the impact speed) is outside the usual {}..{} {} (computed anyway)",
                         sig(req.swing + req.incoming, 4),
@@ -349,7 +349,7 @@ impl SpeedComparison {
         {
             out.push(Diagnostic::new(
                 Kind::Unusual,
-                "angle-deg",
+                keys::ANGLE_DEG.key,
                 format!(
                     "the swing path of {} deg meets the face at {} deg from its normal, beyond the usual incidences (computed anyway)",
                     req.path_deg,
