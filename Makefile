@@ -3,7 +3,7 @@
 CARGO ?= cargo
 BIN := target/release/racket-impact
 
-.PHONY: all build test figures report golden bench fmt lint fuzz clean
+.PHONY: all build test python-test python-stub figures report golden bench fmt lint fuzz clean
 
 all: build
 
@@ -24,6 +24,33 @@ endif
 test:
 	$(CARGO) test --locked --doc
 	$(SUITE)
+	@$(MAKE) --no-print-directory python-test
+
+# The Python package (python/): `pip install ./python` builds it with maturin in this target
+# directory (reusing the release build's compiled library), here into target/python, and pytest
+# runs its suite against the command line. Needs Python 3.9+ with maturin, pytest, numpy and
+# pandas (`.ci/run` installs them); without them the step says what to install and is skipped,
+# except under CI, where it fails.
+PYTHON ?= python3
+PYTHON_TOOLS := maturin pytest numpy pandas
+# (the build backend runs the `maturin` program: from the scripts folder of that Python)
+PYTHON_PATH = PATH="$$($(PYTHON) -c 'import sysconfig; print(sysconfig.get_path("scripts"))'):$$PATH"
+
+python-test: build
+	@if $(PYTHON) -c "import $(shell echo $(PYTHON_TOOLS) | tr ' ' ',')" 2>/dev/null; then \
+		$(PYTHON_PATH) $(PYTHON) -m pip install --quiet --no-build-isolation --no-deps --upgrade --target target/python ./python && \
+		PYTHONPATH=$(CURDIR)/target/python RACKET_IMPACT_BIN=$(BIN) $(PYTHON) -m pytest -q -p no:cacheprovider python/tests; \
+	elif [ -n "$$CI" ]; then \
+		echo "error: the Python tests need $(PYTHON) with $(PYTHON_TOOLS)" >&2; exit 1; \
+	else \
+		echo "Python tests skipped: $(PYTHON) -m pip install $(PYTHON_TOOLS) to run them"; \
+	fi
+
+# Regenerate the Python package's type stub from the parameters' declaration (the tests fail
+# while it is stale).
+python-stub: build
+	$(PYTHON_PATH) $(PYTHON) -m pip install --quiet --no-build-isolation --no-deps --upgrade --target target/python ./python
+	PYTHONPATH=$(CURDIR)/target/python $(PYTHON) -m racket_impact._stub > python/racket_impact/__init__.pyi
 
 # The string-face maps (CSV + PNG + JSON each; tests/map.rs checks the committed ones against
 # these lines).

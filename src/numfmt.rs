@@ -104,6 +104,21 @@ pub fn fmt_sig(x: f64, digits: usize) -> String {
     }
 }
 
+/// `v` to at least `digits` significant digits, and to as many more as it takes for the
+/// printed number to fall on the same side of each of `bounds` as `v` itself (at most 12):
+/// a value printed beside a tolerance shows the digit that decides it (4.80415 beside a bound of
+/// 4.8039 prints as `4.804`, not `4.8`, which reads as inside).
+pub fn decisive(v: f64, bounds: &[f64], digits: usize) -> String {
+    let side = |x: f64, b: f64| x.partial_cmp(&b);
+    (digits.max(1)..=12)
+        .map(|d| fmt_sig(v, d))
+        .find(|text| {
+            text.parse::<f64>()
+                .is_ok_and(|shown| bounds.iter().all(|&b| !b.is_finite() || side(shown, b) == side(v, b)))
+        })
+        .unwrap_or_else(|| fmt_sig(v, 12))
+}
+
 /// A number in its shortest exact form (`ryu`: `0.25`, `1.5e-7`, `3.0`, reading back as the same
 /// `f64`), zero of either sign as "0" as in the other tables; an undefined one (NaN: `e_t` at too
 /// little incoming slip) as an empty field. A sweep's columns.
@@ -230,5 +245,16 @@ mod tests {
             let expect: f64 = format!("{x:.5e}").parse().expect("parse");
             assert_eq!(back, expect, "{x} -> {s}");
         }
+    }
+
+    #[test]
+    fn a_value_beside_a_bound_shows_the_digit_that_decides() {
+        // 4.80415 is outside 4.78 +- 0.5 % (up to 4.8039): three digits would print 4.8 (inside)
+        assert_eq!(decisive(4.80415, &[4.7561, 4.8039], 3), "4.804");
+        assert_eq!(decisive(4.80385, &[4.7561, 4.8039], 3), "4.8", "inside, and so is 4.8");
+        assert_eq!(decisive(0.4427, &[0.435, 0.445], 4), "0.4427");
+        assert_eq!(decisive(0.44499999, &[0.435, 0.445], 4), "0.44499999");
+        // no bound: the digits asked for
+        assert_eq!(decisive(1.23456, &[], 3), "1.23");
     }
 }

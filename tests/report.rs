@@ -25,12 +25,49 @@ fn every_verdict_is_pinned_and_reproduced_claims_are_within_tolerance() {
         if r.verdict == Verdict::Reproduced {
             assert!(r.error.abs() <= r.tolerance, "{}", r.claim.id);
         }
+        assert_eq!(
+            r.converged_verdict, r.claim.expected_converged,
+            "{}: converged verdict flipped (paper {}, converged {:?}, band {:?})",
+            r.claim.id, r.claim.paper, r.converged, r.band
+        );
     }
     let committed = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/REPORT.md")).unwrap();
     assert!(
         committed == document(&rows).unwrap(),
         "REPORT.md is stale: run `make figures` (or `racket-impact report`)"
     );
+}
+
+/// What a claim's value is computed from decides whether it has a converged value: every claim
+/// whose computation runs a beam (an impact or an eigenproblem, directly or through the values
+/// it does arithmetic on) has one, computed on the converged beam only; a claim that runs none
+/// has none.
+#[test]
+fn no_claim_computed_from_a_beam_run_lacks_a_converged_value() {
+    use racket_impact::experiments::claims::{claims, computations};
+    use racket_impact::experiments::{Context, Scheme};
+    let rows = evaluate().unwrap();
+    let claims = claims().unwrap();
+    let mut beam = 0;
+    for (pc, r) in computations(&claims).unwrap().into_iter().zip(&rows) {
+        let ctx = Context::paper().recording();
+        (pc.ours)(&ctx).unwrap();
+        let runs = ctx.runs.taken();
+        assert_eq!(
+            r.converged.is_some(),
+            !runs.is_empty(),
+            "{}: converged {:?}, {} beam runs",
+            pc.id,
+            r.converged,
+            runs.len()
+        );
+        assert!(runs.iter().all(|run| run.under(Scheme::Paper)), "{}: a run off the paper's scheme", pc.id);
+        let fine = Context::paper().converged().recording();
+        (pc.ours)(&fine).unwrap();
+        assert!(fine.runs.taken().iter().all(|run| run.under(Scheme::Converged)), "{}: not converged", pc.id);
+        beam += usize::from(!runs.is_empty());
+    }
+    assert!(beam >= 30, "only {beam} claims run a beam");
 }
 
 #[test]

@@ -7,7 +7,7 @@ use racket_impact::numfmt::sig;
 use racket_impact::solve::{FdModel, SeriesOptions};
 use racket_impact::{Error, Result};
 
-use super::common::{diagnostics_json, out, print_diagnostics, Common, Format};
+use super::common::{out, print_diagnostics, Common, Format};
 use super::overrides::SimulateKeys;
 
 /// Sample spacing of the time series unless given, s.
@@ -89,34 +89,21 @@ pub fn run(a: SimulateArgs) -> Result<()> {
     } else {
         (racket_impact::simulate(&params)?, None)
     };
-    // (from the cached modes: the modal solver runs where the explicit one would refuse)
-    let f1_hz = racket_impact::model::basis::Basis::of(&params.racket, params.numerics.segments).omega[0]
-        / (2.0 * std::f64::consts::PI);
-    let diagnostics: Vec<_> =
-        noted.into_iter().chain(racket_impact::study::diagnose::impact(&params, &result)).collect();
+    let single = racket_impact::study::impact::Single::of(params, result, noted);
     let text = match a.common.format {
-        Format::Json => {
-            let mut v = racket_impact::render::impact::result_json(&params, &result);
-            v["params"] = serde_json::to_value(params).map_err(|e| Error::io("<json>", e))?;
-            if !params.oblique.is_normal() {
-                v["spin_convention"] = racket_impact::render::impact::SIMULATE_SPIN_CONVENTION.into();
-            }
-            v["f1_hz"] = f1_hz.into();
-            v["diagnostics"] = diagnostics_json(&diagnostics)?;
-            racket_impact::render::json::pretty(&v)?
-        }
-        Format::Csv => racket_impact::render::impact::result_csv(&params, &result),
-        Format::Text => racket_impact::render::impact::result_text(&params, &result),
+        Format::Json => racket_impact::render::json::pretty(&single.json()?)?,
+        Format::Csv => racket_impact::render::impact::result_csv(&single.params, &single.result),
+        Format::Text => racket_impact::render::impact::result_text(&single.params, &single.result),
     };
     // a series device is written before the result is printed, a series file renamed after
     let mut staged = racket_impact::render::io::Staged::new();
     if let (Some(path), Some(rows)) = (&a.series, &series) {
-        racket_impact::render::impact::stage_series(&mut staged, path, &params, rows)?;
+        racket_impact::render::impact::stage_series(&mut staged, path, &single.params, rows)?;
     }
     staged.publish(|| {
         out!("{text}");
         Ok(())
     })?;
-    print_diagnostics(&diagnostics);
+    print_diagnostics(&single.diagnostics);
     Ok(())
 }

@@ -108,10 +108,7 @@ pub fn run(a: SweepArgs) -> Result<()> {
     if let Some(f) = file {
         f.commit()?;
     }
-    use racket_impact::study::diagnose;
-    print_diagnostics(
-        noted.iter().chain(&diagnose::parameters(&representatives, &[])).chain(&diagnose::twist(theta_max)),
-    );
+    print_diagnostics(&racket_impact::study::sweep::diagnostics(&noted, &representatives, theta_max));
     Ok(())
 }
 

@@ -5,7 +5,6 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use racket_impact::diagnostic::{Diagnostic, Kind};
 use racket_impact::experiments::robustness;
 use racket_impact::params::keys;
 use racket_impact::study::sensitivity::Design;
@@ -74,38 +73,7 @@ pub fn run(a: UncertaintyArgs) -> Result<()> {
         return run_claims(a);
     }
     let samples = a.samples.unwrap_or(DEFAULT_SAMPLES);
-    Design::new(samples, a.vary.len().max(1), 0)?; // the count first, before anything else
-    let sources = a.common.sources();
-    let from_config = racket_impact::study::config_file(sources.config.as_deref())?;
-    let given = sources.flags.clone().or(from_config.clone());
-    let mut unused_in_config = Vec::new();
-    for text in &a.vary {
-        let key = text.split_once('=').map_or(text.as_str(), |(k, _)| k).trim();
-        if sources.flags.given().contains(&key) {
-            return Err(Error::invalid("vary", text, format!("{key} is both fixed (--{key}) and varied; give one")));
-        }
-        if from_config.given().contains(&key) {
-            unused_in_config.push(key);
-        }
-    }
-    let mut noted = Vec::new();
-    if let (Some(path), false) = (&sources.config, unused_in_config.is_empty()) {
-        // a shared config file may set what this run draws: said once, not refused
-        let sentence = format!(
-            "config file {} sets {}, which --vary draws: the file's value is not used",
-            path.display(),
-            unused_in_config.join(", ")
-        );
-        noted.push(Diagnostic::new(Kind::NotUsed, "config", sentence));
-    }
-    let mut base = sources.params()?;
-    if let Some(solver) = racket_impact::study::sweep::default_solver(&given, &[]) {
-        base.numerics.solver = solver;
-    }
-    // with the solver the runs use: --dt is refused with the modal one
-    noted.extend(a.common.check_used([&base])?);
-    let mut study = Study::new(base, &a.vary, samples, a.seed.unwrap_or(0))?;
-    study.noted = noted;
+    let study = Study::from_sources(&a.common.sources(), &a.vary, samples, a.seed.unwrap_or(0))?;
     if let Some(path) = &a.out {
         racket_impact::render::io::check_output_dir("out", path)?;
     }
@@ -144,7 +112,7 @@ fn run_claims(a: UncertaintyArgs) -> Result<()> {
         racket_impact::render::io::check_output_dir("out", path)?;
     }
     let progress = Progress::new(design.runs() as u64);
-    let rows = robustness::study(&racket_impact::experiments::Context::paper(), samples, seed, false, |done| {
+    let rows = robustness::study(&racket_impact::experiments::Context::paper(), samples, seed, false, None, |done| {
         progress.update(done as u64)
     })?;
     drop(progress);

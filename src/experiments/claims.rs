@@ -8,7 +8,8 @@
 use serde::Deserialize;
 
 pub use super::conclusion::Check;
-use super::Context;
+pub use super::setup::READING_RULE;
+use super::setup::{Context, Scheme};
 use crate::error::{Error, Result};
 
 /// The claims file, compiled in.
@@ -94,6 +95,9 @@ pub struct Claim {
     pub abs_tolerance: Option<f64>,
     /// The verdict we expect (pinned).
     pub expected: Verdict,
+    /// The verdict we expect on the converged value (pinned; empty for a claim that runs no
+    /// beam).
+    pub expected_converged: Option<Verdict>,
     /// An independent reproduction or a consistency check.
     pub kind: Kind,
     /// What the paper concludes from the number, in words.
@@ -164,27 +168,22 @@ pub fn claims() -> Result<Vec<Claim>> {
         .collect()
 }
 
-/// Our numbers for one claim.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// Our numbers for one claim ([`evaluate`]).
+#[derive(Debug, Clone, PartialEq)]
 pub struct Ours {
-    /// Computed as the paper did (N = 39 node scheme, read off as a reader would).
+    /// Computed as the paper did: N = 39, the force on the nearest node ([`READING_RULE`]).
     pub value: f64,
-    /// The value at the nearest node, where the claim is read off between nodes.
-    pub nearest_node: Option<f64>,
-    /// The converged value (`hat` load, N = 320), where numerics matter.
+    /// The same computation with converged numerics (`hat` load, N = 320), for a claim computed
+    /// (directly, or through arithmetic on other values) from a beam run; `None` for one that
+    /// runs no beam (a closed form, the paper's inputs, the tension calibration).
     pub converged: Option<f64>,
-}
-
-impl Ours {
-    /// All three numbers.
-    pub fn new(value: f64, nearest_node: Option<f64>, converged: Option<f64>) -> Self {
-        Ours { value, nearest_node, converged }
-    }
-
-    /// A value with neither a nearest-node nor a converged counterpart.
-    pub fn plain(value: f64) -> Result<Self> {
-        Ok(Ours::new(value, None, None))
-    }
+    /// For a claim whose impacts the paper's scheme moved to a node: the same computation with
+    /// each such impact read off the N = 39 curve between its two nodes ([`Scheme::Curve`], as
+    /// SPEC.md section 4 reads a curve), set beside the reading rule's value.
+    pub between: Option<f64>,
+    /// The positions the paper's scheme moved an impact to: (nominal, used) in m, each pair
+    /// once, in the order of the nominal position.
+    pub moved: Vec<(f64, f64)>,
 }
 
 /// One claim of the paper that an experiment checks.
@@ -192,8 +191,74 @@ impl Ours {
 pub struct PaperClaim {
     /// The claim's id in `golden/paper_claims.csv`.
     pub id: &'static str,
-    /// Our numbers for it, on the given racket (the report passes the paper's).
-    pub ours: fn(&Context) -> Result<Ours>,
+    /// Our number for it on a context (the report passes the paper's): every beam it runs goes
+    /// through [`Context::impact`] or [`Context::modes`], so that the context's numerics
+    /// ([`Scheme`]) decide them and its record sees them.
+    pub ours: fn(&Context) -> Result<f64>,
+}
+
+/// The computation of each claim of the claims file, in its order.
+pub fn computations(claims: &[Claim]) -> Result<Vec<PaperClaim>> {
+    let all: Vec<PaperClaim> = super::registry().iter().flat_map(|e| e.claims.iter().copied()).collect();
+    claims
+        .iter()
+        .map(|c| {
+            all.iter()
+                .find(|pc| pc.id == c.id)
+                .copied()
+                .ok_or_else(|| Error::invalid("claim id", &c.id, "no computation is defined for this claim"))
+        })
+        .collect()
+}
+
+/// Every claim's numbers on `base` ([`evaluate`]), in the order of `claims`, computed in
+/// parallel; the claims share the impacts they have in common.
+pub fn evaluate_all(claims: &[Claim], base: &Context) -> Result<Vec<Ours>> {
+    use rayon::prelude::*;
+    let base = base.clone().remembering();
+    computations(claims)?.into_par_iter().map(|pc| evaluate(pc, &base)).collect()
+}
+
+/// A claim's numbers on `base` (its [`Scheme`] the paper's): the value, and where the
+/// computation ran a beam, the same computation on `base` with converged numerics. What the
+/// value is computed from decides whether it has a converged counterpart: the record of the
+/// beams it ran ([`Context::recording`]), not a column of the claims file. A computation that
+/// runs a beam with the paper's numerics on a converged context (numerics of its own, not the
+/// context's) is an error: its "converged" value would not be.
+pub fn evaluate(claim: PaperClaim, base: &Context) -> Result<Ours> {
+    let ctx = base.clone().recording();
+    let value = (claim.ours)(&ctx)?;
+    let runs = ctx.runs.taken();
+    let mut moved: Vec<(f64, f64)> =
+        runs.iter().filter_map(|r| Some((r.x?, r.x_load?))).filter(|(x, at)| (x - at).abs() > 1e-9).collect();
+    moved.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    moved.dedup();
+    let converged = if runs.is_empty() {
+        None
+    } else {
+        let fine = base.clone().converged().recording();
+        let v = (claim.ours)(&fine)?;
+        if let Some(r) = fine.runs.taken().iter().find(|r| !r.under(Scheme::Converged)) {
+            return Err(Error::invalid(
+                "claim",
+                claim.id,
+                format!(
+                    "its computation ran a beam of {} segments ({:?} load) on a converged context: it must take its \
+                     numerics from the context",
+                    r.segments, r.load
+                ),
+            ));
+        }
+        Some(v)
+    };
+    let between = if moved.is_empty() {
+        None
+    } else {
+        let mut curve = base.clone();
+        curve.scheme = Scheme::Curve;
+        Some((claim.ours)(&curve)?)
+    };
+    Ok(Ours { value, converged, between, moved })
 }
 
 impl std::fmt::Debug for PaperClaim {
@@ -223,6 +288,7 @@ mod tests {
             approximate,
             abs_tolerance: None,
             expected: Verdict::Reproduced,
+            expected_converged: None,
             kind: Kind::Reproduction,
             conclusion: String::new(),
             conclusion_check: "> 0".into(),
@@ -236,5 +302,32 @@ mod tests {
         // the floors
         assert_eq!(claim("125", false).tolerance().unwrap().1, MIN_REL_TOLERANCE);
         assert_eq!(claim("19", true).tolerance().unwrap().1, APPROXIMATE_REL_TOLERANCE);
+    }
+
+    /// A claim computed from a beam gets its converged value by the same computation on a
+    /// converged context; a closed form gets none; and a computation that fixes its own
+    /// numerics (so its "converged" value would be the paper's again) is refused.
+    #[test]
+    fn what_a_value_is_computed_from_decides_its_converged_counterpart() {
+        let base = Context::paper();
+        let beam = PaperClaim { id: "beam", ours: |c| Ok(c.impact(&c.paper_params(0.158, 4.0e4))?.e_a) };
+        let ours = evaluate(beam, &base).unwrap();
+        let fine = ours.converged.expect("a beam run has a converged value");
+        assert!((fine - ours.value).abs() > 1e-4, "{fine} vs {}", ours.value);
+        assert_eq!(ours.moved.len(), 1);
+        assert!((ours.moved[0].1 - 0.71 * 9.0 / 39.0).abs() < 1e-12, "the centre is read at node 9");
+        let closed = PaperClaim { id: "closed", ours: |_| Ok(2.0 / 0.762_f64.powi(2) - 1.0) };
+        assert_eq!(evaluate(closed, &base).unwrap().converged, None);
+        let fixed = PaperClaim {
+            id: "fixed",
+            ours: |c| {
+                let mut p = c.paper_params(0.158, 4.0e4);
+                p.numerics.segments = 39;
+                p.numerics.load = crate::params::LoadRule::Node;
+                Ok(c.impact(&p)?.e_a)
+            },
+        };
+        let err = evaluate(fixed, &base).unwrap_err().to_string();
+        assert!(err.contains("fixed") && err.contains("39 segments"), "{err}");
     }
 }

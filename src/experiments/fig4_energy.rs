@@ -8,9 +8,7 @@
 //! and the string PE the paper lumps into "PE ball". Expect: KE ball falls to ~0 at maximum
 //! compression and ends at e_A^2 = 0.028; PE racket oscillates at twice 125 Hz after impact.
 
-use super::{
-    col, converged, impact, line, paper_label, paper_value, scaled, styled, Context, Experiment, Ours, PaperClaim,
-};
+use super::{col, line, paper_label, paper_value, scaled, styled, used_position, Context, Experiment, PaperClaim};
 use crate::error::Result;
 use crate::numfmt::fmt_sig;
 use crate::params::Params;
@@ -32,10 +30,9 @@ pub const EXPERIMENT: Experiment = Experiment {
     ],
 };
 
-/// A quantity of the Fig 4 impact, with its converged value.
-fn fig4_claim(ctx: &Context, q: fn(&ImpactResult) -> f64) -> Result<Ours> {
-    let p = params(ctx);
-    Ok(Ours::new(q(&impact(&p)?), None, ctx.converged(|| Ok(q(&impact(&converged(p))?)))?))
+/// A quantity of the Fig 4 impact.
+fn fig4_claim(ctx: &Context, q: fn(&ImpactResult) -> f64) -> Result<f64> {
+    Ok(q(&ctx.impact(&params(ctx))?))
 }
 
 /// The Fig 4 impact.
@@ -92,14 +89,15 @@ fn paper_end_point() -> Curve {
     styled(line(paper_label(&label), vec![tau], vec![ke], 0), LineStyle::Paper)
 }
 
-fn chart(_: &Context, t: &Table) -> Chart {
+fn chart(ctx: &Context, t: &Table) -> Chart {
     let ms = scaled(col(t, "t_s"), 1e3);
     let tau_ms = col(t, "tau_s").first().copied().unwrap_or(f64::NAN) * 1e3;
     let e_a = col(t, "e_a").first().copied().unwrap_or(f64::NAN);
     let c = |label: &str, name: &str, color: usize| line(label, ms.clone(), col(t, name), color);
     Chart {
         title: format!(
-            "Fig 4: energy partition, x 10 cm, r 5 cm, ks 4e4 N/m: tau = {} ms, e_A = {}",
+            "Fig 4: energy partition, x 10 cm{}, r 5 cm, ks 4e4 N/m: tau = {} ms, e_A = {}",
+            used_position(params(ctx).impact.x, &ctx.racket),
             fmt_sig(tau_ms, 3),
             fmt_sig(e_a, 3)
         ),

@@ -7,7 +7,7 @@
 //! both smaller on soft strings than on the stiff strings of Fig 5(b); at the centre
 //! e_A = 0.44 and tau ~6.0 ms; tau shorter near the tip.
 
-use super::position::{centre_three, chart, run, PaperCentre};
+use super::position::{centre, chart, run, PaperCentre};
 use super::{Experiment, PaperClaim};
 
 /// The registry entry.
@@ -16,12 +16,12 @@ pub const EXPERIMENT: Experiment = Experiment {
     title: "e_A, f(ball), f(vib) and tau along the racket, r 0, ks 2e4 N/m",
     paper_ref: "Fig 5(a) and p. 5: centre e_A 0.44, tau ~6.0 ms; dead spot near the tip",
     run: |ctx| run(ctx, EXPERIMENT.id, 2.0e4),
-    chart: |_, t| {
+    chart: |ctx, t| {
         let paper = PaperCentre { e_a: "fig5_centre_e_a_soft", tau: "fig5_centre_tau_soft", node_f_vib: None };
-        chart(t, "Fig 5(a): impact position, ks 2e4 N/m, r 0", paper)
+        chart(ctx, t, "Fig 5(a): impact position, ks 2e4 N/m, r 0", paper)
     },
     claims: &[
-        PaperClaim { id: "fig5_centre_e_a_soft", ours: |ctx| centre_three(ctx, 2.0e4, |r| r.e_a) },
-        PaperClaim { id: "fig5_centre_tau_soft", ours: |ctx| centre_three(ctx, 2.0e4, |r| r.tau_s * 1e3) },
+        PaperClaim { id: "fig5_centre_e_a_soft", ours: |ctx| centre(ctx, 2.0e4, |r| r.e_a) },
+        PaperClaim { id: "fig5_centre_tau_soft", ours: |ctx| centre(ctx, 2.0e4, |r| r.tau_s * 1e3) },
     ],
 };

@@ -7,7 +7,7 @@
 //! is reduced.
 
 use super::off_axis::{chart, paper_gain_point, run, theta_r4};
-use super::{Experiment, Ours, PaperClaim};
+use super::{used_position, Experiment, PaperClaim};
 use crate::solve::swing::gain_pct;
 
 /// The registry entry.
@@ -16,12 +16,13 @@ pub const EXPERIMENT: Experiment = Experiment {
     title: "Rotation angle and e_A against off-axis distance r at x 10 cm, v1 30 m/s",
     paper_ref: "Fig 7 and p. 6: theta +19 % when ks is halved",
     run: |ctx| run(ctx, EXPERIMENT.id, 0.10),
-    chart: |_, t| {
+    chart: |ctx, t| {
         let paper = vec![paper_gain_point(t, "fig7_theta_gain_ks_half")];
-        chart(t, "Fig 7: off-axis impact at x = 10 cm, v1 = 30 m/s", paper)
+        let title = format!("Fig 7: off-axis impact at x = 10 cm{}, v1 = 30 m/s", used_position(0.10, &ctx.racket));
+        chart(t, &title, paper)
     },
     claims: &[PaperClaim {
         id: "fig7_theta_gain_ks_half",
-        ours: |ctx| Ours::plain(gain_pct(theta_r4(ctx, 0.10, 4.0e4)?, theta_r4(ctx, 0.10, 2.0e4)?)),
+        ours: |ctx| Ok(gain_pct(theta_r4(ctx, 0.10, 4.0e4)?, theta_r4(ctx, 0.10, 2.0e4)?)),
     }],
 };

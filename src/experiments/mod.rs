@@ -75,7 +75,8 @@ pub use curves::{
     col, fit_range, line, on_right, paper_label, paper_list, paper_points, paper_text, paper_value, scaled, styled,
 };
 pub use setup::{
-    checked, converged, impact, log_space, node_positions, read_off_curve, sweep, Context, CENTRE_X, V1_OFF_AXIS,
+    checked, converged, impact, log_space, node_positions, paper_node, sweep, used_position, Context, Scheme, CENTRE_X,
+    READING_RULE, V1_OFF_AXIS,
 };
 
 /// A registered experiment.

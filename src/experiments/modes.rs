@@ -8,9 +8,9 @@
 //! `K phi = omega^2 M phi`. A uniform beam's mode shapes do not depend on EI (all frequencies
 //! scale with sqrt(EI)), so the shapes are drawn once with both frequencies in the legend.
 
-use super::{col, line, paper_label, paper_list, paper_value, styled, Context, Experiment, Ours, PaperClaim};
+use super::{col, line, paper_label, paper_list, paper_value, styled, Context, Experiment, PaperClaim};
 use crate::error::Result;
-use crate::model::beam::{Beam, Modes};
+use crate::model::beam::Beam;
 use crate::numfmt::fmt_sig;
 use crate::params::Racket;
 use crate::render::plot::{Chart, LineStyle, VLine};
@@ -24,50 +24,21 @@ pub const EXPERIMENT: Experiment = Experiment {
     run,
     chart,
     claims: &[
-        PaperClaim {
-            id: "modes_f1",
-            ours: |c| {
-                Ok(Ours::new(paper_beam(c).frequency_hz(1), None, c.converged(|| Ok(fine_beam(c).frequency_hz(1)))?))
-            },
-        },
-        PaperClaim {
-            id: "modes_period",
-            ours: |c| {
-                Ok(Ours::new(
-                    1e3 / paper_beam(c).frequency_hz(1),
-                    None,
-                    c.converged(|| Ok(1e3 / fine_beam(c).frequency_hz(1)))?,
-                ))
-            },
-        },
-        PaperClaim {
-            id: "modes_f2",
-            ours: |c| {
-                Ok(Ours::new(paper_beam(c).frequency_hz(2), None, c.converged(|| Ok(fine_beam(c).frequency_hz(2)))?))
-            },
-        },
+        PaperClaim { id: "modes_f1", ours: |c| Ok(c.modes(&c.racket).1.frequency_hz(1)) },
+        PaperClaim { id: "modes_period", ours: |c| Ok(1e3 / c.modes(&c.racket).1.frequency_hz(1)) },
+        PaperClaim { id: "modes_f2", ours: |c| Ok(c.modes(&c.racket).1.frequency_hz(2)) },
         PaperClaim { id: "modes_node", ours: node_cm },
         PaperClaim {
             id: "modes_f1_ei384",
-            ours: |c| Ours::plain(Beam::new(&Racket { ei: c.frame_ei(384.0), ..c.racket }, 39).modes().frequency_hz(1)),
+            ours: |c| Ok(c.modes(&Racket { ei: c.frame_ei(384.0), ..c.racket }).1.frequency_hz(1)),
         },
     ],
 };
 
-/// The context's racket (the paper's) as the paper's beam (N = 39), and its modes.
-fn paper_beam(ctx: &Context) -> Modes {
-    Beam::new(&ctx.racket, 39).modes()
-}
-
-/// The context's racket on a converged beam (N = 320) and its modes.
-fn fine_beam(ctx: &Context) -> Modes {
-    Beam::new(&ctx.racket, 320).modes()
-}
-
 /// The node of the fundamental mode, cm from the tip.
-fn node_cm(ctx: &Context) -> Result<Ours> {
-    let beam = Beam::new(&ctx.racket, 39);
-    Ours::plain(100.0 * beam.modes().node_positions(1, &beam.x)[0])
+fn node_cm(ctx: &Context) -> Result<f64> {
+    let (beam, modes) = ctx.modes(&ctx.racket);
+    Ok(100.0 * modes.node_positions(1, &beam.x)[0])
 }
 
 /// Bending stiffnesses of the paper's two frames, N m^2.

@@ -3,7 +3,7 @@
 //! to 10 cm; theta is the rotation about the long axis at the end of the impact (Eq 7). The
 //! full impact with the N = 39 node scheme.
 
-use super::{col, impact, line, on_right, paper_label, paper_value, scaled, styled, sweep, Context};
+use super::{col, line, on_right, paper_label, paper_value, scaled, styled, sweep, Context};
 use crate::error::Result;
 use crate::numfmt::fmt_sig;
 use crate::render::plot::{Chart, Curve, LineStyle};
@@ -106,5 +106,5 @@ pub fn theta_r4(ctx: &Context, x: f64, ks: f64) -> Result<f64> {
     let mut p = ctx.paper_params(x, ks);
     p.impact.r = 0.04;
     p.impact.v1 = ctx.v1_off_axis();
-    Ok(impact(&p)?.theta_end_deg)
+    Ok(ctx.impact(&p)?.theta_end_deg)
 }

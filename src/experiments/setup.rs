@@ -1,7 +1,11 @@
 //! What every experiment runs on: the racket and ball ([`Context`]), the paper's impact
 //! parameters on them, and the helpers that run impacts the way the paper's figures do.
 
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex};
+
 use crate::error::{Error, Result};
+use crate::model::beam::{Beam, Modes};
 use crate::params::{Ball, LoadRule, Params, Racket, SolverKind};
 use crate::render::plot::{Chart, LineStyle};
 use crate::solve::{simulate, ImpactResult};
@@ -31,9 +35,112 @@ pub struct Context {
     /// The solver of every impact: the explicit reference (`fd`) for the paper's numbers; the
     /// `robustness` experiment samples with the modal one.
     pub solver: SolverKind,
-    /// Whether the claims also compute their converged counterpart (`hat` load, N = 320):
-    /// the report's; off while the `robustness` experiment samples.
-    pub converged_too: bool,
+    /// The numerics of every beam the claims run: the paper's (N = 39, force on the nearest
+    /// node) or converged (`hat` load, N = 320). A claim's converged value is its own
+    /// computation run again on a converged context.
+    pub scheme: Scheme,
+    /// What the claims run through [`Context::impact`] and [`Context::modes`], where asked for
+    /// ([`Context::recording`]): how the report tells a claim computed from a beam run from a
+    /// closed form, and which position each impact was read at.
+    pub runs: Runs,
+    /// Impacts already run on this context (shared by its clones), where asked for
+    /// ([`Context::remembering`]): claims that run the same impact share it.
+    pub memo: Memo,
+}
+
+/// The numerics of a context's beams.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scheme {
+    /// The paper's: N = 39 segments, the whole force on the node nearest the impact point
+    /// ([`READING_RULE`]).
+    Paper,
+    /// Converged: the force shared between the two neighbouring nodes (`hat`), N = 320.
+    Converged,
+    /// The paper's beam read as a reader reads its printed curves (SPEC.md section 4): an impact
+    /// at a position between two nodes is the straight line between the impacts on those two
+    /// nodes ([`ImpactResult::lerp`]); the value the report sets beside the reading rule's.
+    Curve,
+}
+
+/// Segments of the converged beam.
+pub const CONVERGED_SEGMENTS: usize = 320;
+
+impl Scheme {
+    /// The load rule and segment count of the scheme.
+    pub fn numerics(self) -> (LoadRule, usize) {
+        match self {
+            Scheme::Paper | Scheme::Curve => (LoadRule::Node, 39),
+            Scheme::Converged => (LoadRule::Hat, CONVERGED_SEGMENTS),
+        }
+    }
+}
+
+/// How every claim and figure reads an impact position that falls between two nodes of the
+/// paper's N = 39 beam, stated once (the report quotes it).
+pub const READING_RULE: &str = "an impact at a position between two nodes of the paper's N = 39 beam is \
+computed as the paper computed its impacts, with the whole force on the nearest node (the ball 'impacts on only one \
+of the segments', p. 2; ties go to the node nearer the handle), for every claim and every figure alike; the centre of \
+the strings, 15.8 cm, is node 9 at 16.38 cm, Fig 4's and Fig 7's 10 cm node 5 at 9.10 cm, Figs 6 and 9's 6 cm node 3 at \
+5.46 cm. Each figure prints the position used where it differs from the nominal one, and the converged value (`hat` \
+load, N = 320) is the same impact at the nominal position";
+
+/// One beam a claim ran: an impact or an eigenproblem.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Run {
+    /// Segments of the beam.
+    pub segments: usize,
+    /// Its load rule (impacts; `None` for an eigenproblem).
+    pub load: Option<LoadRule>,
+    /// The nominal impact position, m from the tip (impacts).
+    pub x: Option<f64>,
+    /// Where the force was applied, m from the tip (impacts; the nearest node under the paper's
+    /// scheme).
+    pub x_load: Option<f64>,
+}
+
+impl Run {
+    /// Whether the run used the numerics of `scheme`.
+    pub fn under(&self, scheme: Scheme) -> bool {
+        let (load, segments) = scheme.numerics();
+        self.segments == segments && self.load.is_none_or(|l| l == load)
+    }
+}
+
+/// A shared record of the beams a context ran (empty unless asked for). Not part of what a
+/// context is: two contexts compare equal whatever they recorded.
+#[derive(Debug, Clone, Default)]
+pub struct Runs(Option<Arc<Mutex<Vec<Run>>>>);
+
+impl PartialEq for Runs {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl Runs {
+    fn push(&self, run: Run) {
+        if let Some(log) = &self.0 {
+            log.lock().unwrap_or_else(std::sync::PoisonError::into_inner).push(run);
+        }
+    }
+
+    /// What was recorded, in the order it ran (for a parallel sweep, in any order).
+    pub fn taken(&self) -> Vec<Run> {
+        self.0
+            .as_ref()
+            .map_or_else(Vec::new, |log| log.lock().unwrap_or_else(std::sync::PoisonError::into_inner).clone())
+    }
+}
+
+/// A shared store of impacts already run (none unless asked for), keyed by their exact
+/// parameters. Not part of what a context is.
+#[derive(Debug, Clone, Default)]
+pub struct Memo(Option<Arc<Mutex<HashMap<String, ImpactResult>>>>);
+
+impl PartialEq for Memo {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
 }
 
 impl Default for Context {
@@ -53,8 +160,94 @@ impl Context {
             ks_factor: 1.0,
             v1_factor: 1.0,
             solver: p.numerics.solver,
-            converged_too: true,
+            scheme: Scheme::Paper,
+            runs: Runs::default(),
+            memo: Memo::default(),
         }
+    }
+
+    /// The same context with converged numerics ([`Scheme::Converged`]).
+    pub fn converged(mut self) -> Self {
+        self.scheme = Scheme::Converged;
+        self
+    }
+
+    /// The same context recording the beams it runs from now on (a fresh record).
+    pub fn recording(mut self) -> Self {
+        self.runs = Runs(Some(Arc::default()));
+        self
+    }
+
+    /// The same context remembering the impacts it runs from now on (a fresh store, shared by
+    /// its clones).
+    pub fn remembering(mut self) -> Self {
+        self.memo = Memo(Some(Arc::default()));
+        self
+    }
+
+    /// One impact for a claim: [`impact`] under this context's record and store; under
+    /// [`Scheme::Curve`], at a position between two nodes, the impacts on both read between
+    /// them.
+    pub fn impact(&self, p: &Params) -> Result<ImpactResult> {
+        if self.scheme == Scheme::Curve {
+            let n = p.numerics.segments;
+            let s = p.racket.length / n as f64;
+            let j = ((p.impact.x / s).floor().max(0.0) as usize).min(n - 1);
+            let w = p.impact.x / s - j as f64;
+            if w > 1e-9 && w < 1.0 - 1e-9 {
+                let at = |i: usize| {
+                    let mut q = *p;
+                    q.impact.x = i as f64 * s;
+                    self.one_impact(&q)
+                };
+                return Ok(ImpactResult::lerp(&at(j)?, &at(j + 1)?, w));
+            }
+        }
+        self.one_impact(p)
+    }
+
+    /// One impact under this context's record and store.
+    fn one_impact(&self, p: &Params) -> Result<ImpactResult> {
+        let done = |r: &ImpactResult| {
+            self.runs.push(Run {
+                segments: p.numerics.segments,
+                load: Some(p.numerics.load),
+                x: Some(p.impact.x),
+                x_load: Some(r.x_load_m),
+            })
+        };
+        let Some(memo) = &self.memo.0 else {
+            let r = impact(p)?;
+            done(&r);
+            return Ok(r);
+        };
+        let key = format!("{p:?}");
+        let known = memo.lock().unwrap_or_else(std::sync::PoisonError::into_inner).get(&key).copied();
+        let r = match known {
+            Some(r) => r,
+            None => {
+                let r = impact(p)?;
+                memo.lock().unwrap_or_else(std::sync::PoisonError::into_inner).insert(key, r);
+                r
+            }
+        };
+        done(&r);
+        Ok(r)
+    }
+
+    /// [`Context::impact`] for each parameter set, in parallel, results in the order given.
+    pub fn sweep(&self, params: &[Params]) -> Result<Vec<ImpactResult>> {
+        use rayon::prelude::*;
+        params.par_iter().map(|p| self.impact(p)).collect()
+    }
+
+    /// The free-free modes of `racket` on this context's beam (N of its [`Scheme`]).
+    pub fn modes(&self, racket: &Racket) -> (Beam, Modes) {
+        let segments = self.scheme.numerics().1;
+        self.runs.push(Run { segments, load: None, x: None, x_load: None });
+        let beam = Beam::new(racket, segments);
+        let modes = beam.modes();
+        (beam, modes)
     }
 
     /// Another racket and ball. The paper's figures place impacts along the whole length, as
@@ -64,6 +257,16 @@ impl Context {
         racket.head_length = None;
         racket.half_width = racket.half_width.max(Racket::default().half_width);
         Context { racket, ball, ..Context::paper() }
+    }
+
+    /// The context of the racket `arg` (a file or preset, as `figures --racket` takes it),
+    /// fitted at the paper's segment count and named by its `name`, else its file stem.
+    pub fn for_racket(arg: &str) -> Result<Self> {
+        let spec = crate::racket::load(arg)?;
+        let fitted = spec.to_racket(Params::paper().numerics.segments)?;
+        let stem = std::path::Path::new(arg).file_stem().and_then(|s| s.to_str()).unwrap_or("custom");
+        Ok(Context::with_racket(fitted.racket, fitted.ball)
+            .named(spec.name.clone().unwrap_or_else(|| stem.to_string())))
     }
 
     /// The same context naming its racket (not the paper's).
@@ -83,12 +286,14 @@ impl Context {
         chart
     }
 
-    /// The paper's parameters (the Fig 4 impact, node load, N = 39) on this racket and ball.
+    /// The paper's parameters (the Fig 4 impact) on this racket and ball, with the numerics of
+    /// this context's [`Scheme`] (the paper's: node load, N = 39).
     pub fn base_params(&self) -> Params {
         let mut p = Params::paper();
         p.racket = self.racket;
         p.ball = self.ball;
         p.numerics.solver = self.solver;
+        (p.numerics.load, p.numerics.segments) = self.scheme.numerics();
         p
     }
 
@@ -96,15 +301,6 @@ impl Context {
     /// [`Context::ks_factor`].
     pub fn ks(&self, paper_ks: f64) -> f64 {
         paper_ks * self.ks_factor
-    }
-
-    /// A claim's converged counterpart `f()` where [`Context::converged_too`], else `None`.
-    pub fn converged(&self, f: impl FnOnce() -> Result<f64>) -> Result<Option<f64>> {
-        if self.converged_too {
-            f().map(Some)
-        } else {
-            Ok(None)
-        }
     }
 
     /// The incident speed of Figs 7-8, m/s: [`V1_OFF_AXIS`] times [`Context::v1_factor`].
@@ -120,8 +316,8 @@ impl Context {
         self.racket.ei * paper_ei / Racket::default().ei
     }
 
-    /// This racket, ball and the paper's numerics (node load, N = 39) with an impact on the
-    /// long axis, the strings at [`Context::ks`] of `ks`.
+    /// This racket, ball and the context's numerics (the paper's: node load, N = 39) with an
+    /// impact on the long axis, the strings at [`Context::ks`] of `ks`.
     pub fn paper_params(&self, x: f64, ks: f64) -> Params {
         let mut p = self.base_params();
         p.impact.x = x;
@@ -158,19 +354,23 @@ pub fn node_positions(p: &Params) -> Vec<f64> {
     (0..=n).map(|i| p.racket.length * i as f64 / n as f64).collect()
 }
 
-/// A quantity of the node-scheme curve read off at `x` the way a reader of the printed figure
-/// would: by linear interpolation between the two nodes around `x` (SPEC.md section 4).
-pub fn read_off_curve(p: &Params, x: f64, quantity: impl Fn(&ImpactResult) -> f64) -> Result<f64> {
-    let s = p.racket.length / p.numerics.segments as f64;
-    let j = ((x / s).floor() as usize).min(p.numerics.segments - 1);
-    let w = x / s - j as f64;
-    let at = |i: usize| -> Result<f64> {
-        let mut q = *p;
-        q.numerics.load = LoadRule::Node;
-        q.impact.x = i as f64 * s;
-        impact(&q).map(|r| quantity(&r))
-    };
-    Ok((1.0 - w) * at(j)? + w * at(j + 1)?)
+/// Where the paper's scheme puts the force of an impact at `x` (m from the tip) on `racket`:
+/// the nearest of the N = 39 nodes, ties towards the handle ([`READING_RULE`]); (node, m).
+pub fn paper_node(x: f64, racket: &Racket) -> (usize, f64) {
+    let (load, n) = Scheme::Paper.numerics();
+    let point = Beam::new(racket, n).load_point(x, load);
+    (point.nodes[0], point.x_load)
+}
+
+/// " (N = 39: node 9 at 16.38 cm)" where the paper's scheme loads another point than `x` (m)
+/// on `racket`, else "": what a figure's title adds to a nominal position.
+pub fn used_position(x: f64, racket: &Racket) -> String {
+    let (node, at) = paper_node(x, racket);
+    if (at - x).abs() < 1e-9 {
+        String::new()
+    } else {
+        format!(" (N = 39: node {node} at {:.2} cm)", 100.0 * at)
+    }
 }
 
 /// Run [`impact`] for each parameter set, in parallel, results in the order given.

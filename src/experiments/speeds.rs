@@ -10,13 +10,11 @@
 //!
 //! Model: tension maps to k_s proportionally, 60 lb = 4e4 N/m (so 30 lb = 2e4 N/m, the paper's
 //! factor two), and every tension is computed directly, not by scaling percentages. Centre
-//! values are read off the N = 39 node-scheme curve at x = 15.8 cm by linear interpolation
-//! between nodes 8 and 9, as a reader of Fig 5 would; theta is for r = 4 cm at 30 m/s (Fig 8,
-//! node 9). The `frame` rows compare EI 150 and 384 at x = 6 cm, k_s 4e4 (Figs 6, 9).
+//! values are the impact at x = 15.8 cm by the reading rule ([`super::READING_RULE`]: N = 39,
+//! node 9 at 16.38 cm); theta is for r = 4 cm at 30 m/s (Fig 8). The `frame` rows compare EI
+//! 150 and 384 at x = 6 cm (node 3 at 5.46 cm), k_s 4e4 (Figs 6, 9).
 
-use super::{
-    fig6_string_stiffness::X_TIP, impact, line, read_off_curve, Context, Experiment, Ours, PaperClaim, CENTRE_X,
-};
+use super::{fig6_string_stiffness::X_TIP, line, Context, Experiment, PaperClaim, CENTRE_X};
 use crate::error::Result;
 use crate::params::{ks_from_tension_lb, Params};
 use crate::render::plot::{Chart, LineStyle, VLine};
@@ -50,13 +48,10 @@ pub const EXPERIMENT: Experiment = Experiment {
             id: "discussion_angle_30_rad_s",
             ours: |c| compare(c, 4.0e4, lb(50.0), |a, b| (30.0 * (b.tau_s - a.tau_s)).to_degrees()),
         },
-        PaperClaim {
-            id: "intro_swing_angle",
-            ours: |c| Ours::plain((30.0 * centre_setup(c, 4.0e4)?.tau_s).to_degrees()),
-        },
+        PaperClaim { id: "intro_swing_angle", ours: |c| Ok((30.0 * centre_setup(c, 4.0e4)?.tau_s).to_degrees()) },
         PaperClaim { id: "serve_peak_force", ours: serve_peak_force },
-        PaperClaim { id: "strings_ks_40lb", ours: |_| Ours::plain(lb(40.0)) },
-        PaperClaim { id: "strings_ks_80lb", ours: |_| Ours::plain(lb(80.0)) },
+        PaperClaim { id: "strings_ks_40lb", ours: |_| Ok(lb(40.0)) },
+        PaperClaim { id: "strings_ks_80lb", ours: |_| Ok(lb(80.0)) },
     ],
 };
 
@@ -66,9 +61,9 @@ fn lb(tension_lb: f64) -> f64 {
 }
 
 /// A comparison of the centre setups of two string stiffnesses (N/m): `f(a, b)`.
-fn compare(ctx: &Context, ks_a: f64, ks_b: f64, f: fn(&Setup, &Setup) -> f64) -> Result<Ours> {
+fn compare(ctx: &Context, ks_a: f64, ks_b: f64, f: fn(&Setup, &Setup) -> f64) -> Result<f64> {
     let (a, b) = (centre_setup(ctx, ks_a)?, centre_setup(ctx, ks_b)?);
-    Ours::plain(f(&a, &b))
+    Ok(f(&a, &b))
 }
 
 /// Serve speed gain of `b` over `a`, %.
@@ -86,13 +81,13 @@ fn tau_change_ms(a: &Setup, b: &Setup) -> f64 {
     (b.tau_s - a.tau_s) * 1e3
 }
 
-/// The peak force of a serve sending the ball off at 60 m/s from the centre (node 9): the
+/// The peak force of a serve sending the ball off at 60 m/s from the centre: the
 /// relative speed is 60/(1+e_A) with that impact's own e_A (the model is linear in v1).
-fn serve_peak_force(ctx: &Context) -> Result<Ours> {
+fn serve_peak_force(ctx: &Context) -> Result<f64> {
     let mut p = ctx.paper_params(CENTRE_X, 4.0e4);
     p.impact.v1 = 1.0;
-    let unit = impact(&p)?;
-    Ours::plain(unit.peak_force_n * 60.0 / (1.0 + unit.e_a))
+    let unit = ctx.impact(&p)?;
+    Ok(unit.peak_force_n * 60.0 / (1.0 + unit.e_a))
 }
 
 /// Reference tension, lb.
@@ -111,18 +106,15 @@ pub struct Setup {
     pub theta_deg: f64,
 }
 
-/// e_A, tau (read off the node-scheme curve at the centre) and theta (r 4 cm, 30 m/s, Fig 8)
-/// for a string stiffness.
+/// e_A, tau (r 0) and theta (r 4 cm, 30 m/s, Fig 8) at the centre of the strings for a string
+/// stiffness.
 pub fn centre_setup(ctx: &Context, ks: f64) -> Result<Setup> {
     let p = ctx.paper_params(CENTRE_X, ks);
     let mut q = p;
     q.impact.r = 0.04;
     q.impact.v1 = ctx.v1_off_axis();
-    Ok(Setup {
-        e_a: read_off_curve(&p, CENTRE_X, |r| r.e_a)?,
-        tau_s: read_off_curve(&p, CENTRE_X, |r| r.tau_s)?,
-        theta_deg: impact(&q)?.theta_end_deg,
-    })
+    let r = ctx.impact(&p)?;
+    Ok(Setup { e_a: r.e_a, tau_s: r.tau_s, theta_deg: ctx.impact(&q)?.theta_end_deg })
 }
 
 /// e_A and tau at 6 cm (Figs 6, 9) for a frame stiffness, k_s 4e4, and theta there for
@@ -130,10 +122,10 @@ pub fn centre_setup(ctx: &Context, ks: f64) -> Result<Setup> {
 pub fn tip_setup(ctx: &Context, ei: f64) -> Result<Setup> {
     let mut p: Params = ctx.paper_params(X_TIP, 4.0e4);
     p.racket.ei = ei;
-    let r = impact(&p)?;
+    let r = ctx.impact(&p)?;
     p.impact.r = 0.04;
     p.impact.v1 = ctx.v1_off_axis();
-    Ok(Setup { e_a: r.e_a, tau_s: r.tau_s, theta_deg: impact(&p)?.theta_end_deg })
+    Ok(Setup { e_a: r.e_a, tau_s: r.tau_s, theta_deg: ctx.impact(&p)?.theta_end_deg })
 }
 
 fn run(ctx: &Context) -> Result<Table> {
@@ -188,7 +180,7 @@ fn push(t: &mut Table, group: &str, lb: f64, ks: f64, ei: f64, x: f64, a: &Setup
     ])
 }
 
-fn chart(_: &Context, t: &Table) -> Chart {
+fn chart(ctx: &Context, t: &Table) -> Chart {
     let tension = t.filter("group", "tension");
     let lb = super::col(&tension, "tension_lb");
     // "<what> +a, +b <unit> at 30, 50 lb" from the paper's values as printed
@@ -199,7 +191,10 @@ fn chart(_: &Context, t: &Table) -> Chart {
         super::paper_points(super::paper_label(&format!("{what} {values} {unit} at {at}")), x, ids, color)
     };
     Chart {
-        title: "Speed gains against string tension, relative to 60 lb, impact at the centre of the strings".into(),
+        title: format!(
+            "Speed gains against string tension, relative to 60 lb, at the centre of the strings{}",
+            super::used_position(CENTRE_X, &ctx.racket)
+        ),
         x_label: "string tension (lb), ks = 4e4 N/m x tension / 60 lb".into(),
         y_label: "change relative to 60 lb (%)".into(),
         y2_label: Some("impact duration change (ms)".into()),

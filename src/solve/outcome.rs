@@ -175,6 +175,8 @@ macro_rules! impact_result {
     (@get bool, $key:ident) => { Get::Flag(|r: &ImpactResult| r.$key) };
     (@zero f64) => { 0.0 };
     (@zero bool) => { false };
+    (@lerp f64, $a:expr, $b:expr, $w:expr) => { (1.0 - $w) * $a + $w * $b };
+    (@lerp bool, $a:expr, $b:expr, $w:expr) => { $a || $b };
     (@name $key:ident $name:literal) => { $name };
     (@name $key:ident) => { stringify!($key) };
     ($($(#[doc = $doc:literal])+ $key:ident $(as $name:literal)?: $ty:tt [$unit:literal] checked: $checked:literal, sweep: $sweep:literal, text: $text:expr;)+) => {
@@ -196,6 +198,13 @@ macro_rules! impact_result {
             /// Every field zero (or false): the base a solver fills in, so that the fields it
             /// does not set (the oblique ones, set afterwards) need not be listed again.
             pub(crate) const ZERO: ImpactResult = ImpactResult { $($key: impact_result!(@zero $ty),)+ };
+
+            /// `a` and `b` read on the straight line between them at `w` (0 gives `a`, 1 gives `b`):
+            /// every number interpolated, a flag set if either sets it. How a reader reads a curve
+            /// drawn through two computed impacts between them.
+            pub fn lerp(a: &ImpactResult, b: &ImpactResult, w: f64) -> ImpactResult {
+                ImpactResult { $($key: impact_result!(@lerp $ty, a.$key, b.$key, w),)+ }
+            }
         }
 
         /// Every field of [`ImpactResult`], in declaration (and JSON) order.

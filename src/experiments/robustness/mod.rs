@@ -13,9 +13,9 @@
 mod chart;
 mod write;
 
-use super::claims::{Check, Claim, ToleranceKind};
+use super::claims::{computations, evaluate_all, Check, Claim, Ours, ToleranceKind};
 use super::conclusion::Standing;
-use super::{Context, Experiment, PaperClaim};
+use super::{Context, Experiment, Scheme};
 use crate::error::{Error, Result};
 use crate::params::spec::ParamSpec;
 use crate::params::uncertainty::Dist;
@@ -177,20 +177,6 @@ pub fn context_at(base: &Context, x: &[f64]) -> Result<Context> {
     Ok(ctx)
 }
 
-/// The computation of each claim of the claims file, in its order.
-fn computations(claims: &[Claim]) -> Result<Vec<PaperClaim>> {
-    let all: Vec<PaperClaim> = super::registry().iter().flat_map(|e| e.claims.iter().copied()).collect();
-    claims
-        .iter()
-        .map(|c| {
-            all.iter()
-                .find(|pc| pc.id == c.id)
-                .copied()
-                .ok_or_else(|| Error::invalid("claim id", &c.id, "no computation is defined for this claim"))
-        })
-        .collect()
-}
-
 /// The band of values within which the claim counts as reproduced.
 pub fn band(claim: &Claim) -> Result<(f64, f64)> {
     let paper = claim.paper_value()?;
@@ -204,12 +190,14 @@ pub fn band(claim: &Claim) -> Result<(f64, f64)> {
 
 /// Every claim under the declared uncertainty, on `base` (the paper's context for the
 /// report): `samples` base samples from `seed`, and with `doubled` also twice as many (their
-/// first half are the same runs); `progress` gets the claim evaluations done.
+/// first half are the same runs); `progress` gets the claim evaluations done. `nominal`: the
+/// claims' numbers on `base` ([`evaluate_all`]) where the caller has them, else computed here.
 pub fn study(
     base: &Context,
     samples: u64,
     seed: u32,
     doubled: bool,
+    nominal: Option<&[Ours]>,
     progress: impl FnMut(usize),
 ) -> Result<Vec<ClaimRobustness>> {
     let specs = inputs();
@@ -220,13 +208,14 @@ pub fn study(
     let dists: Vec<Dist> = specs.iter().filter_map(|s| s.uncertainty.map(|u| u.dist)).collect();
     let mut sampled = base.clone();
     sampled.solver = SolverKind::Modal;
-    sampled.converged_too = false;
+    sampled.scheme = Scheme::Paper;
     let rows = sensitivity::run(
         &design,
         &dists,
         |x| {
-            let ctx = context_at(&sampled, x)?;
-            fns.iter().map(|f| (f.ours)(&ctx).map(|o| o.value)).collect()
+            // the claims at one draw share their impacts
+            let ctx = context_at(&sampled, x)?.remembering();
+            fns.iter().map(|f| (f.ours)(&ctx)).collect()
         },
         progress,
     )?;
@@ -241,7 +230,13 @@ pub fn study(
         let twice_shares = shares(&ids, &checks, &rows[..2 * design.samples()]);
         twice = sensitivity::summarise_all(&design, &rows).into_iter().zip(twice_shares).map(Some).collect();
     }
-    let ours: Vec<_> = fns.iter().map(|f| (f.ours)(base)).collect::<Result<_>>()?;
+    let ours: Vec<Ours> = match nominal {
+        Some(o) if o.len() == claims.len() => o.to_vec(),
+        Some(o) => {
+            return Err(Error::invalid("nominal", o.len(), format!("{} claims need as many values", claims.len())))
+        }
+        None => evaluate_all(&claims, base)?,
+    };
     let nominal: Vec<f64> = ours.iter().map(|o| o.value).collect();
     let nominal_of = |id: &str| ids.iter().position(|i| *i == id).map(|j| nominal[j]);
     claims
@@ -345,7 +340,7 @@ pub fn top_two(s: &Summary) -> Vec<(&'static str, f64)> {
 }
 
 fn run(ctx: &Context) -> Result<Table> {
-    table(&study(ctx, SAMPLES, SEED, true, |_| {})?)
+    table(&study(ctx, SAMPLES, SEED, true, None, |_| {})?)
 }
 
 #[cfg(test)]
