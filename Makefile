@@ -10,19 +10,22 @@ all: build
 build:
 	$(CARGO) build --release --locked
 
-# Doc examples first, then the whole suite. The runner is cargo-nextest where it is installed
-# (one process per test, and its summary is the last line; `.ci/run` installs it), else plain
-# `cargo test`, so that a machine with only the Rust toolchain needs no third command (the
-# suite passes under either; tests/makefile.rs checks that the fallback is chosen without
-# nextest on PATH).
+# Doc examples first, then the whole suite, both built with the release profile: `make figures`
+# has built the library and every dependency with it, so the tests compile only themselves
+# (Cargo.toml declares the features the test-only crates turn on, so nothing is rebuilt for
+# them; the benchmarks' criterion is a package of its own). The runner is cargo-nextest where it
+# is installed (one process per test, and its summary is the last line; `.ci/run` installs it),
+# else plain `cargo test`, so that a machine with only the Rust toolchain needs no third command
+# (the suite passes under either; tests/makefile.rs checks that the fallback is chosen without
+# nextest on PATH). Expected time on a 2-core machine after `make figures`: README "Set up".
 ifeq ($(shell $(CARGO) nextest --version >/dev/null 2>&1 && echo yes),yes)
-SUITE := $(CARGO) nextest run --locked --no-fail-fast
+SUITE := $(CARGO) nextest run --locked --release --no-fail-fast
 else
-SUITE := $(CARGO) test --locked --no-fail-fast --lib --bins --tests
+SUITE := $(CARGO) test --locked --release --no-fail-fast --lib --bins --tests
 endif
 
 test:
-	$(CARGO) test --locked --doc
+	$(CARGO) test --locked --release --doc
 	$(SUITE)
 	@$(MAKE) --no-print-directory python-test
 
@@ -70,7 +73,7 @@ golden: figures
 	INSTA_UPDATE=always CI= $(SUITE)
 
 bench:
-	$(CARGO) bench --locked
+	$(CARGO) bench --locked -p racket-impact-bench
 
 # Coverage-guided fuzzing of the config parser (needs `cargo install cargo-fuzz`; the stable
 # toolchain is allowed nightly flags with RUSTC_BOOTSTRAP). FUZZ_SECONDS bounds the run.
@@ -83,7 +86,7 @@ fmt:
 
 lint:
 	$(CARGO) fmt --all -- --check
-	$(CARGO) clippy --locked --all-targets -- -D warnings
+	$(CARGO) clippy --locked -p racket-impact -p racket-impact-bench --all-targets -- -D warnings
 	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --locked --no-deps
 
 clean:

@@ -75,6 +75,7 @@ pub fn run(a: MapArgs) -> Result<()> {
     // (the inputs read first: no output may be one of them)
     let (configs, total) = request.configurations()?;
     let outputs = Outputs::for_csv(&a.out.unwrap_or_else(|| request.default_csv()))?;
+    super::common::check_stdout()?;
     let noted = request.check_used(&configs)?;
 
     let bar = Progress::new(total as u64);

@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use racket_impact::diagnostic::{Diagnostic, Kind};
 use racket_impact::numfmt::sig;
 use racket_impact::solve::{FdModel, SeriesOptions};
 use racket_impact::{Error, Result};
@@ -34,7 +35,7 @@ pub struct SimulateArgs {
 /// exist.
 pub fn run(a: SimulateArgs) -> Result<()> {
     let params = a.common.sources().params()?;
-    let noted = a.common.check_used([&params])?;
+    let mut noted = a.common.check_used([&params])?;
     if let Some(path) = &a.series {
         racket_impact::render::io::check_output_dir("series", path)?;
     }
@@ -82,6 +83,19 @@ pub fn run(a: SimulateArgs) -> Result<()> {
                 field,
                 value,
                 format!("the time series would have about {} rows, at most {most}: a larger --series-dt or a shorter --series-end", sig(rows, 2)),
+            ));
+        }
+        if a.series_dt < model.dt {
+            // (the series has one row per step at most: a finer spacing is not honoured)
+            noted.push(Diagnostic::new(
+                Kind::NotUsed,
+                "series-dt",
+                format!(
+                    "--series-dt {} s is below the solver's step {} s: the series has one row per step (spacing {} s)",
+                    sig(a.series_dt, 4),
+                    sig(model.dt, 4),
+                    sig(model.dt, 4)
+                ),
             ));
         }
         let (r, s) = model.run_with_series(SeriesOptions { sample_dt: a.series_dt, t_end: a.series_end })?;

@@ -48,22 +48,23 @@ pub fn long_about() -> String {
     let oblique: Vec<String> = keys::uncertain().filter(|s| !claims.contains(&s.key)).filter_map(line).collect();
     format!(
         "An impact's result fields under uncertain inputs, or every paper claim under the declared uncertainty\n\n\
+         Example: racket-impact uncertainty --x 0.06 --vary ks=uniform:2e4:6e4 --vary mb=normal:0.057:0.0005\n\n\
          Every simulate option sets the fixed parameters; each --vary KEY=DIST draws one input. The impact \
-         runs N (d + 2) times over a Saltelli design (scrambled Sobol' sequence, deterministic for --seed) on \
-         all cores, with the modal solver unless --solver is given or a hand grip or stiffening strings need \
-         fd. For every numeric result field: mean, sd, q05, q50, q95, and each input's first-order (Saltelli \
+         runs N (d + 2) times for d inputs, over a Saltelli design (scrambled Sobol' sequence, deterministic for \
+         --seed), on all cores, with the modal solver unless --solver is given or a hand grip or stiffening \
+         strings need fd.\n\n\
+         Output, for every numeric result field: mean, sd, q05, q50, q95, and each input's first-order (Saltelli \
          2010) and total (Jansen) Sobol' index with 95 % bootstrap intervals. --format json gives \
          {{\"samples\", \"seed\", \"inputs\", \"outputs\": {{field: {{\"mean\", \"sd\", \"q05\", \"q50\", \"q95\", \
-         \"first_order\", \"total_order\", \"first_order_ci\", \"total_order_ci\"}}}}}}. An input whose draws reach \
-         outside the usual range simulate warns with (a uniform's or log-uniform's bounds; a normal's mean +- 3 sd) \
-         earns one warning line. Example: racket-impact \
-         uncertainty --x 0.06 --vary ks=uniform:2e4:6e4 --vary mb=normal:0.057:0.0005 --format json\n\n\
+         \"first_order\", \"total_order\", \"first_order_ci\", \"total_order_ci\"}}}}}}.\n\n\
+         Warnings: an input whose draws reach outside the usual range simulate warns with (a uniform's or \
+         log-uniform's bounds; a normal's mean +- 3 sd) earns one warning line.\n\n\
          With --claims: each paper claim (golden/paper_claims.csv) under the uncertainties declared with the \
-         parameters, drawn as factors on the paper's values: {}\n\n\
+         parameters, drawn as factors on the paper's values:\n  {}\n\n\
          --vary KEY without a distribution draws the one declared with the parameter: those above, and for an \
-         oblique or spinning ball: {}",
-        declared.join("; "),
-        oblique.join("; ")
+         oblique or spinning ball:\n  {}",
+        declared.join("\n  "),
+        oblique.join("\n  ")
     )
 }
 
@@ -74,8 +75,9 @@ pub fn run(a: UncertaintyArgs) -> Result<()> {
     }
     let samples = a.samples.unwrap_or(DEFAULT_SAMPLES);
     let study = Study::from_sources(&a.common.sources(), &a.vary, samples, a.seed.unwrap_or(0))?;
-    if let Some(path) = &a.out {
-        racket_impact::render::io::check_output_dir("out", path)?;
+    match &a.out {
+        Some(path) => racket_impact::render::io::check_output_dir("out", path)?,
+        None => super::common::check_stdout()?,
     }
     let progress = Progress::new(study.design.runs() as u64);
     let outputs = study.run(|done| progress.update(done as u64))?;
@@ -108,8 +110,9 @@ fn run_claims(a: UncertaintyArgs) -> Result<()> {
     let seed = a.seed.unwrap_or(robustness::SEED);
     let inputs = robustness::inputs();
     let design = Design::new(samples, inputs.len(), seed)?;
-    if let Some(path) = &a.out {
-        racket_impact::render::io::check_output_dir("out", path)?;
+    match &a.out {
+        Some(path) => racket_impact::render::io::check_output_dir("out", path)?,
+        None => super::common::check_stdout()?,
     }
     let progress = Progress::new(design.runs() as u64);
     let rows = robustness::study(&racket_impact::experiments::Context::paper(), samples, seed, false, None, |done| {
