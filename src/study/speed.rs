@@ -7,6 +7,9 @@
 
 use crate::diagnostic::{Diagnostic, Kind};
 use crate::error::{Error, Result};
+use crate::intake::compare::check_comparison;
+use crate::intake::diagnose;
+use crate::intake::Sources;
 use crate::numfmt::sig;
 use crate::params::keys;
 use crate::params::spec::ParamSpec;
@@ -14,8 +17,6 @@ use crate::params::{ks_from_tension_lb, Params};
 use crate::render::table::{Table, Value};
 use crate::solve::swing::{gain_pct, outgoing_speed, Swing};
 use crate::solve::ImpactResult;
-use crate::study::diagnose;
-use crate::study::{check_comparison, Sources};
 
 /// The sign conventions of the spins a stroke's JSON prints.
 pub const SPEED_SPIN_CONVENTION: &str =
@@ -102,7 +103,7 @@ pub struct SpeedComparison {
     /// One row per variant.
     pub rows: Vec<SpeedRow>,
     /// The notes about flags of properties no variant exercises and config-file keys the
-    /// command does not use ([`crate::study::Sources::check_used`]).
+    /// command does not use ([`crate::intake::Sources::check_used`]).
     pub noted: Vec<Diagnostic>,
 }
 
@@ -200,14 +201,14 @@ impl SpeedRequest {
     /// (A at the first against A at each of the others).
     fn variants(&self) -> Vec<(String, Option<String>, Option<f64>)> {
         let racket = &self.sources.racket;
-        let name = crate::study::racket_label(racket.as_deref());
+        let name = crate::intake::compare::racket_label(racket.as_deref());
         let at = |t: f64| (format!("{name} at {t} lb"), racket.clone(), Some(t));
         let mut variants = Vec::new();
         match self.compare_tension_lb[..] {
             [] => {
                 variants.push((name.clone(), racket.clone(), None));
                 for r in &self.compare_racket {
-                    variants.push((crate::study::racket_label(Some(r)), Some(r.clone()), None));
+                    variants.push((crate::intake::compare::racket_label(Some(r)), Some(r.clone()), None));
                 }
             }
             [t] => {
