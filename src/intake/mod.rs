@@ -68,7 +68,7 @@ impl Sources {
 
     /// Refuse a value for a method's option that none of the command's impacts `params` can
     /// honour, from a flag or from the config file alike ([`crate::params::used`]); return the
-    /// notes ([`Kind::NotUsed`]): one for each flag of a property none of them exercises (field:
+    /// notes ([`Kind::NotUsed`](crate::diagnostic::Kind::NotUsed)): one for each flag of a property none of them exercises (field:
     /// its key), and one naming the config file's keys that the command does not take, that are
     /// set on the command line, or that are properties none of its impacts exercises (a config
     /// file may be shared between commands, so a key a command does not take is not refused;
