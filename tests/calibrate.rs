@@ -134,7 +134,7 @@ fn bad_input_is_one_line_with_exit_2() {
     let s = Scratch::new("bad");
     let head = "id,quantity,value,unit,ball_speed_m_s,angle_deg,spin_in_rpm,support";
     let shot = "spin_out_rpm,1700,rpm,25,40,-2000,free";
-    let no_value = s.write("no_value.csv", &format!("id,quantity,unit\nL1,spin_out_rpm,rpm\n"));
+    let no_value = s.write("no_value.csv", "id,quantity,unit\nL1,spin_out_rpm,rpm\n");
     let nan = s.write("nan.csv", &format!("{head}\nL1,spin_out_rpm,NaN,rpm,25,40,-2000,free\nL2,{shot}\n"));
     let one = s.write("one.csv", &format!("{head}\nL1,{shot}\n"));
     let ratio = s.write("ratio.csv", &format!("{head}\nL1,{shot}\nL2,spin_ratio,1.2,ratio,25,40,-2000,free\n"));
@@ -153,7 +153,10 @@ fn bad_input_is_one_line_with_exit_2() {
         (vec![LAB, "--fit", "kt", "--range", "kt=1e5:1e4"], "LO < HI"),
         (vec![LAB, "--fit", "kt", "--range", "mu=0.1:0.5"], "not a fitted parameter"),
         (vec![LAB, "--fit", "kt", "--rows", "L09"], "no row with this id"),
-        (vec![LAB, "--fit", "ball-kdyn", "--tangential", "loss"], "no fitted row uses it: ball-kdyn is used only with tangential = "),
+        (
+            vec![LAB, "--fit", "ball-kdyn", "--tangential", "loss"],
+            "no fitted row uses it: ball-kdyn is used only with tangential = ",
+        ),
         // the shipped table: a string's own friction is measured, not fitted; a flag every row
         // sets from its own columns reaches none of them
         (vec!["--fit", "mu"], "measured, not fitted"),
