@@ -16,41 +16,17 @@
 #[allow(dead_code, unused_imports, unused_macros)]
 #[path = "../src/cli/mod.rs"]
 mod cli;
+mod common;
 
+use common::{bin, Scratch};
 use std::collections::{BTreeMap, HashMap};
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
 use clap::CommandFactory;
 use racket_impact::params::spec::{UsedWhen, Values};
 use racket_impact::params::{keys, used, Overrides, Params};
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_racket-impact"))
-}
-
-/// A fresh directory each run works in (its files are part of the output).
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(name: &str) -> Self {
-        // (runs go on in parallel: each its own folder)
-        static COUNT: AtomicUsize = AtomicUsize::new(0);
-        let n = COUNT.fetch_add(1, Ordering::Relaxed);
-        let dir = std::env::temp_dir().join(format!("racket-impact-options-{}-{n}-{name}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        Scratch(dir)
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
 
 /// What a run produced: its exit code and everything a user sees of it.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -133,11 +109,11 @@ fn noted(seen: &Seen, key: &str) -> bool {
 /// Run `racket-impact <command> <args>` in a fresh directory holding `cfg.toml` = `config`.
 fn run(command: &str, args: &[String], config: &str) -> Seen {
     let s = Scratch::new(&format!("{command}-{}", args.join("_").replace(['/', '.', ' '], "-")));
-    std::fs::write(s.0.join("cfg.toml"), config).unwrap();
-    let o = bin().current_dir(&s.0).arg(command).args(args).output().unwrap();
+    std::fs::write(s.path("cfg.toml"), config).unwrap();
+    let o = bin().current_dir(s.dir()).arg(command).args(args).output().unwrap();
     let stderr = String::from_utf8_lossy(&o.stderr).into_owned();
     let mut files = BTreeMap::new();
-    files_below(&s.0, &s.0, &mut files);
+    files_below(s.dir(), s.dir(), &mut files);
     Seen {
         code: o.status.code(),
         stdout: results_only(&without_times(&String::from_utf8_lossy(&o.stdout))),

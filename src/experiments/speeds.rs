@@ -151,24 +151,39 @@ fn run(ctx: &Context) -> Result<Table> {
     for lb in TENSIONS_LB {
         let ks = ks_from_tension_lb(lb);
         let s = centre_setup(ctx, ks)?;
-        push(&mut t, "tension", lb, ks, ctx.frame_ei(150.0), CENTRE_X, &reference, &s)?;
+        let racket = Racket { tension_lb: lb, ks, ei: ctx.frame_ei(150.0), x: CENTRE_X };
+        push(&mut t, "tension", racket, &reference, &s)?;
     }
     let flexible = tip_setup(ctx, ctx.frame_ei(150.0))?;
     for ei in [150.0, 384.0].map(|e| ctx.frame_ei(e)) {
         let s = tip_setup(ctx, ei)?;
-        push(&mut t, "frame", REF_TENSION_LB, 4.0e4, ei, X_TIP, &flexible, &s)?;
+        let racket = Racket { tension_lb: REF_TENSION_LB, ks: 4.0e4, ei, x: X_TIP };
+        push(&mut t, "frame", racket, &flexible, &s)?;
     }
     Ok(t)
 }
 
-#[allow(clippy::too_many_arguments)]
-fn push(t: &mut Table, group: &str, lb: f64, ks: f64, ei: f64, x: f64, a: &Setup, b: &Setup) -> Result<()> {
+/// The racket and impact point of a row of the table.
+#[derive(Debug, Clone, Copy)]
+struct Racket {
+    /// String tension, lb.
+    tension_lb: f64,
+    /// String stiffness, N/m.
+    ks: f64,
+    /// Frame stiffness, N m^2.
+    ei: f64,
+    /// Impact point, m from the tip.
+    x: f64,
+}
+
+/// A row of the table: the setup `b` of `racket` in `group`, its gains over the setup `a`.
+fn push(t: &mut Table, group: &str, racket: Racket, a: &Setup, b: &Setup) -> Result<()> {
     t.push(vec![
         group.into(),
-        lb.into(),
-        ks.into(),
-        ei.into(),
-        x.into(),
+        racket.tension_lb.into(),
+        racket.ks.into(),
+        racket.ei.into(),
+        racket.x.into(),
         b.e_a.into(),
         b.tau_s.into(),
         b.theta_deg.into(),
