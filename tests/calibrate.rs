@@ -2,12 +2,9 @@
 //! model itself at a known `kt` (which the fit must recover), the verdict on a parameter the
 //! rows do not identify, and every bad input refused in one line with exit 2.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
+mod common;
 
-fn bin(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_racket-impact")).args(args).output().unwrap()
-}
+use common::{run as bin, Scratch};
 
 /// Four calibration rows and one validation row of free-racket shots, each value the model's
 /// own spin at `kt` = 6e4 N/m under `loss` (`simulate --kt 6e4 --tangential loss --solver
@@ -16,31 +13,6 @@ const LAB: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/calibrate_lab
 
 /// The kt the lab CSV was made at.
 const LAB_KT: f64 = 6.0e4;
-
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(name: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("racket-impact-calibrate-{}-{name}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        Scratch(dir)
-    }
-    fn write(&self, name: &str, text: &str) -> String {
-        let p = self.0.join(name);
-        std::fs::write(&p, text).unwrap();
-        p.to_str().unwrap().to_string()
-    }
-    fn path(&self, name: &str) -> String {
-        self.0.join(name).to_str().unwrap().to_string()
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
 
 fn json(args: &[&str]) -> serde_json::Value {
     let out = bin(args);
@@ -86,7 +58,7 @@ fn the_model_s_own_values_give_back_the_kt_they_were_made_at() {
 #[test]
 fn the_twu_table_is_fitted_on_its_calibration_rows_and_judged_on_the_others() {
     let s = Scratch::new("twu");
-    let png = s.path("kt.png");
+    let png = s.arg("kt.png");
     // under loss, where the spin saturates for a stiff tangential contact
     let args = ["calibrate", "--fit", "kt", "--tangential", "loss", "--hold-out", "string", "--plot", &png];
     let v = json(&[&args[..], &["--format", "json"]].concat());
@@ -115,7 +87,7 @@ fn the_twu_table_is_fitted_on_its_calibration_rows_and_judged_on_the_others() {
 fn a_parameter_no_row_depends_on_is_said_to_be_not_identifiable() {
     let s = Scratch::new("slide");
     // at 80 deg from the normal without spin the ball slides throughout: kt barely plays a part
-    let csv = s.write(
+    let csv = s.file(
         "slide.csv",
         "id,quantity,value,unit,ball_speed_m_s,angle_deg,spin_in_rpm,support\n\
          S1,spin_out_rpm,500,rpm,20,80,0,free\nS2,spin_out_rpm,600,rpm,25,80,0,free\n",
@@ -134,11 +106,11 @@ fn bad_input_is_one_line_with_exit_2() {
     let s = Scratch::new("bad");
     let head = "id,quantity,value,unit,ball_speed_m_s,angle_deg,spin_in_rpm,support";
     let shot = "spin_out_rpm,1700,rpm,25,40,-2000,free";
-    let no_value = s.write("no_value.csv", "id,quantity,unit\nL1,spin_out_rpm,rpm\n");
-    let nan = s.write("nan.csv", &format!("{head}\nL1,spin_out_rpm,NaN,rpm,25,40,-2000,free\nL2,{shot}\n"));
-    let one = s.write("one.csv", &format!("{head}\nL1,{shot}\n"));
-    let ratio = s.write("ratio.csv", &format!("{head}\nL1,{shot}\nL2,spin_ratio,1.2,ratio,25,40,-2000,free\n"));
-    let png = s.path("never.png");
+    let no_value = s.file("no_value.csv", "id,quantity,unit\nL1,spin_out_rpm,rpm\n");
+    let nan = s.file("nan.csv", &format!("{head}\nL1,spin_out_rpm,NaN,rpm,25,40,-2000,free\nL2,{shot}\n"));
+    let one = s.file("one.csv", &format!("{head}\nL1,{shot}\n"));
+    let ratio = s.file("ratio.csv", &format!("{head}\nL1,{shot}\nL2,spin_ratio,1.2,ratio,25,40,-2000,free\n"));
+    let png = s.arg("never.png");
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (vec![&no_value, "--fit", "kt"], "no column 'value'"),
         (vec![&nan, "--fit", "kt"], "not a finite number"),
