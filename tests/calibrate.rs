@@ -107,9 +107,9 @@ fn bad_input_is_one_line_with_exit_2() {
     let head = "id,quantity,value,unit,ball_speed_m_s,angle_deg,spin_in_rpm,support";
     let shot = "spin_out_rpm,1700,rpm,25,40,-2000,free";
     let no_value = s.file("no_value.csv", "id,quantity,unit\nL1,spin_out_rpm,rpm\n");
-    let nan = s.file("nan.csv", &format!("{head}\nL1,spin_out_rpm,NaN,rpm,25,40,-2000,free\nL2,{shot}\n"));
-    let one = s.file("one.csv", &format!("{head}\nL1,{shot}\n"));
-    let ratio = s.file("ratio.csv", &format!("{head}\nL1,{shot}\nL2,spin_ratio,1.2,ratio,25,40,-2000,free\n"));
+    let nan = s.file("nan.csv", format!("{head}\nL1,spin_out_rpm,NaN,rpm,25,40,-2000,free\nL2,{shot}\n"));
+    let one = s.file("one.csv", format!("{head}\nL1,{shot}\n"));
+    let ratio = s.file("ratio.csv", format!("{head}\nL1,{shot}\nL2,spin_ratio,1.2,ratio,25,40,-2000,free\n"));
     let png = s.arg("never.png");
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (vec![&no_value, "--fit", "kt"], "no column 'value'"),
