@@ -210,9 +210,20 @@ fn base(command: &str) -> Vec<&'static str> {
         "map" => vec!["--nx", "7", "--nr", "5", "--format", "json"],
         "sweep" => vec!["--x", "0.1,0.2"],
         "uncertainty" => vec!["--vary", "v1=uniform:6:8", "--samples", "8", "--format", "json"],
+        // normal incidence: a frame of either kind runs it, and an oblique ball's parameters are
+        // noted as not exercised (the probes of the oblique fit run over LAB)
+        "calibrate" => vec![NORMAL, "--fit", "ks", "--hold-out", "none", "--format", "json"],
         _ => vec!["--format", "json"],
     }
 }
+
+/// `calibrate`'s measurements in its probes: free-racket oblique shots that leave every
+/// parameter to the flags (no tension, string or impact point of their own).
+const LAB: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/calibrate_lab.csv");
+/// The same shots with the racket in a hand (the hand's parameters).
+const HAND: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/calibrate_hand.csv");
+/// Normal-incidence rows (e_a): the base of calibrate's parameter probes.
+const NORMAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/calibrate_normal.csv");
 
 /// The probes of the options that are not impact parameters: (command, option id, the
 /// arguments with the option, the same without it). The config file of every run is
@@ -272,6 +283,99 @@ const PROBES: &[(&str, &str, &[&str], &[&str])] = &[
         "v1",
         &["--vary", "ks=uniform:3e4:5e4", "--samples", "8", "--v1", "10"],
         &["--vary", "ks=uniform:3e4:5e4", "--samples", "8"],
+    ),
+    (
+        "calibrate",
+        "quiet",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--quiet", "--mb", "0.3"],
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--mb", "0.3"],
+    ),
+    (
+        "calibrate",
+        "racket",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--racket", "tweener"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "config",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--config", "cfg.toml"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "format",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--format", "json"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    ("calibrate", "measurements", &[LAB, "--fit", "kt", "--hold-out", "none"], &["--fit", "kt", "--hold-out", "none"]),
+    (
+        "calibrate",
+        "fit",
+        &[LAB, "--fit", "mu-scale", "--hold-out", "none"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "range",
+        &[LAB, "--fit", "kt", "--range", "kt=1e4:1e5", "--hold-out", "none"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "rows",
+        &[LAB, "--fit", "kt", "--rows", "L01-L03", "--hold-out", "none"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "weights",
+        &[LAB, "--fit", "kt", "--weights", "uncertainty", "--hold-out", "none"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    ("calibrate", "hold_out", &[LAB, "--fit", "kt", "--hold-out", "row"], &[LAB, "--fit", "kt", "--hold-out", "none"]),
+    (
+        "calibrate",
+        "plot",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--plot", "c.png"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "out",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--out", "c.txt"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    // the fitted parameter's own flag is refused: probed while another is fitted
+    (
+        "calibrate",
+        "kt",
+        &[LAB, "--fit", "mu-scale", "--hold-out", "none", "--kt", "3e4"],
+        &[LAB, "--fit", "mu-scale", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "hand-stiffness",
+        &[HAND, "--fit", "kt", "--hold-out", "none", "--hand-stiffness", "8000"],
+        &[HAND, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "hand-damping",
+        &[HAND, "--fit", "kt", "--hold-out", "none", "--hand-damping", "30"],
+        &[HAND, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "grip-length",
+        &[HAND, "--fit", "kt", "--hold-out", "none", "--grip-length", "0.2"],
+        &[HAND, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "ks",
+        &[NORMAL, "--fit", "k1", "--hold-out", "none", "--ks", "3e4"],
+        &[NORMAL, "--fit", "k1", "--hold-out", "none"],
     ),
     ("figures", "only", &["--only", "modes"], &[]),
     ("figures", "out", &["--only", "modes", "--out", "elsewhere"], &["--only", "modes"]),
@@ -366,6 +470,8 @@ fn context(command: &str, key: &str) -> Vec<String> {
     match spec.used_when {
         // (modes runs no impact: its parameters describe the free racket)
         _ if command == cli::overrides::ModesKeys::COMMAND => vec![],
+        // calibrate's base rows set the shot (its point, incidence and grip are theirs)
+        UsedWhen::Oblique | UsedWhen::OffAxis | UsedWhen::Twisted if command == "calibrate" => vec![],
         UsedWhen::Always => vec![],
         UsedWhen::Oblique if command == "speed" => strings(&["--swing-path-deg", "20"]),
         UsedWhen::Oblique => strings(&["--angle-deg", "30"]),
@@ -418,7 +524,7 @@ fn every_option_changes_the_output_or_is_refused(runs: &Runs) -> (usize, Vec<Str
                 (None, Some(spec)) => {
                     // sweep and uncertainty run modal unless told: their other solver is fd
                     let value = match (spec.key, command.as_str()) {
-                        ("solver", "sweep" | "uncertainty") => "fd".to_string(),
+                        ("solver", "sweep" | "uncertainty" | "calibrate") => "fd".to_string(),
                         _ => sample_value(spec.key),
                     };
                     let flag = [format!("--{}", spec.key), value];

@@ -6,10 +6,12 @@
 //! the parameter intake ([`crate::intake`]: a racket, a config file and the flags, and what is
 //! told of a value no impact uses).
 
+pub mod calibrate;
 pub mod impact;
 pub mod map;
 pub mod measured;
 pub mod sensitivity;
 pub mod speed;
+pub mod stats;
 pub mod sweep;
 pub mod uncertainty;
