@@ -25,6 +25,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
 use clap::CommandFactory;
+use cli::overrides::KeySet;
 use racket_impact::params::spec::{UsedWhen, Values};
 use racket_impact::params::{keys, used, Overrides, Params};
 
@@ -209,9 +210,20 @@ fn base(command: &str) -> Vec<&'static str> {
         "map" => vec!["--nx", "7", "--nr", "5", "--format", "json"],
         "sweep" => vec!["--x", "0.1,0.2"],
         "uncertainty" => vec!["--vary", "v1=uniform:6:8", "--samples", "8", "--format", "json"],
+        // normal incidence: a frame of either kind runs it, and an oblique ball's parameters are
+        // noted as not exercised (the probes of the oblique fit run over LAB)
+        "calibrate" => vec![NORMAL, "--fit", "ks", "--hold-out", "none", "--format", "json"],
         _ => vec!["--format", "json"],
     }
 }
+
+/// `calibrate`'s measurements in its probes: free-racket oblique shots that leave every
+/// parameter to the flags (no tension, string or impact point of their own).
+const LAB: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/calibrate_lab.csv");
+/// The same shots with the racket in a hand (the hand's parameters).
+const HAND: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/calibrate_hand.csv");
+/// Normal-incidence rows (e_a): the base of calibrate's parameter probes.
+const NORMAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/calibrate_normal.csv");
 
 /// The probes of the options that are not impact parameters: (command, option id, the
 /// arguments with the option, the same without it). The config file of every run is
@@ -273,6 +285,99 @@ const PROBES: &[(&str, &str, &[&str], &[&str])] = &[
         "v1",
         &["--vary", "ks=uniform:3e4:5e4", "--samples", "8", "--v1", "10"],
         &["--vary", "ks=uniform:3e4:5e4", "--samples", "8"],
+    ),
+    (
+        "calibrate",
+        "quiet",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--quiet", "--mb", "0.3"],
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--mb", "0.3"],
+    ),
+    (
+        "calibrate",
+        "racket",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--racket", "tweener"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "config",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--config", "cfg.toml"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "format",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--format", "json"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    ("calibrate", "measurements", &[LAB, "--fit", "kt", "--hold-out", "none"], &["--fit", "kt", "--hold-out", "none"]),
+    (
+        "calibrate",
+        "fit",
+        &[LAB, "--fit", "mu-scale", "--hold-out", "none"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "range",
+        &[LAB, "--fit", "kt", "--range", "kt=1e4:1e5", "--hold-out", "none"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "rows",
+        &[LAB, "--fit", "kt", "--rows", "L01-L03", "--hold-out", "none"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "weights",
+        &[LAB, "--fit", "kt", "--weights", "uncertainty", "--hold-out", "none"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    ("calibrate", "hold_out", &[LAB, "--fit", "kt", "--hold-out", "row"], &[LAB, "--fit", "kt", "--hold-out", "none"]),
+    (
+        "calibrate",
+        "plot",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--plot", "c.png"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "out",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--out", "c.txt"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    // the fitted parameter's own flag is refused: probed while another is fitted
+    (
+        "calibrate",
+        "kt",
+        &[LAB, "--fit", "mu-scale", "--hold-out", "none", "--kt", "3e4"],
+        &[LAB, "--fit", "mu-scale", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "hand-stiffness",
+        &[HAND, "--fit", "kt", "--hold-out", "none", "--hand-stiffness", "8000"],
+        &[HAND, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "hand-damping",
+        &[HAND, "--fit", "kt", "--hold-out", "none", "--hand-damping", "30"],
+        &[HAND, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "grip-length",
+        &[HAND, "--fit", "kt", "--hold-out", "none", "--grip-length", "0.2"],
+        &[HAND, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "ks",
+        &[NORMAL, "--fit", "k1", "--hold-out", "none", "--ks", "3e4"],
+        &[NORMAL, "--fit", "k1", "--hold-out", "none"],
     ),
     ("figures", "only", &["--only", "modes"], &[]),
     ("figures", "out", &["--only", "modes", "--out", "elsewhere"], &["--only", "modes"]),
@@ -356,25 +461,36 @@ fn sample_value(key: &str) -> String {
     }
 }
 
-/// The flags a parameter needs to be used by `command` (a variant selected, an oblique ball).
-fn context(command: &str, key: &str) -> Vec<&'static str> {
-    match key {
-        "mu-ss" if command == "speed" => vec!["--swing-path-deg", "20", "--tangential", "bed"],
-        "mu-ss" => vec!["--angle-deg", "30", "--tangential", "bed"],
-        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string"
-            if command == "speed" =>
-        {
-            vec!["--swing-path-deg", "20"]
+/// The flags a parameter needs to be used by `command`, read from its row's `used_when` (a
+/// variant selected, an oblique ball, an impact off the long axis), so that a new parameter
+/// needs no entry here.
+fn context(command: &str, key: &str) -> Vec<String> {
+    let spec = keys::find(key).unwrap();
+    let takes = |flag: &str| {
+        option_table()
+            .iter()
+            .any(|(c, opts)| c == command && opts.iter().any(|(_, long)| long.as_deref() == Some(flag)))
+    };
+    match spec.used_when {
+        // (modes runs no impact: its parameters describe the free racket)
+        _ if command == cli::overrides::ModesKeys::COMMAND => vec![],
+        // calibrate's base rows set the shot (its point, incidence and grip are theirs)
+        UsedWhen::Oblique | UsedWhen::OffAxis | UsedWhen::Twisted if command == "calibrate" => vec![],
+        UsedWhen::Always => vec![],
+        UsedWhen::Oblique if command == "speed" => strings(&["--swing-path-deg", "20"]),
+        UsedWhen::Oblique => strings(&["--angle-deg", "30"]),
+        // a map's grid is off the long axis; elsewhere the twist needs r != 0 and the face's
+        // width an impact beyond the default one (0.125 m)
+        UsedWhen::OffAxis | UsedWhen::Twisted if command == "map" => vec![],
+        UsedWhen::OffAxis => strings(&["--r", "0.13"]),
+        UsedWhen::Twisted => strings(&["--r", "0.03"]),
+        UsedWhen::In(selector, names) => {
+            let mut ctx = context(command, selector.key);
+            if takes(selector.key) {
+                ctx.extend([format!("--{}", selector.key), names[0].to_string()]);
+            }
+            ctx
         }
-        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string" => {
-            vec!["--angle-deg", "30"]
-        }
-        "hand-stiffness" | "hand-damping" | "grip-length" => vec!["--grip", "hand"],
-        "string-stiffening" | "stiffening-deflection" => vec!["--strings", "stiffening"],
-        // the twist and the face's width matter off the long axis (a map's grid is)
-        "ix" if command != "map" => vec!["--r", "0.03"],
-        "half-width" if command != "map" => vec!["--r", "0.13"],
-        _ => vec![],
     }
 }
 
@@ -412,12 +528,12 @@ fn every_option_changes_the_output_or_is_refused(runs: &Runs) -> (usize, Vec<Str
                 (None, Some(spec)) => {
                     // sweep and uncertainty run modal unless told: their other solver is fd
                     let value = match (spec.key, command.as_str()) {
-                        ("solver", "sweep" | "uncertainty") => "fd".to_string(),
+                        ("solver", "sweep" | "uncertainty" | "calibrate") => "fd".to_string(),
                         _ => sample_value(spec.key),
                     };
                     let flag = [format!("--{}", spec.key), value];
                     let b = strings(&base(&command));
-                    let ctx = strings(&context(&command, spec.key));
+                    let ctx = context(&command, spec.key);
                     let without: Vec<String> = ctx.iter().chain(&b).cloned().collect();
                     let with: Vec<String> = flag.iter().chain(&without).cloned().collect();
                     let bare = (!ctx.is_empty()).then(|| (flag.iter().chain(&b).cloned().collect::<Vec<_>>(), b));
@@ -577,8 +693,20 @@ fn every_parameter_under_every_selection(runs: &Runs) -> (usize, Vec<String>) {
             if selection[0] == format!("--{}", spec.key) {
                 continue;
             }
-            let ctx: Vec<String> = strings(&context("simulate", spec.key))
-                .into_iter()
+            // (the selection replaces a model the context selects, dt's --frame beam under --frame
+            // rigid; a selection of the impact the context also sets is not run, --r twice)
+            let context = context("simulate", spec.key);
+            let selected_too = context.iter().any(|a| *a == selection[0]);
+            let is_choice = keys::find(selection[0].trim_start_matches("--"))
+                .is_some_and(|s| matches!(s.values, racket_impact::params::spec::Values::Choice(_)));
+            if selected_too && !is_choice {
+                continue;
+            }
+            let ctx: Vec<String> = context
+                .chunks(2)
+                .filter(|pair| pair[0] != selection[0])
+                .flatten()
+                .cloned()
                 .chain(strings(selection))
                 .chain(strings(&base("simulate")))
                 .collect();
@@ -629,7 +757,10 @@ fn every_parameter_flag_is_under_its_declared_heading_and_says_when_it_is_used()
             let help = arg.get_help().map(ToString::to_string).unwrap_or_default();
             assert!(help.starts_with(spec.help()), "{at}: {help}");
             let said = help.rsplit_once(" [used only ").map(|(_, w)| w.trim_end_matches(']'));
+            // (modes runs no impact: its parameters are the free racket's, always used)
+            let impacts = command.get_name() != cli::overrides::ModesKeys::COMMAND;
             match spec.used_when {
+                _ if !impacts => assert_eq!(said, None, "{at}: {help}"),
                 UsedWhen::Always => assert_eq!(said, None, "{at}: {help}"),
                 when => assert_eq!(said, Some(used::words(&when).as_str()), "{at}: {help}"),
             }

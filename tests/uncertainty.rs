@@ -118,8 +118,12 @@ fn claims_that_no_sampled_input_moves_are_independent_not_holding_or_failing() {
     assert!(v["outputs"]["strings_ks_40lb"]["conclusion_share"].is_null());
     assert!(v["outputs"]["serve_peak_force"]["conclusion_share"].is_number());
     assert_eq!(v["verdicts"]["independent"], 3);
-    let total: u64 =
-        ["holds", "part", "not at all", "independent"].iter().map(|k| v["verdicts"][k].as_u64().unwrap()).sum();
+    // (each verdict is checked again at twice the samples: one that changes there is counted
+    // as borderline, apart from the others)
+    let total: u64 = ["holds", "part", "not at all", "independent", "borderline"]
+        .iter()
+        .map(|k| v["verdicts"][k].as_u64().unwrap())
+        .sum();
     assert_eq!(total, 44);
 }
 
