@@ -3,27 +3,57 @@
 CARGO ?= cargo
 BIN := target/release/racket-impact
 
-.PHONY: all build test figures report golden bench fmt lint fuzz clean
+.PHONY: all build test python-test python-stub figures report golden bench fmt lint fuzz clean
 
 all: build
 
 build:
 	$(CARGO) build --release --locked
 
-# Doc examples first, then the whole suite. The runner is cargo-nextest where it is installed
-# (one process per test, and its summary is the last line; `.ci/run` installs it), else plain
-# `cargo test`, so that a machine with only the Rust toolchain needs no third command (the
-# suite passes under either; tests/makefile.rs checks that the fallback is chosen without
-# nextest on PATH).
+# Doc examples first, then the whole suite, both built with the release profile: `make figures`
+# has built the library and every dependency with it, so the tests compile only themselves
+# (Cargo.toml declares the features the test-only crates turn on, so nothing is rebuilt for
+# them; the benchmarks' criterion is a package of its own). The runner is cargo-nextest where it
+# is installed (one process per test, and its summary is the last line; `.ci/run` installs it),
+# else plain `cargo test`, so that a machine with only the Rust toolchain needs no third command
+# (the suite passes under either; tests/makefile.rs checks that the fallback is chosen without
+# nextest on PATH). Expected time on a 2-core machine after `make figures`: README "Set up".
 ifeq ($(shell $(CARGO) nextest --version >/dev/null 2>&1 && echo yes),yes)
-SUITE := $(CARGO) nextest run --locked --no-fail-fast
+SUITE := $(CARGO) nextest run --locked --release --no-fail-fast
 else
-SUITE := $(CARGO) test --locked --no-fail-fast --lib --bins --tests
+SUITE := $(CARGO) test --locked --release --no-fail-fast --lib --bins --tests
 endif
 
 test:
-	$(CARGO) test --locked --doc
+	$(CARGO) test --locked --release --doc
 	$(SUITE)
+	@$(MAKE) --no-print-directory python-test
+
+# The Python package (python/): `pip install ./python` builds it with maturin in this target
+# directory (reusing the release build's compiled library), here into target/python, and pytest
+# runs its suite against the command line. Needs Python 3.9+ with maturin, pytest, numpy and
+# pandas (`.ci/run` installs them); without them the step says what to install and is skipped,
+# except under CI, where it fails.
+PYTHON ?= python3
+PYTHON_TOOLS := maturin pytest numpy pandas
+# (the build backend runs the `maturin` program: from the scripts folder of that Python)
+PYTHON_PATH = PATH="$$($(PYTHON) -c 'import sysconfig; print(sysconfig.get_path("scripts"))'):$$PATH"
+
+python-test: build
+	@if $(PYTHON) -c "import $(shell echo $(PYTHON_TOOLS) | tr ' ' ',')" 2>/dev/null; then \
+		$(PYTHON_PATH) $(PYTHON) -m pip install --quiet --no-build-isolation --no-deps --upgrade --target target/python ./python && \
+		PYTHONPATH=$(CURDIR)/target/python RACKET_IMPACT_BIN=$(BIN) $(PYTHON) -m pytest -q -p no:cacheprovider python/tests; \
+	elif [ -n "$$CI" ]; then \
+		echo "error: the Python tests need $(PYTHON) with $(PYTHON_TOOLS)" >&2; exit 1; \
+	else \
+		echo "Python tests skipped: $(PYTHON) -m pip install $(PYTHON_TOOLS) to run them"; \
+	fi
+
+# Regenerate the Python package's type stub from the parameters' declaration (the tests fail
+# while it is stale).
+python-stub: build
+	$(PYTHON_PATH) $(PYTHON) -m pip install --quiet --no-build-isolation --no-deps --upgrade --target target/python ./python
+	PYTHONPATH=$(CURDIR)/target/python $(PYTHON) -m racket_impact._stub > python/racket_impact/__init__.pyi
 
 # The string-face maps (CSV + PNG + JSON each; tests/map.rs checks the committed ones against
 # these lines).
@@ -43,7 +73,7 @@ golden: figures
 	INSTA_UPDATE=always CI= $(SUITE)
 
 bench:
-	$(CARGO) bench --locked
+	$(CARGO) bench --locked -p racket-impact-bench
 
 # Coverage-guided fuzzing of the config parser (needs `cargo install cargo-fuzz`; the stable
 # toolchain is allowed nightly flags with RUSTC_BOOTSTRAP). FUZZ_SECONDS bounds the run.
@@ -56,7 +86,7 @@ fmt:
 
 lint:
 	$(CARGO) fmt --all -- --check
-	$(CARGO) clippy --locked --all-targets -- -D warnings
+	$(CARGO) clippy --locked -p racket-impact -p racket-impact-bench --all-targets -- -D warnings
 	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --locked --no-deps
 
 clean:

@@ -342,6 +342,29 @@ fn no_option_states_its_default_twice() {
     }
 }
 
+/// Each command's long help opens with its one-line summary and then, where it says more, an
+/// example or a short statement, in paragraphs a reader can take in: none of prose over 400
+/// characters (a list, its lines indented, may be longer), and the first after the summary
+/// short (issue 40: `uncertainty` and `speed` opened with one long paragraph).
+#[test]
+fn long_helps_come_in_short_paragraphs() {
+    for command in ["simulate", "modes", "speed", "sweep", "map", "uncertainty", "figures", "report", "racket"] {
+        let o = run(&[command, "--help"]);
+        assert_eq!(o.status.code(), Some(0), "{command}");
+        let help = String::from_utf8(o.stdout).unwrap();
+        let intro = &help[..help.find("\nUsage:").unwrap_or(help.len())];
+        let paragraphs: Vec<&str> = intro.split("\n\n").map(str::trim_end).filter(|p| !p.is_empty()).collect();
+        assert!(paragraphs[0].lines().count() == 1 && paragraphs[0].len() <= 120, "{command}: {}", paragraphs[0]);
+        if let Some(second) = paragraphs.get(1) {
+            assert!(second.len() <= 120, "{command}: the help goes on with a long paragraph: {second}");
+        }
+        for p in &paragraphs {
+            let list = p.lines().skip(1).all(|l| l.starts_with("  "));
+            assert!(list || p.len() <= 400, "{command}: a paragraph of {} characters: {p}", p.len());
+        }
+    }
+}
+
 /// A zero in JSON is printed without a sign: a stroke's params echo its zero spin as 0.0,
 /// not -0.0 (every JSON goes through render::json).
 #[test]

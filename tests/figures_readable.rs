@@ -69,7 +69,9 @@ fn oblique_figures_name_their_incidence_spin_and_friction() {
     for needle in ["azimuth 90 deg", "no spin in", "30 m/s"] {
         assert!(c.title.contains(needle), "{}", c.title);
     }
-    assert!(c.curves.iter().any(|k| k.label.contains("mu 0.4 T / 60 lb")));
+    // the two friction laws (solid and dashed) are named in the title (issue 40: the legend
+    // names each curve's quantity and angle instead)
+    assert!(c.title.contains("solid mu 0.4") && c.title.contains("dashed mu 0.4 T / 60 lb"), "{}", c.title);
     assert!(c.x_label.contains("kt 2e4 N/m"));
     let (c, _) = chart("topspin_forehand", &ctx);
     assert!(c.title.contains("mu 0.4") && c.y2_label.as_deref().unwrap().contains("court"), "{c:?}");

@@ -1,16 +1,21 @@
 //! `make test` on a machine with only the Rust toolchain (issue 32, item 10): without
 //! cargo-nextest the Makefile runs the suite with plain `cargo test`, never asking for a third
-//! command. Checked with `make -n` (the commands, not a second run of the suite) against a
-//! `cargo` on PATH that has no `nextest` subcommand.
+//! command; and `make test` after `make figures` reuses the release build (issue 40: every
+//! cargo command of the tests builds with the release profile). Checked with `make -n` (the
+//! commands, not a second run of the suite) against a `cargo` on PATH that has no `nextest`
+//! subcommand; the commands are read as commands (their words), so a checkout whose path
+//! holds "nextest" or "--release" proves nothing either way.
 
 use std::path::Path;
 use std::process::Command;
 
-/// The commands `make -n test` would run, with `cargo` being `cargo_dir/cargo` first on PATH.
-fn planned(cargo_dir: Option<&Path>) -> String {
+/// The commands `make -n test` would run, one per line, each split into its words, with
+/// `cargo` being `cargo_dir/cargo` first on PATH (make runs in the checkout, printing no
+/// directory).
+fn planned(cargo_dir: Option<&Path>) -> Vec<Vec<String>> {
     let root = env!("CARGO_MANIFEST_DIR");
     let mut cmd = Command::new("make");
-    cmd.args(["-n", "-C", root, "test"]).env_remove("MAKEFLAGS").env_remove("CARGO");
+    cmd.args(["-n", "--no-print-directory", "test"]).current_dir(root).env_remove("MAKEFLAGS").env_remove("CARGO");
     if let Some(dir) = cargo_dir {
         let path = std::env::var_os("PATH").unwrap_or_default();
         let mut dirs = vec![dir.to_path_buf()];
@@ -19,12 +24,30 @@ fn planned(cargo_dir: Option<&Path>) -> String {
     }
     let out = cmd.output().expect("make runs");
     assert!(out.status.success(), "make -n test failed: {}", String::from_utf8_lossy(&out.stderr));
-    String::from_utf8_lossy(&out.stdout).into_owned()
+    String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .map(|l| l.split_whitespace().map(String::from).collect::<Vec<_>>())
+        .filter(|words| !words.is_empty())
+        .collect()
 }
 
+/// The cargo commands of the plan: the words after `cargo` (`["nextest", "run", ...]`).
+fn cargo_commands(plan: &[Vec<String>]) -> Vec<Vec<&str>> {
+    plan.iter()
+        .filter(|words| words[0] == "cargo" || words[0].ends_with("/cargo"))
+        .map(|words| words[1..].iter().map(String::as_str).collect())
+        .collect()
+}
+
+/// Whether `command` (words after `cargo`) starts with `sub` and holds every word of `flags`.
+fn is(command: &[&str], sub: &[&str], flags: &[&str]) -> bool {
+    command.starts_with(sub) && flags.iter().all(|f| command.contains(f))
+}
+
+/// A folder holding a `cargo` that has no `nextest` subcommand (and runs the real cargo
+/// otherwise), to put first on PATH.
 #[cfg(unix)]
-#[test]
-fn make_test_without_nextest_falls_back_to_cargo_test() {
+fn cargo_without_nextest() -> tempfile::TempDir {
     use std::os::unix::fs::PermissionsExt;
     let real = std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_string());
     let dir = tempfile::tempdir().expect("temp dir");
@@ -37,15 +60,57 @@ fn make_test_without_nextest_falls_back_to_cargo_test() {
     )
     .expect("write the fake cargo");
     std::fs::set_permissions(&fake, std::fs::Permissions::from_mode(0o755)).expect("chmod");
+    dir
+}
+
+#[cfg(unix)]
+#[test]
+fn make_test_without_nextest_falls_back_to_cargo_test() {
+    let dir = cargo_without_nextest();
     let plan = planned(Some(dir.path()));
-    assert!(!plan.contains("nextest"), "without nextest, make test must not call it:\n{plan}");
-    assert!(plan.contains("cargo test --locked --doc"), "{plan}");
-    assert!(plan.contains("cargo test --locked --no-fail-fast --lib --bins --tests"), "{plan}");
+    let commands = cargo_commands(&plan);
+    assert!(
+        !commands.iter().any(|c| c.first() == Some(&"nextest")),
+        "without nextest, make test must not call it:\n{plan:?}"
+    );
+    assert!(commands.iter().any(|c| is(c, &["test"], &["--locked", "--doc"])), "{plan:?}");
+    let suite = ["--locked", "--no-fail-fast", "--lib", "--bins", "--tests"];
+    assert!(commands.iter().any(|c| is(c, &["test"], &suite)), "{plan:?}");
 }
 
 #[test]
 fn make_test_uses_nextest_where_it_is_installed() {
     let has_nextest = Command::new("cargo").args(["nextest", "--version"]).output().is_ok_and(|o| o.status.success());
     let plan = planned(None);
-    assert_eq!(plan.contains("cargo nextest run --locked --no-fail-fast"), has_nextest, "{plan}");
+    let commands = cargo_commands(&plan);
+    let nextest = commands.iter().any(|c| is(c, &["nextest", "run"], &["--locked", "--no-fail-fast"]));
+    assert_eq!(nextest, has_nextest, "{plan:?}");
+}
+
+/// `make test` after `make figures` builds on the release build: every cargo command of the
+/// test target (doc tests, the suite), with nextest or without, uses the release profile, as
+/// `make build` does, and none names another profile.
+#[cfg(unix)]
+#[test]
+fn make_test_builds_with_the_release_profile_make_figures_built() {
+    let without = cargo_without_nextest();
+    for cargo_dir in [None, Some(without.path())] {
+        let plan = planned(cargo_dir);
+        let commands = cargo_commands(&plan);
+        assert!(commands.len() >= 2, "{plan:?}");
+        for c in &commands {
+            assert!(c.contains(&"--release"), "not the release profile: cargo {}", c.join(" "));
+            assert!(!c.iter().any(|w| w.starts_with("--profile") || w.starts_with("--cargo-profile")), "{c:?}");
+        }
+    }
+    let build: Vec<Vec<String>> = {
+        let out = Command::new("make")
+            .args(["-n", "--no-print-directory", "build"])
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .env_remove("MAKEFLAGS")
+            .output()
+            .expect("make runs");
+        String::from_utf8_lossy(&out.stdout).lines().map(|l| l.split_whitespace().map(String::from).collect()).collect()
+    };
+    assert!(cargo_commands(&build).iter().any(|c| is(c, &["build"], &["--release"])), "{build:?}");
 }

@@ -17,9 +17,11 @@
 #[path = "../src/cli/mod.rs"]
 mod cli;
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
 
 use clap::CommandFactory;
 use racket_impact::params::spec::{UsedWhen, Values};
@@ -34,7 +36,10 @@ struct Scratch(PathBuf);
 
 impl Scratch {
     fn new(name: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("racket-impact-options-{}-{name}", std::process::id()));
+        // (runs go on in parallel: each its own folder)
+        static COUNT: AtomicUsize = AtomicUsize::new(0);
+        let n = COUNT.fetch_add(1, Ordering::Relaxed);
+        let dir = std::env::temp_dir().join(format!("racket-impact-options-{}-{n}-{name}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         Scratch(dir)
@@ -48,7 +53,7 @@ impl Drop for Scratch {
 }
 
 /// What a run produced: its exit code and everything a user sees of it.
-#[derive(Debug, PartialEq)]
+#[derive(Debug, Clone, Default, PartialEq)]
 struct Seen {
     code: Option<i32>,
     /// Standard output with the elapsed times (`(0.02 s)`) taken out.
@@ -140,6 +145,62 @@ fn run(command: &str, args: &[String], config: &str) -> Seen {
         files,
         error: stderr.lines().filter(|l| l.starts_with("error")).collect::<Vec<_>>().join(" "),
     }
+}
+
+/// A run: the command, its arguments and the text of its config file.
+type Request = (String, Vec<String>, String);
+
+/// The runs of a check. A check is written as if it ran each command where it needs it; it is
+/// called twice ([`in_parallel`]): first its runs are only recorded (each answered with an
+/// empty successful run, so that every run any branch needs is asked for), then all of them are
+/// made at once, in parallel, each distinct one once (the commands are deterministic:
+/// tests/outputs.rs checks that a rerun gives the same bytes), and the check is called again
+/// with their outputs.
+enum Runs {
+    Recording(Mutex<Vec<Request>>),
+    Made(HashMap<Request, Seen>),
+}
+
+impl Runs {
+    /// What `racket-impact <command> <args>` with `config` as `cfg.toml` produced ([`run`]).
+    fn run(&self, command: &str, args: &[String], config: &str) -> Seen {
+        let request = (command.to_string(), args.to_vec(), config.to_string());
+        match self {
+            Runs::Recording(requests) => {
+                requests.lock().unwrap().push(request);
+                Seen { code: Some(0), ..Seen::default() }
+            }
+            Runs::Made(made) => made.get(&request).cloned().unwrap_or_else(|| run(command, args, config)),
+        }
+    }
+}
+
+/// Run `check` over its runs made in parallel (see [`Runs`]): on a 2-core machine the runs of
+/// the slow commands (`report`, `uncertainty --claims`) overlap with each other and with the
+/// many short ones, which go first to the longest.
+fn in_parallel<T>(check: impl Fn(&Runs) -> T) -> T {
+    let recording = Runs::Recording(Mutex::new(Vec::new()));
+    check(&recording);
+    let Runs::Recording(requests) = recording else { unreachable!("made as recording") };
+    let mut requests = requests.into_inner().unwrap();
+    // each distinct run once, the slowest commands first (the others fill in around them)
+    let slow = |(c, a, _): &Request| !(c == "report" || (c == "uncertainty" && a.iter().any(|w| w == "--claims")));
+    requests.sort_by(|x, y| slow(x).cmp(&slow(y)).then(x.cmp(y)));
+    requests.dedup();
+    let next = AtomicUsize::new(0);
+    let made = Mutex::new(HashMap::new());
+    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| {
+                while let Some((command, args, config)) = requests.get(next.fetch_add(1, Ordering::Relaxed)) {
+                    let seen = run(command, args, config);
+                    made.lock().unwrap().insert((command.clone(), args.clone(), config.clone()), seen);
+                }
+            });
+        }
+    });
+    check(&Runs::Made(made.into_inner().unwrap()))
 }
 
 /// An option: its clap id and its long name (none for a positional argument).
@@ -347,6 +408,14 @@ fn differs(a: &Seen, b: &Seen) -> bool {
 
 #[test]
 fn every_option_of_every_command_changes_the_output_or_is_refused() {
+    let (probed, failures) = in_parallel(every_option_changes_the_output_or_is_refused);
+    assert!(probed > 100, "only {probed} options probed");
+    assert!(failures.is_empty(), "{} options not shown to work:\n{}", failures.len(), failures.join("\n"));
+}
+
+/// How many options were probed, and the failures.
+fn every_option_changes_the_output_or_is_refused(runs: &Runs) -> (usize, Vec<String>) {
+    let run = |command: &str, args: &[String], config: &str| runs.run(command, args, config);
     let mut failures = Vec::new();
     let mut probed = 0;
     let probes = probes();
@@ -410,12 +479,18 @@ fn every_option_of_every_command_changes_the_output_or_is_refused() {
             failures.push(format!("PROBES names {c} {o}, which is no option"));
         }
     }
-    assert!(probed > 100, "only {probed} options probed");
-    assert!(failures.is_empty(), "{} options not shown to work:\n{}", failures.len(), failures.join("\n"));
+    (probed, failures)
 }
 
 #[test]
 fn config_keys_change_the_output_or_are_named_in_one_warning_or_refused() {
+    let failures = in_parallel(config_keys_change_the_output_or_are_named);
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The failures.
+fn config_keys_change_the_output_or_are_named(runs: &Runs) -> Vec<String> {
+    let run = |command: &str, args: &[String], config: &str| runs.run(command, args, config);
     let mut failures = Vec::new();
     for (command, options) in option_table() {
         if !options.iter().any(|(id, _)| id == "config") {
@@ -458,7 +533,7 @@ fn config_keys_change_the_output_or_are_named_in_one_warning_or_refused() {
             }
         }
     }
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    failures
 }
 
 #[test]
@@ -504,9 +579,17 @@ fn simulate_params(args: &[String]) -> Option<Params> {
 
 #[test]
 fn every_parameter_under_every_model_selection_does_what_its_row_says() {
+    let (checked, failures) = in_parallel(every_parameter_under_every_selection);
+    assert!(checked > 100, "only {checked} combinations ran");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// How many combinations ran, and the failures.
+fn every_parameter_under_every_selection(runs: &Runs) -> (usize, Vec<String>) {
     // simulate takes every parameter; which impacts use one is its row's used_when, and what a
     // value it does not use is told its row's role (params/used.rs): used -> the output
     // changes; a property not exercised -> one note; a method's option not honoured -> refused
+    let run = |command: &str, args: &[String], config: &str| runs.run(command, args, config);
     let mut failures = Vec::new();
     let mut checked = 0;
     for spec in &keys::ALL {
@@ -548,8 +631,7 @@ fn every_parameter_under_every_model_selection_does_what_its_row_says() {
             }
         }
     }
-    assert!(checked > 100, "only {checked} combinations ran");
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    (checked, failures)
 }
 
 #[test]

@@ -1,7 +1,8 @@
 //! The README's examples still do what the README says (trap class 9 of issue 24): every
 //! `$ racket-impact ...` line of its console blocks runs (exit 0, no error), and where the
 //! README shows the output, the command prints exactly that (up to a `...` line, which marks
-//! the rest as left out). A `$ cat FILE` line with its text creates that file first.
+//! the rest as left out). A `$ cat FILE` line shows a file shipped in the repository: its text
+//! must be the file's.
 
 use std::process::Command;
 
@@ -46,7 +47,16 @@ fn every_readme_example_runs_and_prints_what_the_readme_shows() {
         let command = ex.command.split(" #").next().unwrap().trim();
         let words: Vec<&str> = command.split_whitespace().collect();
         if words[0] == "cat" {
-            std::fs::write(dir.path().join(words[1]), ex.shown.join("\n") + "\n").unwrap();
+            // a file the README shows is shipped with it, as shown (a newcomer runs the
+            // examples on it), and is copied where the examples run
+            let shipped = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(words[1]);
+            let text = std::fs::read_to_string(&shipped).unwrap_or_else(|e| panic!("{}: {e}", shipped.display()));
+            if text != ex.shown.join("\n") + "\n" {
+                failures.push(format!("{command}: {} is not what the README shows", words[1]));
+            }
+            let copy = dir.path().join(words[1]);
+            std::fs::create_dir_all(copy.parent().unwrap()).unwrap();
+            std::fs::write(copy, text).unwrap();
             continue;
         }
         assert_eq!(words[0], "racket-impact", "{command}");

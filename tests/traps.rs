@@ -408,6 +408,27 @@ fn series_values_too_small_are_refused_as_written() {
     args.extend(["--series-dt", "1e308"]);
     refused(&s.run(&args), "at least two samples");
     assert!(!s.path("t.csv").exists());
+    // (issue 40) the ends of a sweep's range and of a drawn distribution, as any number option
+    refused(&s.run(&["sweep", "--x", "1e-400:0.2:3"]), "start is too small to represent");
+    refused(&s.run(&["sweep", "--ks", "1e3:1e400:3:log"]), "stop is too large to represent");
+    refused(&s.run(&["uncertainty", "--vary", "ks=uniform:1e-400:1e4"]), "LO is too small to represent");
+}
+
+/// A sample spacing below the solver's step cannot be honoured (the series has one row per
+/// step at most): the run says so in one note, naming the step (issue 40; it used the step
+/// silently).
+#[test]
+fn a_series_spacing_below_the_step_is_noted() {
+    let s = Scratch::new();
+    let o = s.run(&["simulate", "--solver", "fd", "--series", "t.csv", "--series-dt", "1e-9"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let notes: Vec<String> = stderr(&o).lines().filter(|l| l.contains("--series-dt")).map(String::from).collect();
+    assert_eq!(notes.len(), 1, "{}", stderr(&o));
+    assert!(notes[0].starts_with("warning: --series-dt 1e-9 s is below the solver's step"), "{}", notes[0]);
+    assert!(notes[0].contains("one row per step"), "{}", notes[0]);
+    // at or above the step: no note
+    let o = s.run(&["simulate", "--solver", "fd", "--series", "t.csv", "--series-dt", "2e-5"]);
+    assert!(!stderr(&o).contains("--series-dt"), "{}", stderr(&o));
 }
 
 #[test]

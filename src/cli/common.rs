@@ -41,6 +41,25 @@ pub fn write_stdout(bytes: &[u8]) -> Result<()> {
     }
 }
 
+/// Check, before any work, that standard output can be written: an empty write, which writes
+/// nothing and fails where every write would (`> /dev/full`: no space left), so that a command
+/// whose result cannot be printed fails at once instead of after its work. A reader that has
+/// gone away is not an error (as in [`write_stdout`]).
+pub fn check_stdout() -> Result<()> {
+    #[cfg(unix)]
+    {
+        use std::io::Write;
+        use std::os::fd::AsFd;
+        let probe = std::io::stdout().as_fd().try_clone_to_owned().map(std::fs::File::from);
+        // (`write`, not `write_all`: an empty `write_all` never calls the system)
+        match probe.and_then(|mut f| f.write(&[])) {
+            Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => return Err(Error::io("<stdout>", e)),
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
 /// [`write_stdout`] for a stream that only goes to standard output (`sweep` without `--out`):
 /// a reader that has gone away ends the program with success, as a shell tool should, instead
 /// of computing what nobody reads.

@@ -3,7 +3,6 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use racket_impact::params::Params;
 use racket_impact::Result;
 
 use super::common::outln;
@@ -58,11 +57,8 @@ pub fn run(a: FiguresArgs) -> Result<()> {
     let mut ctx = experiments::Context::paper();
     let out = match &a.racket {
         Some(arg) => {
-            let spec = racket_impact::racket::load(arg)?;
-            let fitted = spec.to_racket(Params::paper().numerics.segments)?;
+            ctx = experiments::Context::for_racket(arg)?;
             let stem = std::path::Path::new(arg).file_stem().and_then(|s| s.to_str()).unwrap_or("custom");
-            ctx = experiments::Context::with_racket(fitted.racket, fitted.ball)
-                .named(spec.name.clone().unwrap_or_else(|| stem.to_string()));
             let name: String =
                 stem.chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' { c } else { '_' }).collect();
             a.out.clone().unwrap_or_else(|| PathBuf::from("figures").join(format!("racket-{name}")))

@@ -75,16 +75,8 @@ pub fn run(a: MapArgs) -> Result<()> {
     // (the inputs read first: no output may be one of them)
     let (configs, total) = request.configurations()?;
     let outputs = Outputs::for_csv(&a.out.unwrap_or_else(|| request.default_csv()))?;
-    // (as the grid's points are: off the long axis too)
-    let solved: Vec<_> = configs
-        .iter()
-        .map(|(_, p)| {
-            let mut p = racket_impact::study::map::with_map_solver(p);
-            p.impact.r = 0.5 * p.racket.half_width;
-            p
-        })
-        .collect();
-    let noted = super::common::check_used(&sources, &solved)?;
+    super::common::check_stdout()?;
+    let noted = request.check_used(&configs)?;
 
     let bar = Progress::new(total as u64);
     let started = bar.started;

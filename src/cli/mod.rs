@@ -51,46 +51,63 @@ pub enum Command {
     Report(report::ReportArgs),
     /// Fit a racket description (file or preset) to the model and show how well it matches
     ///
-    /// A racket file is TOML in player units (README "Your own racket"). Keys: name; length_in
-    /// or length_cm; mass_g (strung, required); balance_cm or balance_pts_hl (head-light
-    /// points), with swingweight_kg_cm2 (about 10 cm from the butt), or neither (a uniform
-    /// beam); twistweight_kg_cm2 (required); frequency_hz or ei_n_m2; stiffness_ratio (relative
-    /// EI at tip, head end, handle start, butt); head_length_cm with head_width_cm, or
-    /// head_size_sq_in with head_aspect; handle_length_cm; one of tension_lb, tension_kg,
-    /// string_bed_n_per_m, dt_kp_cm; mu; string (a name from data/strings); and a [ball] table
-    /// with mass_g, k1_n_per_m, p.
+    /// Example: racket-impact racket examples/my-racket.toml
+    ///
+    /// A racket file is TOML in player units (README "Your own racket";
+    /// examples/my-racket.toml is one to start from).
+    ///
+    /// Keys: name; length_in or length_cm; mass_g (strung, required); balance_cm or
+    /// balance_pts_hl (head-light points), with swingweight_kg_cm2 (about 10 cm from the butt),
+    /// or neither (a uniform beam); twistweight_kg_cm2 (required); frequency_hz or ei_n_m2;
+    /// stiffness_ratio (relative EI at tip, head end, handle start, butt).
+    ///
+    /// More keys: head_length_cm with head_width_cm, or head_size_sq_in with head_aspect;
+    /// handle_length_cm; one of tension_lb, tension_kg, string_bed_n_per_m, dt_kp_cm; mu; string
+    /// (a name from data/strings); and a [ball] table with mass_g, k1_n_per_m, p.
     Racket(racket::RacketArgs),
     /// Outgoing ball speed for a swing and an incoming ball; compare tensions or rackets
     ///
-    /// v_out = e_A v_in + (1 + e_A) v_racket (the paper's frame transformation), with e_A
-    /// computed at the relative speed v_in + v_racket and the racket's swing speed taken at the
-    /// impact point. Text and CSV give each variant's speeds with e_A, tau and theta (a
-    /// deliberate subset); --format json gives every result field of each impact, as simulate's
-    /// JSON does. The launch angle is taken with the face as it was at first contact: an
-    /// off-axis impact (--r) twists the face by theta (shown, and warned of beyond the small-angle
-    /// range), which the launch direction does not include, so +r and -r launch alike. At stroke
-    /// speeds the paper's soft ball (k1 = 3e4 N/m) compresses by more than its radius (y0 about
-    /// 40 mm at 160 km/h; see simulate's y0): the speeds follow the paper's model extrapolated.
     /// Example: racket-impact speed --racket tweener --swing 100 --incoming 60
     /// --compare-tension-lb 50,60
+    ///
+    /// v_out = e_A v_in + (1 + e_A) v_racket (the paper's frame transformation), with e_A
+    /// computed at the relative speed v_in + v_racket and the racket's swing speed taken at the
+    /// impact point.
+    ///
+    /// Output: text and CSV give each variant's speeds with e_A, tau and theta (a deliberate
+    /// subset); --format json gives every result field of each impact, as simulate's JSON does.
+    ///
+    /// Launch angle: taken with the face as it was at first contact. An off-axis impact (--r)
+    /// twists the face by theta (shown, and warned of beyond the small-angle range), which the
+    /// launch direction does not include, so +r and -r launch alike.
+    ///
+    /// At stroke speeds the paper's soft ball (k1 = 3e4 N/m) compresses by more than its radius
+    /// (y0 about 40 mm at 160 km/h; see simulate's y0): the speeds follow the paper's model
+    /// extrapolated.
     Speed(speed::SpeedArgs),
     /// Run the cartesian product of ranges or lists of any parameters, in parallel, as CSV
     #[command(long_about = sweep::long_about())]
     Sweep(sweep::SweepArgs),
     /// Map a quantity over the string face: one impact per grid point, as CSV, PNG and JSON
     ///
-    /// Runs an impact at every point of an nx x nr grid over the string face (the racket's head
-    /// ellipse; for a racket without one, such as the paper's, a 32 cm ellipse from the tip,
-    /// 2 half-width wide, centred 16 cm from the tip at the paper's mode-1 node) and writes the table (--out, default
-    /// map_<quantity>.csv, or map_<quantity>_diff.csv for a comparison), the heat map (same
-    /// stem, .png) and metadata (same stem, .json: the full parameters, the mode-1 node, the
-    /// point of maximum e_A). Every parameter flag and --config apply to every point. The impact
-    /// point, the solver and its step are not options: the grid chooses the points, and a map
-    /// runs the modal solver wherever the model variants allow it, else fd with its automatic
-    /// step (a --config file's x, r, solver and dt are named as unused). --format selects what is printed: a text summary, the JSON
-    /// metadata or the CSV table (the map quantities at every point, a deliberate subset of the
-    /// result fields: simulate --x X --r R gives all of one point). Example: racket-impact map --racket tweener --quantity power
-    /// --compare-tension-lb 50,60
+    /// Example: racket-impact map --racket tweener --quantity power --compare-tension-lb 50,60
+    ///
+    /// Runs an impact at every point of an nx x nr grid over the string face: the racket's head
+    /// ellipse; for a racket without one, such as the paper's, a 32 cm ellipse from the tip, 2
+    /// half-width wide, centred 16 cm from the tip at the paper's mode-1 node.
+    ///
+    /// Files: the table (--out, default map_<quantity>.csv, or map_<quantity>_diff.csv for a
+    /// comparison), the heat map (same stem, .png) and metadata (same stem, .json: the full
+    /// parameters, the mode-1 node, the point of maximum e_A).
+    ///
+    /// Every parameter flag and --config apply to every point. The impact point, the solver and
+    /// its step are not options: the grid chooses the points, and a map runs the modal solver
+    /// wherever the model variants allow it, else fd with its automatic step (a --config file's
+    /// x, r, solver and dt are named as unused).
+    ///
+    /// --format selects what is printed: a text summary, the JSON metadata or the CSV table (the
+    /// map quantities at every point, a deliberate subset of the result fields: simulate --x X
+    /// --r R gives all of one point).
     Map(map::MapArgs),
     /// An impact's result fields under uncertain inputs, or every paper claim under the declared uncertainty
     #[command(long_about = uncertainty::long_about())]

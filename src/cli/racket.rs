@@ -35,12 +35,7 @@ pub fn run(a: RacketArgs) -> Result<()> {
         return Err(Error::invalid("racket", "(missing)", "give a racket file or preset name, or --list"));
     };
     let fitted = racket::load(arg)?.to_racket(a.segments)?;
-    // the same warnings as the impact commands give for this racket (unusual values, frequency,
-    // density), at the face centre with the default numerics on the fit's segments
-    let numerics = params::Numerics { segments: a.segments, ..Default::default() };
-    let mut p = fitted.params(params::Impact::default(), numerics);
-    params::keys::face_centre_impact(&mut p);
-    let diagnostics = racket_impact::study::diagnose::parameters([&p], &[]);
+    let diagnostics = racket_impact::study::diagnose::racket(&fitted, a.segments);
     print_diagnostics(&diagnostics);
     let text = match a.format {
         Format::Text => text(&fitted),
@@ -54,36 +49,8 @@ pub fn run(a: RacketArgs) -> Result<()> {
 /// The presets, fitted for `segments` segments: one line each as text, or a table as CSV or
 /// JSON (one object per preset).
 fn list(segments: usize, format: Format) -> Result<()> {
-    use racket_impact::render::table::{Table, Value};
-    let mut table = Table::new(
-        "presets",
-        &[
-            "name",
-            "length_cm",
-            "mass_g",
-            "balance_cm",
-            "swingweight_kg_cm2",
-            "twistweight_kg_cm2",
-            "f1_hz",
-            "ks_n_per_m",
-            "profile",
-        ],
-    );
-    for name in racket::preset_names() {
-        let fitted = racket::load(name)?.to_racket(segments)?;
-        let (r, rep) = (&fitted.racket, &fitted.report);
-        table.rows.push(vec![
-            Value::Text(name.to_string()),
-            Value::Num(100.0 * r.length),
-            Value::Num(1e3 * r.mass),
-            Value::Num(rep.balance_cm.model),
-            Value::Num(rep.swingweight_kg_cm2.model),
-            Value::Num(rep.twistweight_kg_cm2.model),
-            Value::Num(rep.frequency_hz.model),
-            Value::Num(fitted.strings.ks),
-            Value::Text(if r.profile.is_none() { "uniform" } else { "fitted" }.to_string()),
-        ]);
-    }
+    use racket_impact::render::table::Value;
+    let table = racket::presets_table(segments)?;
     match format {
         Format::Csv => out!("{}", table.to_csv()),
         Format::Json => out!("{}", table_json(&table, &[])?),

@@ -30,6 +30,7 @@ pub fn run(a: ReportArgs) -> Result<()> {
     if !a.no_write {
         racket_impact::render::io::check_output_dir("out", &out)?;
     }
+    super::common::check_stdout()?;
     let rows = racket_impact::report::evaluate()?;
     let md = racket_impact::report::document(&rows)?;
     // REPORT.md is published only once the report has been printed (a device before it)

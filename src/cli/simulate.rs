@@ -3,11 +3,12 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use racket_impact::diagnostic::{Diagnostic, Kind};
 use racket_impact::numfmt::sig;
 use racket_impact::solve::{FdModel, SeriesOptions};
 use racket_impact::{Error, Result};
 
-use super::common::{diagnostics_json, out, print_diagnostics, Common, Format};
+use super::common::{out, print_diagnostics, Common, Format};
 use super::overrides::SimulateKeys;
 
 /// Sample spacing of the time series unless given, s.
@@ -34,7 +35,7 @@ pub struct SimulateArgs {
 /// exist.
 pub fn run(a: SimulateArgs) -> Result<()> {
     let params = a.common.sources().params()?;
-    let noted = a.common.check_used([&params])?;
+    let mut noted = a.common.check_used([&params])?;
     if let Some(path) = &a.series {
         racket_impact::render::io::check_output_dir("series", path)?;
     }
@@ -84,39 +85,39 @@ pub fn run(a: SimulateArgs) -> Result<()> {
                 format!("the time series would have about {} rows, at most {most}: a larger --series-dt or a shorter --series-end", sig(rows, 2)),
             ));
         }
+        if a.series_dt < model.dt {
+            // (the series has one row per step at most: a finer spacing is not honoured)
+            noted.push(Diagnostic::new(
+                Kind::NotUsed,
+                "series-dt",
+                format!(
+                    "--series-dt {} s is below the solver's step {} s: the series has one row per step (spacing {} s)",
+                    sig(a.series_dt, 4),
+                    sig(model.dt, 4),
+                    sig(model.dt, 4)
+                ),
+            ));
+        }
         let (r, s) = model.run_with_series(SeriesOptions { sample_dt: a.series_dt, t_end: a.series_end })?;
         (r, Some(s))
     } else {
         (racket_impact::simulate(&params)?, None)
     };
-    // (from the cached modes: the modal solver runs where the explicit one would refuse)
-    let f1_hz = racket_impact::model::basis::Basis::of(&params.racket, params.numerics.segments).omega[0]
-        / (2.0 * std::f64::consts::PI);
-    let diagnostics: Vec<_> =
-        noted.into_iter().chain(racket_impact::study::diagnose::impact(&params, &result)).collect();
+    let single = racket_impact::study::impact::Single::of(params, result, noted);
     let text = match a.common.format {
-        Format::Json => {
-            let mut v = racket_impact::render::impact::result_json(&params, &result);
-            v["params"] = serde_json::to_value(params).map_err(|e| Error::io("<json>", e))?;
-            if !params.oblique.is_normal() {
-                v["spin_convention"] = racket_impact::render::impact::SIMULATE_SPIN_CONVENTION.into();
-            }
-            v["f1_hz"] = f1_hz.into();
-            v["diagnostics"] = diagnostics_json(&diagnostics)?;
-            racket_impact::render::json::pretty(&v)?
-        }
-        Format::Csv => racket_impact::render::impact::result_csv(&params, &result),
-        Format::Text => racket_impact::render::impact::result_text(&params, &result),
+        Format::Json => racket_impact::render::json::pretty(&single.json()?)?,
+        Format::Csv => racket_impact::render::impact::result_csv(&single.params, &single.result),
+        Format::Text => racket_impact::render::impact::result_text(&single.params, &single.result),
     };
     // a series device is written before the result is printed, a series file renamed after
     let mut staged = racket_impact::render::io::Staged::new();
     if let (Some(path), Some(rows)) = (&a.series, &series) {
-        racket_impact::render::impact::stage_series(&mut staged, path, &params, rows)?;
+        racket_impact::render::impact::stage_series(&mut staged, path, &single.params, rows)?;
     }
     staged.publish(|| {
         out!("{text}");
         Ok(())
     })?;
-    print_diagnostics(&diagnostics);
+    print_diagnostics(&single.diagnostics);
     Ok(())
 }

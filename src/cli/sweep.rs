@@ -32,13 +32,15 @@ pub struct SweepArgs {
 pub fn long_about() -> String {
     format!(
         "Run the cartesian product of ranges or lists of any parameters, in parallel, as CSV\n\n\
-         After the options, give any parameter as `--KEY SPEC`, where SPEC is a value (0.1), a list \
-         (2e4,4e4 or node,hat), a range start:stop:count or a log range start:stop:count:log. Keys, with \
-         the default of a key not given (see `simulate --help`; a racket's own values with --racket): {}. \
-         Options (--out, --config, --racket) go before the pairs. Sweeps use the modal solver (~30x \
-         faster, within 2e-5 of fd at normal incidence and 1e-4 for an oblique ball) unless --solver is given or a hand grip or stiffening strings need \
-         fd; the last CSV column names the solver. Example: racket-impact sweep --out s.csv --x \
-         0.02:0.60:50 --ks 2e4,4e4 --load node",
+         Example: racket-impact sweep --out s.csv --x 0.02:0.60:50 --ks 2e4,4e4 --load node\n\n\
+         After the options (--out, --config, --racket), give any parameter as `--KEY SPEC`, where SPEC is a \
+         value (0.1), a list (2e4,4e4 or node,hat), a range start:stop:count or a log range \
+         start:stop:count:log.\n\n\
+         Sweeps use the modal solver (~30x faster, within 2e-5 of fd at normal incidence and 1e-4 for an \
+         oblique ball) unless --solver is given or a hand grip or stiffening strings need fd; the last CSV \
+         column names the solver.\n\n\
+         Keys, with the default of a key not given (see `simulate --help`; a racket's own values with \
+         --racket):\n  {}",
         keys_with_defaults()
     )
 }
@@ -58,12 +60,15 @@ fn keys_with_defaults() -> String {
                 spec.unit
             };
             if spec.key == keys::SOLVER.key {
-                return format!("{} (modal, see below)", spec.key);
+                return format!("{} (modal, see above)", spec.key);
             }
             format!("{} ({})", spec.key, format!("{value} {unit}").trim_end())
         })
         .collect::<Vec<_>>()
-        .join(", ")
+        .chunks(6)
+        .map(|keys| keys.join(", "))
+        .collect::<Vec<_>>()
+        .join(",\n  ")
 }
 
 /// Run the sweep, writing the header and then each finished chunk's rows.
@@ -108,10 +113,7 @@ pub fn run(a: SweepArgs) -> Result<()> {
     if let Some(f) = file {
         f.commit()?;
     }
-    use racket_impact::study::diagnose;
-    print_diagnostics(
-        noted.iter().chain(&diagnose::parameters(&representatives, &[])).chain(&diagnose::twist(theta_max)),
-    );
+    print_diagnostics(&racket_impact::study::sweep::diagnostics(&noted, &representatives, theta_max));
     Ok(())
 }
 

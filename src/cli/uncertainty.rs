@@ -5,7 +5,6 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use racket_impact::diagnostic::{Diagnostic, Kind};
 use racket_impact::experiments::robustness;
 use racket_impact::params::keys;
 use racket_impact::study::sensitivity::Design;
@@ -50,22 +49,23 @@ pub fn long_about() -> String {
         keys::uncertain().filter(|s| !claims.contains(&s.key)).filter_map(|s| line(s.key, s.uncertainty)).collect();
     format!(
         "An impact's result fields under uncertain inputs, or every paper claim under the declared uncertainty\n\n\
+         Example: racket-impact uncertainty --x 0.06 --vary ks=uniform:2e4:6e4 --vary mb=normal:0.057:0.0005\n\n\
          Every simulate option sets the fixed parameters; each --vary KEY=DIST draws one input. The impact \
-         runs N (d + 2) times over a Saltelli design (scrambled Sobol' sequence, deterministic for --seed) on \
-         all cores, with the modal solver unless --solver is given or a hand grip or stiffening strings need \
-         fd. For every numeric result field: mean, sd, q05, q50, q95, and each input's first-order (Saltelli \
+         runs N (d + 2) times for d inputs, over a Saltelli design (scrambled Sobol' sequence, deterministic for \
+         --seed), on all cores, with the modal solver unless --solver is given or a hand grip or stiffening \
+         strings need fd.\n\n\
+         Output, for every numeric result field: mean, sd, q05, q50, q95, and each input's first-order (Saltelli \
          2010) and total (Jansen) Sobol' index with 95 % bootstrap intervals. --format json gives \
          {{\"samples\", \"seed\", \"inputs\", \"outputs\": {{field: {{\"mean\", \"sd\", \"q05\", \"q50\", \"q95\", \
-         \"first_order\", \"total_order\", \"first_order_ci\", \"total_order_ci\"}}}}}}. An input whose draws reach \
-         outside the usual range simulate warns with (a uniform's or log-uniform's bounds; a normal's mean +- 3 sd) \
-         earns one warning line. Example: racket-impact \
-         uncertainty --x 0.06 --vary ks=uniform:2e4:6e4 --vary mb=normal:0.057:0.0005 --format json\n\n\
+         \"first_order\", \"total_order\", \"first_order_ci\", \"total_order_ci\"}}}}}}.\n\n\
+         Warnings: an input whose draws reach outside the usual range simulate warns with (a uniform's or \
+         log-uniform's bounds; a normal's mean +- 3 sd) earns one warning line.\n\n\
          With --claims: each paper claim (golden/paper_claims.csv) under the uncertainties declared with the \
-         parameters, drawn as factors on the paper's values: {}\n\n\
+         parameters, drawn as factors on the paper's values:\n  {}\n\n\
          --vary KEY without a distribution draws the one declared with the parameter: those above, and for an \
-         oblique or spinning ball: {}",
-        declared.join("; "),
-        oblique.join("; ")
+         oblique or spinning ball:\n  {}",
+        declared.join("\n  "),
+        oblique.join("\n  ")
     )
 }
 
@@ -75,40 +75,10 @@ pub fn run(a: UncertaintyArgs) -> Result<()> {
         return run_claims(a);
     }
     let samples = a.samples.unwrap_or(DEFAULT_SAMPLES);
-    Design::new(samples, a.vary.len().max(1), 0)?; // the count first, before anything else
-    let sources = a.common.sources();
-    let from_config = racket_impact::study::config_file(sources.config.as_deref())?;
-    let given = sources.flags.clone().or(from_config.clone());
-    let mut unused_in_config = Vec::new();
-    for text in &a.vary {
-        let key = text.split_once('=').map_or(text.as_str(), |(k, _)| k).trim();
-        if sources.flags.given().contains(&key) {
-            return Err(Error::invalid("vary", text, format!("{key} is both fixed (--{key}) and varied; give one")));
-        }
-        if from_config.given().contains(&key) {
-            unused_in_config.push(key);
-        }
-    }
-    let mut noted = Vec::new();
-    if let (Some(path), false) = (&sources.config, unused_in_config.is_empty()) {
-        // a shared config file may set what this run draws: said once, not refused
-        let sentence = format!(
-            "config file {} sets {}, which --vary draws: the file's value is not used",
-            path.display(),
-            unused_in_config.join(", ")
-        );
-        noted.push(Diagnostic::new(Kind::NotUsed, "config", sentence));
-    }
-    let mut base = sources.params()?;
-    if let Some(solver) = racket_impact::study::sweep::default_solver(&given, &[]) {
-        base.numerics.solver = solver;
-    }
-    // with the solver the runs use: --dt is refused with the modal one
-    noted.extend(a.common.check_used([&base])?);
-    let mut study = Study::new(base, &a.vary, samples, a.seed.unwrap_or(0))?;
-    study.noted = noted;
-    if let Some(path) = &a.out {
-        racket_impact::render::io::check_output_dir("out", path)?;
+    let study = Study::from_sources(&a.common.sources(), &a.vary, samples, a.seed.unwrap_or(0))?;
+    match &a.out {
+        Some(path) => racket_impact::render::io::check_output_dir("out", path)?,
+        None => super::common::check_stdout()?,
     }
     let progress = Progress::new(study.design.runs() as u64);
     let outputs = study.run(|done| progress.update(done as u64))?;
@@ -141,8 +111,9 @@ fn run_claims(a: UncertaintyArgs) -> Result<()> {
     let seed = a.seed.unwrap_or(robustness::SEED);
     let inputs = robustness::inputs();
     let design = Design::new(samples, inputs.len(), seed)?;
-    if let Some(path) = &a.out {
-        racket_impact::render::io::check_output_dir("out", path)?;
+    match &a.out {
+        Some(path) => racket_impact::render::io::check_output_dir("out", path)?,
+        None => super::common::check_stdout()?,
     }
     let progress = Progress::new(design.runs() as u64);
     let rows = robustness::study(&racket_impact::experiments::Context::paper(), samples, seed, false, None, |done| {

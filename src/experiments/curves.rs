@@ -163,6 +163,31 @@ mod tests {
         }
     }
 
+    /// Every title is drawn at [`MIN_TITLE_SIZE`] or larger (a long one on two lines), never
+    /// shrunk to a size a reader squints at; and the spin and rebound-angle curves of the
+    /// tension figure differ in colour, each named in the legend, not only by where they sit.
+    #[test]
+    fn titles_are_readable_and_the_tension_figure_names_its_quantities() {
+        use crate::render::plot::{title_layout, MIN_TITLE_SIZE};
+        let ctx = Context::paper();
+        for exp in registry() {
+            let chart = (exp.chart)(&ctx, &committed_table(exp.id));
+            let (lines, size) = title_layout(&chart.title);
+            assert!(size >= MIN_TITLE_SIZE && lines.len() <= 2, "{}: {lines:?} at {size} px", exp.id);
+            assert_eq!(lines.join(" "), chart.title, "{}: the lines are the title", exp.id);
+        }
+        let t = registry().into_iter().find(|e| e.id == "oblique_tension").unwrap();
+        let chart = (t.chart)(&ctx, &committed_table(t.id));
+        let colours = |right: bool| -> Vec<usize> {
+            chart.curves.iter().filter(|c| (c.axis == Axis::Right) == right).map(|c| c.color).collect()
+        };
+        assert!(colours(false).iter().all(|c| !colours(true).contains(c)), "spin and angle curves share a colour");
+        for c in chart.curves.iter().filter(|c| !c.label.is_empty()) {
+            let quantity = if c.axis == Axis::Right { "rebound angle" } else { "spin" };
+            assert!(c.label.contains(quantity), "{}", c.label);
+        }
+    }
+
     /// Curves drawn against the right axis carry no unit in their label (the axis has it), so
     /// the legend never reads "tau (ms), right axis (ms)"-style doubles.
     #[test]
@@ -196,36 +221,66 @@ mod tests {
 
     /// Smallest colour difference (CIE76 delta E) between two curves of the same line style on
     /// one figure: the palette's orange and vermillion (33) or sky blue and blue (26) never
-    /// meet in one style.
+    /// meet in one style. A faint curve is a solid line in a lighter tint of its colour, and is
+    /// compared with the solid ones of other colours in that tint (a faint blue is 10 from sky
+    /// blue); with its own colour it is a twin, drawn faint on purpose.
     const MIN_DELTA_E: f64 = 40.0;
 
     #[test]
     fn colours_on_one_figure_are_distinguishable() {
         use crate::render::plot::PALETTE;
-        let de = |a: usize, b: usize| {
-            let (p, q) = (lab(PALETTE[a]), lab(PALETTE[b]));
+        let tint = |(r, g, b): (u8, u8, u8), frac: f64| {
+            let mix = |v: u8| (f64::from(v) + (255.0 - f64::from(v)) * frac).round() as u8;
+            (mix(r), mix(g), mix(b))
+        };
+        // the colour a curve is drawn in, as the figure draws it
+        let drawn = |c: &crate::render::plot::Curve| {
+            let rgb = PALETTE[c.color % PALETTE.len()];
+            if c.style == LineStyle::Faint {
+                tint(rgb, crate::render::plot::FAINT_TINT)
+            } else {
+                rgb
+            }
+        };
+        let de = |a: (u8, u8, u8), b: (u8, u8, u8)| {
+            let (p, q) = (lab(a), lab(b));
             ((p.0 - q.0).powi(2) + (p.1 - q.1).powi(2) + (p.2 - q.2).powi(2)).sqrt()
         };
-        assert!(de(1, 4) < MIN_DELTA_E, "the threshold separates orange from vermillion");
+        assert!(de(PALETTE[1], PALETTE[4]) < MIN_DELTA_E, "the threshold separates orange from vermillion");
+        assert!(
+            de(PALETTE[2], tint(PALETTE[5], crate::render::plot::FAINT_TINT)) < MIN_DELTA_E,
+            "and faint blue from sky blue"
+        );
         let ctx = Context::paper();
+        let mut failures = Vec::new();
         for exp in registry() {
             let chart = (exp.chart)(&ctx, &committed_table(exp.id));
-            for style in [LineStyle::Solid, LineStyle::Dashed] {
-                let mut colours: Vec<usize> =
-                    chart.curves.iter().filter(|c| c.style == style).map(|c| c.color % PALETTE.len()).collect();
+            // solid and faint curves are both solid lines; dashed ones are told apart by their dashes
+            for styles in [&[LineStyle::Solid, LineStyle::Faint][..], &[LineStyle::Dashed]] {
+                // (palette index, colour drawn)
+                let mut colours: Vec<(usize, (u8, u8, u8))> = chart
+                    .curves
+                    .iter()
+                    .filter(|c| styles.contains(&c.style))
+                    .map(|c| (c.color % PALETTE.len(), drawn(c)))
+                    .collect();
                 colours.sort_unstable();
                 colours.dedup();
-                for (i, &a) in colours.iter().enumerate() {
-                    for &b in &colours[i + 1..] {
-                        assert!(
-                            de(a, b) >= MIN_DELTA_E,
-                            "{}: {style:?} colours {a} and {b} differ by delta E {:.0}",
-                            exp.id,
-                            de(a, b)
-                        );
+                for (i, &(ia, a)) in colours.iter().enumerate() {
+                    // (a faint twin of a solid curve, the same quantity of another case, is
+                    // meant to look like it: Fig 9's EI 150 curves)
+                    for &(_, b) in colours[i + 1..].iter().filter(|(ib, _)| *ib != ia) {
+                        if de(a, b) < MIN_DELTA_E {
+                            failures.push(format!(
+                                "{}: {styles:?} colours {a:?} and {b:?} differ by delta E {:.0}",
+                                exp.id,
+                                de(a, b)
+                            ));
+                        }
                     }
                 }
             }
         }
+        assert!(failures.is_empty(), "{}", failures.join("\n"));
     }
 }

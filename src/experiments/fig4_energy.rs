@@ -115,7 +115,8 @@ fn chart(ctx: &Context, t: &Table) -> Chart {
             c("PE ball (incl. loss)", "pe_ball", 1),
             c("KE ball", "ke_ball", 0),
             styled(c("PE strings", "pe_string", 2), LineStyle::Dashed),
-            styled(c("total", "total", 0), LineStyle::Faint),
+            // (dashed vermillion: a faint black, dark grey, was hard to tell from KE ball's black)
+            styled(c("total", "total", 4), LineStyle::Dashed),
             paper_end_point(),
         ],
         bands: vec![],

@@ -92,33 +92,48 @@ fn run(ctx: &Context) -> Result<Table> {
     Ok(t)
 }
 
+/// The colours of the curves: spin at 30 and 45 deg in warm colours (orange, reddish purple),
+/// the rebound angle in cool ones (bluish green, blue), so that a spin curve is never taken for
+/// an angle curve ([`crate::render::plot::PALETTE`]).
+const SPIN_COLORS: [usize; 2] = [1, 6];
+/// See [`SPIN_COLORS`].
+const ANGLE_COLORS: [usize; 2] = [3, 5];
+
 fn chart(_: &Context, t: &Table) -> Chart {
-    // One colour per incidence angle, one line style per friction law; the spin and the rebound
-    // angle of a case share both and are told apart by height: the spin axis (left) puts its
-    // curves in the upper half, the rebound-angle axis (right) in the lower half, so four legend
-    // entries name all eight curves and none covers another.
-    let mut curves = Vec::new();
+    // One colour per quantity and incidence angle (spin warm, rebound angle cool), one line
+    // style per friction law (named in the title); the spin axis (left) puts its curves in the
+    // upper half, the rebound-angle axis (right) in the lower half, so none covers another. The
+    // four legend entries name the quantity and the angle of each colour (and the right axis).
+    // (the spin curves first, then the angle ones: the legend lists them by quantity)
+    let (mut curves, mut angles) = (Vec::new(), Vec::new());
     for (i, (law, _)) in LAWS.into_iter().enumerate() {
         let style = if i == 0 { LineStyle::Solid } else { LineStyle::Dashed };
         for (j, angle) in ANGLES.into_iter().enumerate() {
             let s = t.filter("mu_law", law).filter_num("angle_deg", angle);
             let x = col(&s, "tension_lb");
-            let mu = if law == "constant" { format!("mu {MU_60}") } else { format!("mu {MU_60} T / 60 lb") };
-            let color = [1, 5][j];
-            curves.push(styled(line(format!("{angle} deg, {mu}"), x.clone(), col(&s, "spin_out_rpm"), color), style));
-            curves.push(styled(on_right(line("", x, col(&s, "rebound_angle_deg"), color)), style));
+            let (spin, rebound) = if i == 0 {
+                // (the legend adds "right axis" to the rebound angle's)
+                (format!("spin at {angle} deg"), format!("rebound angle at {angle} deg"))
+            } else {
+                (String::new(), String::new())
+            };
+            curves.push(styled(line(spin, x.clone(), col(&s, "spin_out_rpm"), SPIN_COLORS[j]), style));
+            angles.push(styled(on_right(line(rebound, x, col(&s, "rebound_angle_deg"), ANGLE_COLORS[j])), style));
         }
     }
+    curves.append(&mut angles);
     let fit = |right: bool| {
         let cs = curves.iter().filter(move |c| (c.axis == crate::render::plot::Axis::Right) == right);
         fit_range(cs.flat_map(|c| c.y.clone()), false).unwrap_or((0.0, 1.0))
     };
     let ((s0, s1), (a0, a1)) = (fit(false), fit(true));
     Chart {
-        title: "Spin (upper) and rebound angle (lower) vs tension: 30 m/s, centre, azimuth 90 deg, no spin in".into(),
+        title: format!(
+            "Spin and rebound angle vs tension, solid mu {MU_60}, dashed mu {MU_60} T / 60 lb: 30 m/s, centre, azimuth 90 deg, no spin in"
+        ),
         x_label: "string tension (lb); ks = 4e4 N/m x T / 60 lb; kt 2e4 N/m".into(),
-        y_label: "outgoing spin (rpm), upper curves".into(),
-        y2_label: Some("rebound angle from the normal (deg), lower curves".into()),
+        y_label: "outgoing spin (rpm)".into(),
+        y2_label: Some("rebound angle from the normal (deg)".into()),
         x_log: false,
         x_range: Some((40.0, 70.0)),
         y_range: Some((s0 - 1.2 * (s1 - s0), s1)),

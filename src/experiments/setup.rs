@@ -265,6 +265,16 @@ impl Context {
         Context { racket, ball, ..Context::paper() }
     }
 
+    /// The context of the racket `arg` (a file or preset, as `figures --racket` takes it),
+    /// fitted at the paper's segment count and named by its `name`, else its file stem.
+    pub fn for_racket(arg: &str) -> Result<Self> {
+        let spec = crate::racket::load(arg)?;
+        let fitted = spec.to_racket(Params::paper().numerics.segments)?;
+        let stem = std::path::Path::new(arg).file_stem().and_then(|s| s.to_str()).unwrap_or("custom");
+        Ok(Context::with_racket(fitted.racket, fitted.ball)
+            .named(spec.name.clone().unwrap_or_else(|| stem.to_string())))
+    }
+
     /// The same context naming its racket (not the paper's).
     pub fn named(mut self, name: impl Into<String>) -> Self {
         self.racket_name = Some(name.into());

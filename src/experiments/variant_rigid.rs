@@ -44,7 +44,8 @@ fn chart(_: &Context, t: &Table) -> Chart {
             line("e_A, flexible beam (the paper)", x.clone(), col(t, "e_a_beam"), 0),
             styled(line("e_A, rigid racket", x.clone(), col(t, "e_a_rigid"), 4), LineStyle::Dashed),
             line("f(vib), beam", x.clone(), col(t, "f_vib_beam"), 2),
-            on_right(styled(line("tau beam", x.clone(), scaled(col(t, "tau_s_beam"), 1e3), 5), LineStyle::Faint)),
+            // (not blue: f(vib) is sky blue, and a faint blue is hard to tell from it)
+            on_right(styled(line("tau beam", x.clone(), scaled(col(t, "tau_s_beam"), 1e3), 3), LineStyle::Faint)),
             on_right(styled(line("tau rigid", x, scaled(col(t, "tau_s_rigid"), 1e3), 6), LineStyle::Faint)),
         ],
         bands: vec![],

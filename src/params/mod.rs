@@ -49,6 +49,7 @@ pub(crate) use overrides::{parse_toml, read_file};
 pub use physical::{
     ellipse_half_width, Ball, Impact, Profile, Racket, Strings, DEFAULT_FACE_LENGTH, STIFFNESS_REL, TILT_MAX,
 };
+pub(crate) use variants::tangential_mechanisms;
 pub use variants::{Frame, Grip, StringLaw, StringName, TangentialLaw, Variants};
 
 /// Calibration of SPEC.md section 3: `k_s` is proportional to the tension, 60 lb = 4e4 N/m (ours,

@@ -5,7 +5,7 @@
 
 use std::sync::OnceLock;
 
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 
 use super::spec::FlagValue;
 use super::{Oblique, StringName, TangentialLaw};
@@ -18,7 +18,7 @@ const TABLE: &str = include_str!("../../data/strings/strings.csv");
 const TABLE_FILE: &str = "data/strings/strings.csv";
 
 /// Where a string's friction coefficients come from.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
 pub enum FrictionFrom {
     /// Its own row of the TWU string database.
     #[serde(rename = "entry")]
@@ -29,8 +29,8 @@ pub enum FrictionFrom {
     MaterialMedian,
 }
 
-/// One string of the table.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+/// One string of the table (serialised with the table's column names).
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
 pub struct StringEntry {
     /// The name `--string` takes.
     pub id: String,

@@ -63,11 +63,15 @@ impl Dist {
             return Err(Error::invalid(field, text, shape));
         }
         let number = |s: &str, what: &str| -> Result<f64> {
-            s.trim()
-                .parse::<f64>()
-                .ok()
-                .filter(|v| v.is_finite())
-                .ok_or_else(|| Error::invalid(field, text, format!("{what} must be a finite number ({shape})")))
+            // (as a flag's value: a number too small or too large for an f64 is refused as
+            // written, not taken as 0 or inf)
+            match crate::params::spec::parse_number(s) {
+                Ok(v) if v.is_finite() => Ok(v),
+                Err(why) if s.trim().parse::<f64>().is_ok() => {
+                    Err(Error::invalid(field, text, format!("{what} {why} ({shape})")))
+                }
+                _ => Err(Error::invalid(field, text, format!("{what} must be a finite number ({shape})"))),
+            }
         };
         let dist = match parts[0] {
             "uniform" => Dist::Uniform { lo: number(parts[1], "LO")?, hi: number(parts[2], "HI")? },
@@ -208,5 +212,8 @@ mod tests {
         assert!(msg("uniform:1").contains("uniform:LO:HI"));
         assert!(msg("uniform:a:2").contains("LO must be a finite number"));
         assert!(msg("uniform:1:inf").contains("HI must be a finite number"));
+        // as a flag's value: too small or too large for an f64 is refused as written
+        assert!(msg("uniform:1e-400:1").contains("LO is too small to represent"), "{}", msg("uniform:1e-400:1"));
+        assert!(msg("normal:1:1e400").contains("SD is too large to represent"));
     }
 }

@@ -62,21 +62,46 @@ choice_enum! {
     }
 }
 
-choice_enum! {
-    /// The tangential contact law of an oblique or spinning impact (SPEC.md section 6): the
-    /// elastic grip-slip law, one mechanism of [`crate::model::tangential`] on top of it, or all four.
-    /// Default `loss`: of the laws compared with measurement (`validation_spin`) the one closer
-    /// than `elastic` on the spin table (both angle readings), the hand-held ratio and the
-    /// grip-stop angle, and a tie on the tour forehand (REPORT.md, "Against measurement").
-    TangentialLaw (default Loss) {
-        Elastic = "elastic": "The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)",
-        Loss = "loss": "Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex; the default)",
-        Offset = "offset": "Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin",
-        Bed = "bed": "Elastic plus strings that slide sideways over each other against string-to-string friction and snap back",
-        Radius = "radius": "Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)",
-        Physical = "physical": "All four mechanisms",
-    }
+/// The registry of the tangential mechanisms (`crate::model::tangential`), one line each, in
+/// the order of their `--tangential` choices:
+/// `Variant = "name" module::Type: "help",` (the type in its own file of `model/tangential/`;
+/// the parameters that size it say so in their declarations, `used In(&TANGENTIAL, ..)` in
+/// [`keys`]). It hands the list to the macro
+/// `$then`: the law's choices here ([`TangentialLaw`]), the composition of the combined law in
+/// `model/tangential/combined.rs`.
+macro_rules! tangential_mechanisms {
+    ($then:ident) => {
+        $then! {
+            Loss = "loss" loss::Loss: "Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex; the default)",
+            Offset = "offset" offset::Offset: "Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin",
+            Bed = "bed" bed::Bed: "Elastic plus strings that slide sideways over each other against string-to-string friction and snap back",
+            Radius = "radius" radius::Radius: "Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)",
+        }
+    };
 }
+pub(crate) use tangential_mechanisms;
+
+/// The tangential laws from the registry of mechanisms ([`tangential_mechanisms`]):
+/// the elastic law, each mechanism alone on top of it, and all of them.
+macro_rules! tangential_law {
+    ($($variant:ident = $key:literal $module:ident::$ty:ident: $help:literal,)+) => {
+        choice_enum! {
+            /// The tangential contact law of an oblique or spinning impact (SPEC.md section 6): the
+            /// elastic grip-slip law, one mechanism of [`crate::model::tangential`] on top of it, or all of them.
+            /// Default `loss`: of the laws compared with measurement (`validation_spin`) the one closer
+            /// than `elastic` on the spin table (both angle readings), the hand-held ratio and the
+            /// grip-stop angle, and a tie on the tour forehand (REPORT.md, "Against measurement").
+            TangentialLaw (default Loss) {
+                Elastic = "elastic": "The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)",
+                $($variant = $key: $help,)+
+                Physical = "physical": "All four mechanisms",
+            }
+        }
+
+    };
+}
+
+tangential_mechanisms!(tangential_law);
 
 choice_enum! {
     /// The string in the racket, from the string table (data/strings, [`super::strings`]): its
@@ -98,6 +123,7 @@ impl TangentialLaw {
     pub fn has(self, m: TangentialLaw) -> bool {
         self == m || (self == TangentialLaw::Physical && m != TangentialLaw::Elastic)
     }
+
 }
 
 choice_enum! {

@@ -118,7 +118,7 @@ pub mod spec;
 mod tests;
 
 pub use fit::{resolve, Fitted};
-pub use presets::{load, preset, preset_names};
+pub use presets::{load, preset, preset_names, presets_table};
 pub use report::{density_extremes, density_warning, Check, FitReport};
 pub use spec::{
     ranges, BallSpec, RacketSpec, BALANCE_POINT_CM, DEFAULT_HANDLE_LENGTH_CM, DEFAULT_HEAD_ASPECT,

@@ -28,6 +28,43 @@ pub fn preset(name: &str) -> Option<RacketSpec> {
     toml::from_str(text).ok()
 }
 
+/// The presets fitted for `segments` segments, one row each: name, length, mass, balance,
+/// swingweight, twistweight, first frequency, string-bed stiffness and whether the beam is
+/// fitted to a profile or uniform (`racket --list`).
+pub fn presets_table(segments: usize) -> Result<crate::render::table::Table> {
+    use crate::render::table::{Table, Value};
+    let mut table = Table::new(
+        "presets",
+        &[
+            "name",
+            "length_cm",
+            "mass_g",
+            "balance_cm",
+            "swingweight_kg_cm2",
+            "twistweight_kg_cm2",
+            "f1_hz",
+            "ks_n_per_m",
+            "profile",
+        ],
+    );
+    for name in preset_names() {
+        let fitted = load(name)?.to_racket(segments)?;
+        let (r, rep) = (&fitted.racket, &fitted.report);
+        table.push(vec![
+            Value::Text(name.to_string()),
+            Value::Num(100.0 * r.length),
+            Value::Num(1e3 * r.mass),
+            Value::Num(rep.balance_cm.model),
+            Value::Num(rep.swingweight_kg_cm2.model),
+            Value::Num(rep.twistweight_kg_cm2.model),
+            Value::Num(rep.frequency_hz.model),
+            Value::Num(fitted.strings.ks),
+            Value::Text(if r.profile.is_none() { "uniform" } else { "fitted" }.to_string()),
+        ])?;
+    }
+    Ok(table)
+}
+
 /// A preset by name, else a racket file at the path `arg`. Neither gives an error listing the
 /// presets.
 pub fn load(arg: &str) -> Result<RacketSpec> {

@@ -351,11 +351,36 @@ pub fn check_output_dir(field: &'static str, path: &Path) -> Result<()> {
         other => other.to_string(),
     };
     let target = resolve(path).map_err(|e| refuse(message(e)))?;
-    if let Resolved::File(_) = target {
+    match &target {
         // a probe of the same kind as the real temporary file, removed at once
-        temp_for(&target, path, "").map_err(|e| refuse(message(e)))?;
+        Resolved::File(_) => {
+            temp_for(&target, path, "").map_err(|e| refuse(message(e)))?;
+        }
+        Resolved::Through(device) => probe_device(device).map_err(|e| refuse(format!("cannot be written: {e}")))?,
     }
     Ok(())
+}
+
+/// Whether a character device can be written, without writing to it: opened for writing and
+/// given an empty write, which writes nothing and fails where every write would (`/dev/full`:
+/// no space left; a read-only device). A FIFO is not probed (opening it would block until a
+/// reader comes, and closing it would end that reader's input), nor a socket.
+fn probe_device(device: &Path) -> std::io::Result<()> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if !fs::metadata(device)?.file_type().is_char_device() {
+            return Ok(());
+        }
+        let mut file = OpenOptions::new().write(true).open(device)?;
+        // (`write`, not `write_all`: an empty `write_all` never calls the system)
+        file.write(&[]).map(|_| ())
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = device;
+        Ok(())
+    }
 }
 
 /// A file written in pieces and published atomically: the bytes go to a hidden temporary file
@@ -465,6 +490,16 @@ mod tests {
         staged.bytes(&a, b"new a").unwrap();
         staged.bytes(&b, b"new b").unwrap();
         (dir, a, b, staged)
+    }
+
+    /// A device that fails every write (`/dev/full`) is refused by the check every command
+    /// makes before its work; one that takes writes (`/dev/null`) passes, and is not written.
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn a_full_device_is_refused_before_any_work() {
+        let msg = check_output_dir("out", Path::new("/dev/full")).unwrap_err().to_string();
+        assert!(msg.starts_with("invalid out = /dev/full: cannot be written: No space left"), "{msg}");
+        assert!(check_output_dir("out", Path::new("/dev/null")).is_ok());
     }
 
     fn entries(dir: &Path) -> Vec<String> {

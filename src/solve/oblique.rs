@@ -85,7 +85,7 @@ impl Follower {
         let ke = |v: f64, w: f64| 0.5 * mb * v * v + 0.5 * inertia * w * w;
         let e_in = ke(s.v_n, 0.0) + ke(s.v_t, s.omega);
         let losses = match out.mechanism_losses {
-            Some(m) => out.friction_loss + m.damping + m.bed + m.rolling,
+            Some(m) => out.friction_loss + m.damping + m.string_sliding + m.rolling + m.ledger_only,
             None => out.friction_loss,
         };
         let ledger = ke(s.v_t, s.omega) - (ke(out.v_t, out.omega) + out.inplane + losses + out.spring_energy);
@@ -102,7 +102,7 @@ impl Follower {
         r.f_racket_inplane = out.inplane / e_in;
         if let Some(m) = out.mechanism_losses {
             r.f_tangential_damping = m.damping / e_in;
-            r.f_string_sliding = m.bed / e_in;
+            r.f_string_sliding = m.string_sliding / e_in;
             r.f_rolling = m.rolling / e_in;
         }
         r.energy_error = r.energy_error.max(ledger.abs() / e_in);

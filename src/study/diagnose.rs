@@ -69,6 +69,15 @@ pub fn parameters<'a>(params: impl IntoIterator<Item = &'a Params>, skip: &[&str
     out
 }
 
+/// The diagnostics the impact commands give for a fitted racket (unusual values, frequency,
+/// density), at the face centre with the default numerics on the fit's `segments` segments.
+pub fn racket(fitted: &crate::racket::Fitted, segments: usize) -> Vec<Diagnostic> {
+    let numerics = crate::params::Numerics { segments, ..Default::default() };
+    let mut p = fitted.params(crate::params::Impact::default(), numerics);
+    keys::face_centre_impact(&mut p);
+    parameters([&p], &[])
+}
+
 /// A twist at the end of an impact beyond the small-angle model (Eq 7).
 pub fn twist(theta_end_deg: f64) -> Option<Diagnostic> {
     (theta_end_deg.abs() > keys::SMALL_TWIST_DEG).then(|| {

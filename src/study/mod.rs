@@ -2,10 +2,11 @@
 //! [`sweep`] (the cartesian product of any parameters, streamed), [`map`] (one impact per
 //! point of the string face) and [`speed`] (outgoing ball speeds for a swing, compared across
 //! tensions or rackets), [`sensitivity`] (Sobol'/Saltelli uncertainty propagation and global
-//! sensitivity for any model). [`Sources`] resolves a command's parameters from a racket, a config
+//! sensitivity for any model), [`impact`] (one impact as `simulate` runs it). [`Sources`] resolves a command's parameters from a racket, a config
 //! file and the flags.
 
 pub mod diagnose;
+pub mod impact;
 pub mod map;
 pub mod measured;
 pub mod sensitivity;

@@ -19,6 +19,9 @@
 //! - `mu_ss`: the string-to-string friction coefficient of the string in use (TWU string
 //!   database, data/strings).
 
+use super::elastic::GripSlip;
+use super::mechanism::{At, Ball, Interface, LossField, Mechanism, Pace, Path, Sizes, SUBSTEP};
+
 /// The lateral string bed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Bed {
@@ -38,12 +41,127 @@ impl Bed {
     }
 
     /// The friction limit, N, at the normal force `f`.
+    #[inline]
     pub fn limit(&self, f: f64) -> f64 {
         self.mu_ss * self.share * f.max(0.0)
     }
 
     /// Its rate, N/s, at the normal force rate `df`.
+    #[inline]
     pub fn limit_rate(&self, df: f64) -> f64 {
         self.mu_ss * self.share * df
+    }
+}
+
+/// Stick or slide of the moving strings over the others.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Strings {
+    /// Held by the string-to-string friction: the bed does not move.
+    #[default]
+    Stuck,
+    /// Sliding, in the direction of the sign (+1 or -1).
+    Slide(f64),
+}
+
+/// The lateral deflection of the strings, m, and the energy lost to their sliding, J.
+const Q: usize = 0;
+
+impl Mechanism for Bed {
+    type Mode = Strings;
+    type Drive = ();
+    /// The strings' lateral deflection `q`, then the energy their sliding dissipates.
+    const SLOTS: usize = 2;
+    const GUARDED: bool = true;
+    const SERIES: bool = true;
+    const LOSS: Option<LossField> = Some(LossField::StringSliding);
+
+    /// The bed of the impact's string plane (`k_s`) and string-to-string friction.
+    fn of(sizes: &Sizes) -> Bed {
+        Bed::of(sizes.params.strings.ks, sizes.mu_ss)
+    }
+
+    /// The strings slide at once if the ball slides and its friction can push them.
+    fn first_mode(&self, ball: Ball, _: f64, base: &GripSlip) -> Strings {
+        match ball {
+            Ball::Slide(sign) if base.mu > self.mu_ss * self.share => Strings::Slide(sign),
+            _ => Strings::Stuck,
+        }
+    }
+
+    /// While the strings slide: the lateral spring `k_lat q` and the slider's limit carry the
+    /// force, in series with the ball's spring (and its damper).
+    #[inline]
+    fn path(&self, mode: Strings, own: &[f64], i: &Interface) -> Option<Path> {
+        let Strings::Slide(sb) = mode else { return None };
+        let q = own[Q];
+        Some(match i.ball {
+            Ball::Grip => {
+                let p = self.k_lat * q + sb * self.limit(i.f);
+                let sdot = if i.c > 0.0 {
+                    (p - i.kt * i.s) / i.c
+                } else {
+                    (self.k_lat * i.w + sb * self.limit_rate(i.df)) / (i.kt + self.k_lat)
+                };
+                Path { p: if i.c > 0.0 { p } else { i.kt * i.s }, sdot, rest: i.w - sdot }
+            }
+            Ball::Slide(sign) => {
+                let Path { p, sdot, .. } = i.rigid();
+                Path { p, sdot, rest: (sign * i.mu * i.df - sb * self.limit_rate(i.df)) / self.k_lat }
+            }
+        })
+    }
+
+    /// `dq/dt`, and the slider's work `limit dq/dt` while the strings slide.
+    #[inline]
+    fn rates(&self, mode: Strings, _: &(), at: &At, _: &[f64], out: &mut [f64]) {
+        out[Q] = at.path.rest;
+        out[1] = match mode {
+            Strings::Slide(sb) => sb * self.limit(at.drive.f) * at.path.rest,
+            Strings::Stuck => 0.0,
+        };
+    }
+
+    /// Stuck while the force on the slider stays within its limit; sliding while they move.
+    #[inline]
+    fn guard(&self, mode: Strings, _: &(), at: &At, own: &[f64]) -> f64 {
+        match mode {
+            Strings::Stuck => self.limit(at.drive.f) - (at.path.p - self.k_lat * own[Q]).abs(),
+            Strings::Slide(sb) => sb * at.path.rest,
+        }
+    }
+
+    fn switch(&self, mode: Strings, at: &At, own: &[f64]) -> Strings {
+        match mode {
+            Strings::Stuck => Strings::Slide((at.path.p - self.k_lat * own[Q]).signum()),
+            Strings::Slide(_) => Strings::Stuck,
+        }
+    }
+
+    /// While the strings slide under a gripping ball: the relaxation `(k_t + k_lat) / c` of
+    /// the two springs through the damper.
+    #[inline]
+    fn substep(&self, mode: Strings, ball: Ball, pace: &Pace) -> Option<f64> {
+        matches!((mode, ball), (Strings::Slide(_), Ball::Grip)).then(|| self.grip_slide_substep(pace))
+    }
+
+    fn shortest_substep(&self, pace: &Pace) -> f64 {
+        self.grip_slide_substep(pace)
+    }
+
+    /// `k_lat q^2 / 2`.
+    fn spring_energy(&self, own: &[f64]) -> f64 {
+        0.5 * self.k_lat * own[Q] * own[Q]
+    }
+}
+
+impl Bed {
+    /// The longest substep while the strings slide under a gripping ball, s.
+    #[inline]
+    fn grip_slide_substep(&self, pace: &Pace) -> f64 {
+        if pace.c > 0.0 {
+            pace.oscillation.min(SUBSTEP * pace.c / (pace.kt + self.k_lat))
+        } else {
+            pace.oscillation
+        }
     }
 }

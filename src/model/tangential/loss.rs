@@ -13,6 +13,8 @@
 //! that grips for that half cycle leaves with exactly `e_x` (tested); a contact that ends
 //! earlier or later returns a little more or less.
 
+use super::mechanism::{At, LossField, Mechanism, Sizes};
+
 /// The damping ratio of the tangential grip oscillation that returns the tangential
 /// restitution `e_x` (0 < e_x < 1) over one half cycle.
 pub fn damping_ratio(e_x: f64) -> f64 {
@@ -22,6 +24,7 @@ pub fn damping_ratio(e_x: f64) -> f64 {
 
 /// The damper `c`, N s/m, of damping ratio `zeta` on a spring `kt` (N/m) carrying the reduced
 /// mass `1 / inv_red` (kg).
+#[inline]
 pub fn damper(zeta: f64, kt: f64, inv_red: f64) -> f64 {
     2.0 * zeta * (kt / inv_red).sqrt()
 }
@@ -29,6 +32,38 @@ pub fn damper(zeta: f64, kt: f64, inv_red: f64) -> f64 {
 /// The length of that half cycle, s: `pi / (w0 sqrt(1 - zeta^2))`, `w0 = sqrt(k_t / m_red)`.
 pub fn half_period(zeta: f64, kt: f64, inv_red: f64) -> f64 {
     std::f64::consts::PI / ((kt * inv_red).sqrt() * (1.0 - zeta * zeta).sqrt())
+}
+
+/// The mechanism: the damper on the ball's tangential spring.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Loss {
+    /// The damper, N s/m.
+    pub c: f64,
+}
+
+impl Mechanism for Loss {
+    type Mode = ();
+    type Drive = ();
+    /// The energy the damper dissipates.
+    const SLOTS: usize = 1;
+    const LOSS: Option<LossField> = Some(LossField::Damping);
+
+    /// The damper that returns `ball-ex` over half a grip cycle.
+    fn of(sizes: &Sizes) -> Loss {
+        let o = &sizes.params.oblique;
+        Loss { c: damper(damping_ratio(o.ball_ex), sizes.base.kt, sizes.inv_red()) }
+    }
+
+    #[inline]
+    fn damper(&self) -> f64 {
+        self.c
+    }
+
+    /// `c (ds/dt)^2`.
+    #[inline]
+    fn rates(&self, _: (), _: &(), at: &At, _: &[f64], out: &mut [f64]) {
+        out[0] = self.c * at.path.sdot * at.path.sdot;
+    }
 }
 
 #[cfg(test)]

@@ -9,8 +9,9 @@
 //! setup.rs     Setup: the law the parameters select; Contact: the law in progress (one
 //!              variant per law); Separation: what it leaves when the ball leaves
 //! elastic.rs   the elastic grip-slip law (`--tangential elastic`), in closed form
-//! combined.rs  the combined law: the elastic law plus the switchable mechanisms below, as a
-//!              switched ODE in (v, omega, u, s, q) with the energies each mechanism dissipates
+//! mechanism.rs the one trait a mechanism implements: its terms, state, mode and energies
+//! combined.rs  the combined law: the elastic law plus the mechanisms of the registry
+//!              (params), composed as a switched ODE in (v, omega, u, s) and their slots
 //! stepper.rs   the generic stepper of a switched ODE: Runge-Kutta substeps within each piece,
 //!              every mode switch located on its substep (the combined law is its one user)
 //! loss.rs      mechanism `loss`: a damper in parallel with the ball's tangential spring,
@@ -25,31 +26,35 @@
 //! (`tests/tangential.rs`).
 //!
 //! # Adding a mechanism
-//! What a new mechanism adds and touches:
-//! - **its own file** here: the physics, the source of every size in it (a derivation or a
-//!   measurement, as in `loss.rs`), and its constitutive helper (a force, torque or limit);
-//! - **the law's variant**: a `TangentialLaw` variant in `params` (its `--tangential` name;
-//!   `physical` then includes it) with its doc;
-//! - **one registration line** in `Setup::of`: the field of [`CombinedLaw`] that the variant
-//!   turns on (its neutral value, e.g. `0.0` or `None`, is the mechanism off);
-//! - **its term in the combined law's kinematics** (`Combined::kin` and the rates in
-//!   `combined.rs`): the mechanisms couple through the one contact force `P` and the slip, so
-//!   a new force path cannot be summed in from outside; and, if it has a mode of its own (as
-//!   `bed` has stick and slide), a guard and its switch there. The stepper, the set-up of the
-//!   other mechanisms, the solvers and the result's ledger are untouched; a new energy loss
-//!   adds a state slot and its field in `MechanismLosses` (setup.rs).
+//! A mechanism is its own file here and one line in the registry, `tangential_mechanisms!` (in
+//! `params/variants.rs`, where the `--tangential` choices are declared):
+//! - **its file**: the physics, the source of every size in it (a derivation or a
+//!   measurement, as in `loss.rs`), and its `impl Mechanism` ([`mechanism::Mechanism`]): the
+//!   terms it adds to the combined law (a lever, a damper, a compliance in series, a torque),
+//!   its state slots and their rates, its mode with its guard and switch, its springs' energy
+//!   and where its loss is reported; every term it leaves out is neutral;
+//! - **its line** in the registry: its `TangentialLaw` variant, its `--tangential` name, its
+//!   type and its help line. The variant, the choice on the command line, `physical` (every
+//!   mechanism), its state and its guard in the combined law all follow from it (and its
+//!   `pub mod` line here, which Rust needs for any file). A parameter it reads says so in its
+//!   own declaration (`used In(&TANGENTIAL, ...)` in `params/keys.rs`).
+//!
+//! The combined law, the stepper, the solvers and the result's ledger are untouched. A loss with
+//! no result field of its own ([`mechanism::LossField::LedgerOnly`]) is checked in the energy
+//! ledger; a result field for it is a change of the output (`solve/outcome.rs`, CHANGELOG).
 
 pub mod bed;
 pub mod combined;
 pub mod elastic;
 pub mod loss;
+pub mod mechanism;
 pub mod offset;
 pub mod piece;
 pub mod radius;
 mod setup;
 mod stepper;
 
-pub use combined::{Combined, CombinedLaw};
+pub use combined::{Combined, CombinedLaw, Losses, Mechanisms};
 pub use elastic::{Elastic, GripSlip};
 pub use piece::ForcePiece;
 pub(crate) use setup::Contact;

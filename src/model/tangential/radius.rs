@@ -19,6 +19,8 @@
 //! still (SPEC.md section 6). The paper's `k1` = 3e4 N/m would give 9.7 mm on concrete at the
 //! model's force. The compression is capped at `R` (the lever never turns negative).
 
+use super::mechanism::{Drive, Mechanism, Sizes};
+
 /// The ball's compression law, from the normal force alone.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Compression {
@@ -33,11 +35,13 @@ pub struct Compression {
 impl Compression {
     /// The radius of the contact circle, m, at the compression `delta` (the offset's arm,
     /// [`super::offset`]).
+    #[inline]
     pub fn contact_radius(&self, delta: f64) -> f64 {
         (2.0 * self.radius * delta - delta * delta).max(0.0).sqrt()
     }
 
     /// The compression, m, at the force `f` (N) after the largest force so far `f_max`.
+    #[inline]
     pub fn delta(&self, f: f64, f_max: f64) -> f64 {
         let f = f.max(0.0);
         let d = if f >= f_max || f_max <= 0.0 {
@@ -47,6 +51,27 @@ impl Compression {
             y0 * (f / f_max).powf(1.0 / self.p)
         };
         d.min(self.radius)
+    }
+}
+
+/// The mechanism: the friction's lever shortened by the ball's compression.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Radius;
+
+impl Mechanism for Radius {
+    type Mode = ();
+    type Drive = ();
+    const COMPRESSION: bool = true;
+    const LEVER: bool = true;
+
+    fn of(_: &Sizes) -> Radius {
+        Radius
+    }
+
+    /// `R - delta`.
+    #[inline]
+    fn lever(&self, lever: f64, d: &Drive) -> f64 {
+        lever - d.delta
     }
 }
 

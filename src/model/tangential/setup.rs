@@ -1,12 +1,11 @@
 //! One impact's tangential side: the law the parameters select ([`Setup::of`]), its contact in
 //! progress ([`Contact`]), and what that contact leaves at separation ([`Separation`]).
 
-use super::bed::Bed;
-use super::combined::{Combined, CombinedLaw};
+use super::combined::{Combined, CombinedLaw, Losses};
 use super::elastic::{Elastic, GripSlip};
+use super::mechanism::Sizes;
 use super::piece::ForcePiece;
 use super::radius::Compression;
-use super::{loss, offset};
 use crate::model::beam::Beam;
 use crate::params::{Params, TangentialLaw};
 
@@ -50,21 +49,10 @@ impl Setup {
             inertia: o.ball_inertia_factor * mb * o.ball_radius * o.ball_radius,
             racket_inv_mass: 1.0 / beam.total_mass + arm * arm / (beam.i_cm + p.racket.ix),
         };
-        // each mechanism's registration: its variant turns on its part of the combined law
+        // the mechanisms of the law, each sized from the parameters (the registry: `tangential_mechanisms!`)
         let combined = (o.tangential != TangentialLaw::Elastic).then(|| {
-            let has = |m| o.tangential.has(m);
-            let mut g = CombinedLaw {
-                base: law,
-                damping: 0.0,
-                offset_loss: if has(TangentialLaw::Offset) { offset::loss_fraction(p.ball.p) } else { 0.0 },
-                bed: has(TangentialLaw::Bed).then(|| Bed::of(p.strings.ks, mu_ss)),
-                shrink: has(TangentialLaw::Radius),
-                compression: Compression { k: o.ball_kdyn, p: p.ball.p, radius: law.radius },
-            };
-            if has(TangentialLaw::Loss) {
-                g.damping = loss::damper(loss::damping_ratio(o.ball_ex), law.kt, g.inv_red());
-            }
-            g
+            let compression = Compression { k: o.ball_kdyn, p: p.ball.p, radius: law.radius };
+            CombinedLaw::of(o.tangential, &Sizes { params: p, base: law, mu_ss, compression })
         });
         Some(Setup { law, combined, v_n: p.impact.v1 * cos_a, v_t: p.impact.v1 * sin_a, omega: o.spin_rpm * RPM })
     }
@@ -115,11 +103,7 @@ impl Setup {
                     inplane: if rim > 0.0 { 0.5 * u * u / rim } else { 0.0 },
                     slip: v_t - law.radius * omega - u,
                     friction_loss: c.friction_loss(),
-                    mechanism_losses: Some(MechanismLosses {
-                        damping: c.damping_loss(),
-                        bed: c.bed_loss(),
-                        rolling: c.rolling_loss(),
-                    }),
+                    mechanism_losses: Some(c.losses()),
                     spring_energy: c.spring_energy(),
                     slide_time: c.slide_time,
                     chatter: c.chatter,
@@ -134,8 +118,11 @@ impl Setup {
 /// Runge-Kutta substeps, far beyond any ball (the paper's ball at 30 degrees: some fifty).
 pub const MAX_TANGENTIAL_STEPS: f64 = 1.0e8;
 
-/// The tangential contact in progress, under the elastic law or the combined one.
+/// The tangential contact in progress, under the elastic law or the combined one. (One per
+/// impact, held on the stack while the solver steps: boxing the larger variant would add an
+/// allocation to every impact and an indirection to every step, for no saving.)
 #[derive(Debug, Clone, Copy)]
+#[allow(clippy::large_enum_variant)]
 pub(crate) enum Contact {
     /// The elastic grip-slip law (closed form).
     Elastic(Elastic),
@@ -169,7 +156,7 @@ pub(crate) struct Separation {
     /// Energy lost to the ball sliding on the strings, J.
     pub friction_loss: f64,
     /// The other mechanisms' losses (`None` under the elastic law, which has none).
-    pub mechanism_losses: Option<MechanismLosses>,
+    pub mechanism_losses: Option<Losses>,
     /// Energy left in the tangential springs, J.
     pub spring_energy: f64,
     /// Time spent sliding, s.
@@ -177,15 +164,4 @@ pub(crate) struct Separation {
     /// Whether the grip/slide switch chattered at an edge until a force piece reached its cap
     /// (the combined law only; SPEC.md section 6, "Known limit").
     pub chatter: bool,
-}
-
-/// The energies the combined law's mechanisms dissipate, J.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct MechanismLosses {
-    /// In the ball's tangential damper (`loss`).
-    pub damping: f64,
-    /// To the strings sliding over each other (`bed`).
-    pub bed: f64,
-    /// To the offset torque (`offset`).
-    pub rolling: f64,
 }

@@ -15,13 +15,13 @@ use plotters::style::{FontStyle, ShapeStyle};
 use super::clip::Bounds;
 use super::legend::{place_legend, Rect, ToPixel};
 use super::plan::Plan;
-use super::{font, msg, palette, tick_label, tint, title_font, Axis, Chart, LineStyle};
+use super::{font, msg, palette, tick_label, tint, title_font, title_layout, Axis, Chart, LineStyle};
 use super::{AXIS_DESC_SIZE, BAND_ALPHA, BAND_COLOR, CLIPPED_NOTE, LEGEND_GLYPH, TICK_SIZE, VLINE_COLOR, VLINE_DASHES};
 use crate::numfmt::fmt_sig;
 
 /// How much white a [`LineStyle::Faint`] curve's colour is mixed with: light enough to sit
 /// behind the main curves, dark enough (with 2 px) to read.
-pub(super) const FAINT_TINT: f64 = 0.3;
+pub const FAINT_TINT: f64 = 0.3;
 
 /// Draw a series on the primary or the secondary coordinates.
 macro_rules! draw_on {
@@ -57,12 +57,25 @@ where
         let (w, _) = root.estimate_text_size(name, &y_named).map_err(msg)?;
         y_area = y_area.max(w as i32 + NAMED_GAP + AXIS_DESC_SIZE as i32 + 24);
     }
-    let mut builder = ChartBuilder::on(root);
-    builder
-        .caption(&chart.title, title_font(root, &chart.title)?)
-        .margin(20)
-        .x_label_area_size(70)
-        .y_label_area_size(y_area);
+    // a title that needs two lines takes them from the top of the figure (plotters' caption
+    // is one line); one line is the chart's caption
+    let (lines, title_size) = title_layout(&chart.title);
+    let area = match &lines[..] {
+        [_, _, ..] => {
+            let style = font(title_size, FontStyle::Bold);
+            let mut area = root.margin(20, 20, 20, 20);
+            for line in &lines {
+                area = area.titled(line, style.clone()).map_err(msg)?;
+            }
+            area
+        }
+        _ => root.clone(),
+    };
+    let mut builder = ChartBuilder::on(&area);
+    if lines.len() == 1 {
+        builder.caption(&chart.title, title_font(root, &chart.title)?).margin(20);
+    }
+    builder.x_label_area_size(70).y_label_area_size(y_area);
     if has_y2 {
         builder.right_y_label_area_size(110);
     }

@@ -31,6 +31,7 @@ use plotters::style::{register_font, FontDesc, FontFamily, FontStyle};
 use crate::error::{Error, Result};
 use crate::numfmt::fmt_sig;
 use draw::draw_chart;
+pub use draw::FAINT_TINT;
 pub use legend::place_legend;
 pub use plan::clipped_points;
 use plan::Plan;
@@ -340,6 +341,51 @@ pub(crate) fn tick_label(v: f64, (lo, hi): (f64, f64)) -> String {
 /// Text style in the bundled sans-serif font.
 pub(crate) fn font(size: f64, style: FontStyle) -> TextStyle<'static> {
     TextStyle::from(FontDesc::new(FontFamily::SansSerif, size, style))
+}
+
+/// The smallest size a chart's title is drawn at before it is broken in two: a title that does
+/// not fit one line at the full title size (30 px) is laid out on two ([`title_layout`])
+/// rather than shrunk below this.
+pub const MIN_TITLE_SIZE: f64 = 24.0;
+
+/// Whether `text` fits the image width (with a margin) in bold at `size` pixels.
+fn title_fits(text: &str, size: f64) -> bool {
+    let max_width = WIDTH.saturating_sub(60);
+    font(size, FontStyle::Bold).font.box_size(text).is_ok_and(|(w, _)| w <= max_width)
+}
+
+/// How a chart's title is drawn: its lines and their size in pixels. One line at the full size
+/// (30 px, shrunk down to [`MIN_TITLE_SIZE`]) where it fits; else two lines at the largest size that
+/// fits both, broken after a `:` (else a `;`, else a `,`, else a space) nearest the middle; a
+/// title too long even for that is shrunk on its two lines down to the tick labels' size.
+pub fn title_layout(title: &str) -> (Vec<String>, f64) {
+    // (the text is measured in the bundled font)
+    fonts_registered();
+    let sizes = || (0..).map(|i| TITLE_SIZE - f64::from(i)).take_while(|s| *s >= TICK_SIZE);
+    if let Some(size) = sizes().take_while(|s| *s >= MIN_TITLE_SIZE).find(|s| title_fits(title, *s)) {
+        return (vec![title.to_string()], size);
+    }
+    // the break points of each kind, the ones nearest the middle first
+    let middle = title.len() / 2;
+    let splits = |sep: &str| {
+        let mut at: Vec<usize> = title.match_indices(sep).map(|(i, _)| i + sep.trim_end().len()).collect();
+        at.sort_by_key(|&i| i.abs_diff(middle));
+        at
+    };
+    let kinds: Vec<Vec<usize>> = [": ", "; ", ", ", " "].iter().map(|sep| splits(sep)).collect();
+    let lines = |i: usize| vec![title[..i].trim_end().to_string(), title[i..].trim_start().to_string()];
+    for size in sizes() {
+        for at in &kinds {
+            if let Some(&i) = at.iter().find(|&&i| lines(i).iter().all(|l| title_fits(l, size))) {
+                return (lines(i), size);
+            }
+        }
+    }
+    // nothing fits even at the smallest size: the most even break, at the smallest size
+    match kinds[3].first() {
+        Some(&i) => (lines(i), TICK_SIZE),
+        None => (vec![title.to_string()], TICK_SIZE),
+    }
 }
 
 /// The title font: [`TITLE_SIZE`] bold, shrunk (down to [`TICK_SIZE`]) until `title` fits the

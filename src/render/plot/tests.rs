@@ -122,6 +122,28 @@ fn long_title_is_shrunk_to_fit() {
 }
 
 #[test]
+fn a_title_too_long_for_one_line_takes_two_before_it_shrinks() {
+    assert!(fonts_registered());
+    assert_eq!(title_layout("Short"), (vec!["Short".to_string()], TITLE_SIZE));
+    let title = "Topspin forehand (racket 108 km/h, ball in 72 km/h, centre, 60 lb, mu 0.4): ball out at 184 km/h \
+                 (0 deg path) to 150 km/h (40 deg)";
+    let (lines, size) = title_layout(title);
+    assert_eq!(lines.len(), 2, "{lines:?}");
+    assert!(size >= MIN_TITLE_SIZE, "{size}");
+    // broken after the colon, each line fitting the width at that size
+    assert!(lines[0].ends_with(':'), "{lines:?}");
+    for l in &lines {
+        let (w, _) = font(size, FontStyle::Bold).font.box_size(l).unwrap();
+        assert!(w <= WIDTH - 60, "{l}: {w} px");
+    }
+    // and the figure draws
+    let dir = scratch();
+    let mut chart = log_chart();
+    chart.title = title.to_string();
+    assert_eq!(&render_bytes(&chart, dir.path(), "two.png")[..8], &PNG_SIGNATURE);
+}
+
+#[test]
 fn different_charts_give_different_images() {
     let dir = scratch();
     let a = render_bytes(&log_chart(), dir.path(), "a.png");

@@ -42,6 +42,10 @@ pub struct MapOutcome {
     pub metadata: serde_json::Value,
     /// The text summary.
     pub summary: String,
+    /// The grid, m (the heat map's axes are in cm): its points along the racket from the tip
+    /// and across the face from the long axis; `heatmap.z[i * rs.len() + j]` is the quantity at
+    /// `(xs[i], rs[j])`.
+    pub grid: super::Grid,
 }
 
 impl MapOutcome {
@@ -151,6 +155,21 @@ impl MapRequest {
         Ok((configs, total))
     }
 
+    /// Refuse a flag for an option none of the map's impacts can honour; return the notes about
+    /// flags and config keys they do not use ([`Sources::check_used`]), judged on the
+    /// configurations `configs` as the grid runs them (the map's solver, and off the long axis).
+    pub fn check_used(&self, configs: &[(String, Params)]) -> Result<Vec<Diagnostic>> {
+        let solved: Vec<Params> = configs
+            .iter()
+            .map(|(_, p)| {
+                let mut p = super::with_map_solver(p);
+                p.impact.r = 0.5 * p.racket.half_width;
+                p
+            })
+            .collect();
+        self.sources.check_used(&solved)
+    }
+
     /// Run the map of `configs` (from [`MapRequest::configurations`]); `progress(done)` after
     /// each chunk of impacts.
     pub fn run(&self, configs: &[(String, Params)], progress: &mut dyn FnMut(u64)) -> Result<MapOutcome> {
@@ -162,22 +181,22 @@ impl MapRequest {
                 "is a quantity of an oblique or spinning ball: give --angle-deg or --spin-rpm",
             ));
         }
-        let (table, heatmap, metadata, summary) = match configs {
+        let (table, heatmap, metadata, summary, grid) = match configs {
             [(la, pa), (lb, pb)] => {
                 let d = DiffMap::compute(pa, pb, self.nx, self.nr, progress)?;
                 let meta = d.metadata((la, lb), q, counts)?;
                 let summary = diff_summary(&d, q, la, lb);
-                (d.table(q), d.heatmap(q, la, lb), meta, summary)
+                (d.table(q), d.heatmap(q, la, lb), meta, summary, d.a.grid.clone())
             }
             [(la, pa)] => {
                 let m = FaceMap::compute(pa, self.nx, self.nr, progress)?;
                 let meta = m.metadata(la, q, counts)?;
                 let summary = map_summary(&m, q, la)?;
-                (m.table(), m.heatmap(q, la), meta, summary)
+                (m.table(), m.heatmap(q, la), meta, summary, m.grid.clone())
             }
             _ => return Err(Error::invalid("map", configs.len(), "one or two configurations")),
         };
-        Ok(MapOutcome { table, heatmap, metadata, summary })
+        Ok(MapOutcome { table, heatmap, metadata, summary, grid })
     }
 
     /// The configuration with the racket `racket`: as [`Sources::resolve`], with what a map

@@ -3,7 +3,7 @@
 //! `start:stop:count:log`, expanded into one [`Axis`] of values.
 
 use crate::error::{Error, Result};
-use crate::params::spec::Values;
+use crate::params::spec::{parse_number, Values};
 use crate::params::{keys, limits, Overrides};
 
 /// One varied parameter and its values (as text, parsed like a flag).
@@ -43,10 +43,13 @@ pub fn parse_spec(key: &str, spec: &str) -> Result<Axis> {
             4 if parts[3] == "log" => true,
             _ => return Err(bad("a range is start:stop:count or start:stop:count:log")),
         };
-        let a: f64 = parts[0].parse().map_err(|_| bad("start is not a number"))?;
-        let b: f64 = parts[1].parse().map_err(|_| bad("stop is not a number"))?;
+        // (read as a flag's value is: a number too small or too large for an f64 is refused as
+        // written, not taken as 0 or inf)
+        let number = |text: &str, what: &str| parse_number(text).map_err(|why| bad(&format!("{what} {why}")));
+        let a = number(parts[0], "start")?;
+        let b = number(parts[1], "stop")?;
         // (a count reads as digits or as a whole number in exponent form: 50, 1e3)
-        let count: f64 = parts[2].parse().map_err(|_| bad("count is not a number"))?;
+        let count = number(parts[2], "count")?;
         if !(count.is_finite() && count >= 1.0 && count.fract() == 0.0) {
             return Err(bad("count must be a whole number >= 1 (as 50 or 1e3)"));
         }
@@ -158,5 +161,11 @@ mod tests {
         for bad in ["0.1:0.3:2.5", "0.1:0.3:0", "0.1:0.3:-3", "0.1:0.3:nan", "0.1:0.3:inf"] {
             assert!(parse_spec("x", bad).is_err(), "{bad}");
         }
+        // an end too small or too large for an f64 is refused as a plain value is, not run as 0
+        let msg = parse_spec("x", "1e-400:0.2:3").unwrap_err().to_string();
+        assert!(msg.contains("start is too small to represent"), "{msg}");
+        let msg = parse_spec("ks", "1e3:1e400:3:log").unwrap_err().to_string();
+        assert!(msg.contains("stop is too large to represent"), "{msg}");
+        assert!(parse_spec("x", "0.1:0.3:1e-400").unwrap_err().to_string().contains("count is too small"));
     }
 }

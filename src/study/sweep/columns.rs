@@ -36,20 +36,47 @@ pub fn result_columns(oblique: bool, losses: bool, solver_swept: bool) -> impl I
     swept(oblique, losses).map(|f| f.key).chain((!solver_swept).then_some("solver"))
 }
 
-/// The result columns of one impact. Numbers are written in their shortest form that reads back
-/// as the same `f64` (`ryu`: `0.25`, `1.5e-7`, `3.0`): exact, and without the noise digits of a
-/// fixed 17; a flag as 0 or 1.
-pub(super) fn result_fields<'a>(
-    r: &'a ImpactResult,
+/// One cell of a sweep row.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Cell<'a> {
+    /// A swept value as given (a number or a name, as the flag takes it).
+    Given(&'a str),
+    /// A number: a recorded parameter or a result field (NaN: undefined).
+    Number(f64),
+    /// A yes/no result field.
+    Flag(bool),
+    /// A name (the solver that ran).
+    Name(&'static str),
+}
+
+impl Cell<'_> {
+    /// The cell as its CSV field. Numbers are written in their shortest form that reads back
+    /// as the same `f64` (`ryu`: `0.25`, `1.5e-7`, `3.0`; [`exact`]): exact, and without the
+    /// noise digits of a fixed 17; an undefined one as an empty field; a flag as 0 or 1.
+    pub fn text(&self) -> String {
+        match *self {
+            Cell::Given(v) | Cell::Name(v) => v.to_string(),
+            Cell::Number(v) => exact(v),
+            Cell::Flag(f) => u8::from(f).to_string(),
+        }
+    }
+}
+
+/// Append the result columns of one impact ([`result_columns`]) to `row`, as cells.
+pub(super) fn push_result_cells(
+    row: &mut Vec<Cell<'_>>,
+    r: &ImpactResult,
     p: &Params,
     (oblique, losses): (bool, bool),
     solver_swept: bool,
-) -> impl Iterator<Item = String> + 'a {
-    let fields = swept(oblique, losses).map(move |f| match f.get {
-        Get::Number(g) => exact(g(r)),
-        Get::Flag(g) => u8::from(g(r)).to_string(),
-    });
-    fields.chain((!solver_swept).then(|| p.numerics.solver.name().to_string()))
+) {
+    row.extend(swept(oblique, losses).map(|f| match f.get {
+        Get::Number(g) => Cell::Number(g(r)),
+        Get::Flag(g) => Cell::Flag(g(r)),
+    }));
+    if !solver_swept {
+        row.push(Cell::Name(p.numerics.solver.name()));
+    }
 }
 
 #[cfg(test)]

@@ -10,7 +10,7 @@ mod columns;
 mod run;
 
 pub use axis::{parse_spec, Axis};
-pub use columns::{column_name, recorded_keys, result_columns};
+pub use columns::{column_name, recorded_keys, result_columns, Cell};
 pub use run::CHUNK;
 
 use rayon::prelude::*;
@@ -42,6 +42,16 @@ pub fn default_solver(base: &Overrides, axes: &[Axis]) -> Option<crate::params::
         || swept(keys::GRIP.key, Grip::Hand.name())
         || swept(keys::STRINGS.key, StringLaw::Stiffening.name());
     Some(if needs_fd { SolverKind::Fd } else { SolverKind::Modal })
+}
+
+/// The diagnostics of a sweep that ran: its notes `noted` ([`Sweep::check_used`]), the
+/// parameters of its `representatives` outside their usual ranges, and its largest twist
+/// `theta_max_deg` beyond the small-angle model.
+pub fn diagnostics(noted: &[Diagnostic], representatives: &[Params], theta_max_deg: f64) -> Vec<Diagnostic> {
+    let mut out = noted.to_vec();
+    out.extend(crate::study::diagnose::parameters(representatives, &[]));
+    out.extend(crate::study::diagnose::twist(theta_max_deg));
+    out
 }
 
 /// A sweep: a base (paper defaults < config) and the varied axes, first axis slowest.

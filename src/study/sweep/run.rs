@@ -2,7 +2,7 @@
 
 use rayon::prelude::*;
 
-use super::columns::result_fields;
+use super::columns::{push_result_cells, Cell};
 use super::{Sweep, MAX_POINTS};
 use crate::error::Result;
 use crate::params::{keys, limits, Overrides, Params};
@@ -14,7 +14,21 @@ pub const CHUNK: usize = 4096;
 impl Sweep {
     /// Run every impact in parallel chunks and hand each finished chunk's CSV rows, in order,
     /// to `sink`; `progress` gets the number of impacts done so far.
-    pub fn run(&self, mut sink: impl FnMut(&[Vec<String>]) -> Result<()>, mut progress: impl FnMut(u64)) -> Result<()> {
+    pub fn run(&self, sink: impl FnMut(&[Vec<String>]) -> Result<()>, progress: impl FnMut(u64)) -> Result<()> {
+        self.run_rows(|cells| cells.iter().map(Cell::text).collect(), sink, progress)
+    }
+
+    /// Run every impact in parallel chunks, make each impact's row with `row` from its typed
+    /// cells (a cell per column of [`Sweep::header`]; `row` runs in parallel too), and hand
+    /// each finished chunk's rows, in order, to `sink`; `progress` gets the number of impacts
+    /// done so far. [`Sweep::run`] makes CSV rows of the cells; the Python package keeps them
+    /// as numbers.
+    pub fn run_rows<'s, T: Send>(
+        &'s self,
+        row: impl Fn(Vec<Cell<'s>>) -> T + Sync,
+        mut sink: impl FnMut(&[T]) -> Result<()>,
+        mut progress: impl FnMut(u64),
+    ) -> Result<()> {
         let total = self.len();
         limits::check_count("sweep", total as f64, MAX_POINTS, "the impacts of a sweep (the product of the counts)")?;
         let oblique = self.is_oblique();
@@ -22,26 +36,24 @@ impl Sweep {
         let fixed = self.fixed_keys(oblique);
         let solver_swept = self.solver_swept();
         let points = Points::of(self)?;
+        let width = self.header().len();
         let mut start = 0u64;
         while start < total {
             let end = (start + CHUNK as u64).min(total);
-            let rows: Vec<Vec<String>> = (start..end)
+            let rows: Vec<T> = (start..end)
                 .into_par_iter()
                 .map(|i| {
                     let (p, vals) = points.at(i);
                     // (`simulate` validates the parameters, as `point` would)
                     let r = simulate(&p).map_err(|e| self.at_point(&vals, e))?;
-                    let fixed =
-                        fixed.iter().map(|k| crate::numfmt::exact(keys::value_number(k, &p).unwrap_or(f64::NAN)));
-                    Ok(vals
-                        .into_iter()
-                        .map(str::to_string)
-                        .chain(fixed)
-                        .chain(result_fields(&r, &p, (oblique, losses), solver_swept))
-                        .collect())
+                    let mut cells = Vec::with_capacity(width);
+                    cells.extend(vals.into_iter().map(Cell::Given));
+                    cells.extend(fixed.iter().map(|k| Cell::Number(keys::value_number(k, &p).unwrap_or(f64::NAN))));
+                    push_result_cells(&mut cells, &r, &p, (oblique, losses), solver_swept);
+                    Ok(row(cells))
                 })
                 // (the first failed point in the sweep's order: the same message every run)
-                .collect::<Vec<Result<Vec<String>>>>()
+                .collect::<Vec<Result<T>>>()
                 .into_iter()
                 .collect::<Result<_>>()?;
             sink(&rows)?;

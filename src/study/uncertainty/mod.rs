@@ -20,6 +20,7 @@ use crate::params::uncertainty::Dist;
 use crate::params::{keys, Overrides, Params};
 use crate::solve::outcome::{Get, FIELDS};
 use crate::solve::simulate;
+use crate::study::Sources;
 
 /// Base samples unless given (a power of two, as the Sobol' sequence likes).
 pub const DEFAULT_SAMPLES: u64 = 256;
@@ -166,6 +167,50 @@ impl Study {
         }
         let study = Study { base, inputs, design, noted: Vec::new() };
         study.check_each_input_is_read(varies)?;
+        Ok(study)
+    }
+
+    /// The study `uncertainty --vary` runs (and the Python package's `uncertainty`): the sample
+    /// count checked first, then the fixed parameters from `sources` (a key both fixed by a
+    /// flag and varied is refused; a config file's value of a varied key is noted as unused),
+    /// the solver the sweeps use unless given ([`crate::study::sweep::default_solver`]), the
+    /// notes and refusals of [`Sources::check_used`] with that solver, and each input.
+    pub fn from_sources(sources: &Sources, varies: &[String], samples: u64, seed: u32) -> Result<Study> {
+        Design::new(samples, varies.len().max(1), 0)?; // the count first, before anything else
+        let from_config = crate::study::config_file(sources.config.as_deref())?;
+        let given = sources.flags.clone().or(from_config.clone());
+        let mut unused_in_config = Vec::new();
+        for text in varies {
+            let key = text.split_once('=').map_or(text.as_str(), |(k, _)| k).trim();
+            if sources.flags.given().contains(&key) {
+                return Err(Error::invalid(
+                    "vary",
+                    text,
+                    format!("{key} is both fixed (--{key}) and varied; give one"),
+                ));
+            }
+            if from_config.given().contains(&key) {
+                unused_in_config.push(key);
+            }
+        }
+        let mut noted = Vec::new();
+        if let (Some(path), false) = (&sources.config, unused_in_config.is_empty()) {
+            // a shared config file may set what this run draws: said once, not refused
+            let sentence = format!(
+                "config file {} sets {}, which --vary draws: the file's value is not used",
+                path.display(),
+                unused_in_config.join(", ")
+            );
+            noted.push(Diagnostic::new(Kind::NotUsed, "config", sentence));
+        }
+        let mut base = sources.params()?;
+        if let Some(solver) = crate::study::sweep::default_solver(&given, &[]) {
+            base.numerics.solver = solver;
+        }
+        // with the solver the runs use: --dt is refused with the modal one
+        noted.extend(sources.check_used(&[base])?);
+        let mut study = Study::new(base, varies, samples, seed)?;
+        study.noted = noted;
         Ok(study)
     }
 

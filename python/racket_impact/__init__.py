@@ -1,0 +1,682 @@
+"""racket-impact from Python: a tennis ball on a flexible racket, R. Cross (2000) replicated.
+
+The model runs in Rust (the same library as the ``racket-impact`` command line); this package
+is its Python surface::
+
+    import racket_impact as ri
+    r = ri.simulate(x=0.10, r=0.05, ks=3e4)       # one impact, as `simulate --format json`
+    r.e_a, r.tau_s, r.to_dict()
+    df = ri.sweep(x=np.linspace(0.02, 0.6, 50), ks=[2e4, 4e4])   # `sweep`'s CSV columns
+
+Every impact parameter is a keyword named as its command-line flag with underscores
+(``--angle-deg`` is ``angle_deg``; its CSV column, ``angle_deg``, and its key, ``"angle-deg"``
+through ``**{...}``, are accepted too): see ``help(racket_impact.simulate)`` for each one's unit,
+range and default. The names, units, ranges, defaults and checks are read from the library's
+one declaration of the parameters, so a parameter added there is a keyword here.
+
+A bad value raises ``ValueError`` with the command line's one-line message; an unknown keyword
+``TypeError``. A doubt about a valid run (a value outside its usual range, a result beyond the
+model's range, a property given but not exercised) is a warning: a :class:`RacketImpactWarning`
+subclass with the diagnostic's ``kind`` and ``field``, never a print.
+"""
+
+from __future__ import annotations
+
+import copy
+import difflib
+import inspect
+import json
+import numbers
+import os
+import sys
+import warnings
+from typing import Any, NamedTuple
+
+import numpy as np
+
+from . import _native
+
+__version__ = _native.__version__
+
+__all__ = [
+    "simulate",
+    "sweep",
+    "face_map",
+    "uncertainty",
+    "presets",
+    "strings",
+    "experiments",
+    "run_experiment",
+    "parameters",
+    "Impact",
+    "FaceMap",
+    "Uncertainty",
+    "Racket",
+    "Experiment",
+    "RacketImpactWarning",
+    "UnusualValueWarning",
+    "BeyondModelWarning",
+    "MissingDataWarning",
+    "NotUsedWarning",
+]
+
+#: The declaration of every impact parameter (key, name, help, unit, range, default, ...), as the
+#: library declares it.
+_PARAMS: list[dict[str, Any]] = json.loads(_native.parameters())
+#: The result fields of one impact (key, unit, doc, ...), as the library declares them.
+_FIELDS: list[dict[str, Any]] = json.loads(_native.result_fields())
+
+
+def _by_name() -> dict[str, dict[str, Any]]:
+    """Every spelling of a parameter: its Python name, its key and its CSV column."""
+    names: dict[str, dict[str, Any]] = {}
+    for p in _PARAMS:
+        for n in (p["name"], p["key"], p["column"]):
+            names.setdefault(n, p)
+    return names
+
+
+def parameters() -> list[dict[str, Any]]:
+    """Every impact parameter as the library declares it: ``name`` (the keyword), ``key`` (the
+    flag), ``help``, ``unit``, ``column`` (in a sweep's table), ``kind`` (number, count or
+    choice, with its ``choices``), ``range`` (allowed), ``usual`` (beyond it: a warning),
+    ``default`` (as the flag spells it) and the declared ``uncertainty``."""
+    return copy.deepcopy(_PARAMS)
+
+
+# --- warnings -------------------------------------------------------------------------------
+
+
+class RacketImpactWarning(UserWarning):
+    """A doubt about a valid run, as the command line prints it after ``warning:``.
+
+    ``kind`` says what kind of doubt (``unusual``, ``beyond_model``, ``missing_data``,
+    ``not_used``), ``field`` the parameter key or result field it is about."""
+
+    kind: str = ""
+    field: str = ""
+
+    def __init__(self, sentence: str, kind: str = "", field: str = ""):
+        super().__init__(sentence)
+        self.kind = kind
+        self.field = field
+
+
+class UnusualValueWarning(RacketImpactWarning):
+    """A valid value outside the range usual for it (a typo or a unit slip?), computed anyway."""
+
+
+class BeyondModelWarning(RacketImpactWarning):
+    """A result beyond the range the model is meant for, computed anyway."""
+
+
+class MissingDataWarning(RacketImpactWarning):
+    """A value the data does not give, taken from elsewhere."""
+
+
+class NotUsedWarning(RacketImpactWarning):
+    """A property or key given that this run does not use."""
+
+
+_WARNINGS = {
+    "unusual": UnusualValueWarning,
+    "beyond_model": BeyondModelWarning,
+    "missing_data": MissingDataWarning,
+    "not_used": NotUsedWarning,
+}
+
+
+def _warn(diagnostics: list[dict[str, str]]) -> None:
+    """Each diagnostic as a warning, pointing at the line that called into this package."""
+    level, frame = 1, sys._getframe(0)
+    while frame is not None and os.path.dirname(frame.f_code.co_filename) == _HERE:
+        frame, level = frame.f_back, level + 1
+    for d in diagnostics:
+        cls = _WARNINGS.get(d["kind"], RacketImpactWarning)
+        warnings.warn(cls(d["sentence"], d["kind"], d["field"]), stacklevel=level)
+
+
+_HERE = os.path.dirname(__file__)
+
+
+# --- arguments ------------------------------------------------------------------------------
+
+
+def _param(name: str, function: str) -> dict[str, Any]:
+    """The declaration a keyword names, else ``TypeError`` with the nearest names."""
+    p = _by_name().get(name)
+    if p is None:
+        near = difflib.get_close_matches(name, [q["name"] for q in _PARAMS], n=3)
+        hint = f"; did you mean {' or '.join(repr(n) for n in near)}?" if near else ""
+        raise TypeError(f"{function}() got an unexpected keyword argument {name!r}{hint}")
+    return p
+
+
+def _text(p: dict[str, Any], value: Any) -> str:
+    """A value as the command line's flag would be given it: a string as it is, a whole number
+    in digits, a real number in its shortest exact form (``repr``)."""
+    if isinstance(value, str):
+        return value
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        if p["kind"] == "choice":
+            names = ", ".join(c["name"] for c in p["choices"])
+            raise TypeError(f"{p['name']} takes one of the names {names}, not {value!r}")
+        raise TypeError(f"{p['name']} takes a number, not {value!r}")
+    if p["kind"] == "choice":
+        names = ", ".join(c["name"] for c in p["choices"])
+        raise TypeError(f"{p['name']} takes one of the names {names}, not {value!r}")
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    return repr(float(value))
+
+
+def _pairs(params: dict[str, Any], function: str) -> list[tuple[str, str]]:
+    return [(_param(name, function)["key"], _text(_param(name, function), v)) for name, v in params.items()]
+
+
+def _source(racket: Any) -> str | None:
+    """A racket argument as the command line's ``--racket``: a preset name or a file path."""
+    if racket is None:
+        return None
+    if isinstance(racket, Racket):
+        return racket.source
+    if isinstance(racket, (str, os.PathLike)):
+        return os.fspath(racket)
+    raise TypeError(f"racket is a preset name, a racket file's path or a Racket, not {racket!r}")
+
+
+def _path(config: Any) -> str | None:
+    if config is None:
+        return None
+    if isinstance(config, (str, os.PathLike)):
+        return os.fspath(config)
+    raise TypeError(f"config is a TOML file's path, not {config!r}")
+
+
+def _pandas():
+    """pandas, where it is installed."""
+    try:
+        import pandas
+    except ImportError:
+        return None
+    return pandas
+
+
+def _array(dtype: str, payload: Any) -> np.ndarray:
+    if dtype == "str":
+        return np.array(payload, dtype=object)
+    return np.frombuffer(payload, dtype={"float64": "<f8", "int64": "<i8", "bool": "?"}[dtype])
+
+
+def _table(columns: list[tuple[str, str, Any]], index: str | None = None):
+    """Columns as a pandas DataFrame where pandas is installed, else a dict of numpy arrays."""
+    data = {name: _array(dtype, payload) for name, dtype, payload in columns}
+    pd = _pandas()
+    if pd is None:
+        return data
+    frame = pd.DataFrame(data, copy=False)
+    return frame.set_index(index) if index else frame
+
+
+# --- one impact -----------------------------------------------------------------------------
+
+
+class Impact:
+    """One impact's result: every field of ``simulate --format json`` as an attribute (units in
+    the names: ``tau_s``, ``theta_end_deg``), with ``params`` (the parameters it ran with),
+    ``f1_hz`` (the free racket's first bending frequency) and ``diagnostics``.
+
+    ``to_dict()`` gives the whole document, equal to the command line's JSON. A field of an
+    oblique or spinning ball that is undefined (``e_t`` at too little incoming slip) is ``None``,
+    as ``null`` in the JSON."""
+
+    __slots__ = ("_doc",)
+
+    def __init__(self, document: dict[str, Any]):
+        object.__setattr__(self, "_doc", document)
+
+    def __getattr__(self, name: str) -> Any:
+        try:
+            return self._doc[name]
+        except KeyError:
+            raise AttributeError(f"an Impact has no field {name!r}") from None
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("an Impact is a result: read-only")
+
+    def __dir__(self):
+        return sorted(set(super().__dir__()) | set(self._doc))
+
+    def __getitem__(self, name: str) -> Any:
+        return self._doc[name]
+
+    def keys(self):
+        return self._doc.keys()
+
+    def to_dict(self) -> dict[str, Any]:
+        """The result as the JSON document of ``simulate --format json`` (a copy)."""
+        return copy.deepcopy(self._doc)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Impact) and other._doc == self._doc
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        shown = ["e_a", "tau_s", "theta_end_deg", "f_vib", "spin_out_rpm"]
+        parts = [f"{k}={self._doc[k]:.6g}" for k in shown if isinstance(self._doc.get(k), float)]
+        return f"Impact({', '.join(parts)}, ...)"
+
+
+def simulate(*, racket=None, config=None, **params) -> Impact:
+    # (the docstring is made from the parameters' declaration below)
+    pairs = _pairs(params, "simulate")
+    doc = json.loads(_native.simulate(_source(racket), _path(config), pairs))
+    _warn(doc["diagnostics"])
+    return Impact(doc)
+
+
+# --- many impacts ---------------------------------------------------------------------------
+
+
+def _axis(p: dict[str, Any], values: Any) -> Any:
+    """A swept parameter's values as the native sweep takes them: a spec string as the command
+    line's (``"0.02:0.6:50"``, ``"2e4,4e4"``), little-endian f64 bytes for real numbers (an
+    array or a list), else a list of texts."""
+    if isinstance(values, str):
+        return values
+    if isinstance(values, (numbers.Number, bool)) or np.ndim(values) == 0:
+        return [_text(p, values.item() if isinstance(values, np.generic) else values)]
+    if np.ndim(values) != 1:
+        raise TypeError(f"{p['name']} takes one value, a list of values or a spec string, not a {np.ndim(values)}-d array")
+    items = list(np.asarray(values, dtype=object)) if isinstance(values, np.ndarray) else list(values)
+    if p["kind"] == "number" and items and all(
+        isinstance(v, numbers.Real) and not isinstance(v, bool) for v in items
+    ):
+        return np.asarray(items, dtype="<f8").tobytes()
+    return [_text(p, v.item() if isinstance(v, np.generic) else v) for v in items]
+
+
+def sweep(*, racket=None, config=None, **axes):
+    # (the docstring is made from the parameters' declaration below)
+    if not axes:
+        raise TypeError("sweep() needs at least one parameter to vary, e.g. sweep(x=np.linspace(0.02, 0.6, 50))")
+    pairs = [(_param(name, "sweep")["key"], _axis(_param(name, "sweep"), v)) for name, v in axes.items()]
+    columns, diagnostics = _native.sweep(_source(racket), _path(config), pairs)
+    _warn(json.loads(diagnostics))
+    return _table(columns)
+
+
+class FaceMap:
+    """A quantity over the string face (``map``): ``x`` (m from the tip) and ``r`` (m from the
+    long axis) are the grid, ``values[i, j]`` the quantity at ``(x[i], r[j])`` (NaN off the
+    face; for a comparison, B - A), ``table`` every quantity at every point (``map``'s CSV),
+    ``metadata`` ``map``'s JSON (parameters, mode-1 node, maximum) and ``diagnostics``."""
+
+    def __init__(self, quantity: str, metadata: dict[str, Any], table, x, r, values, diagnostics):
+        self.quantity = quantity
+        self.metadata = metadata
+        self.table = table
+        self.x = x
+        self.r = r
+        self.values = values
+        self.diagnostics = diagnostics
+
+    def __repr__(self) -> str:
+        return f"FaceMap({self.quantity!r}, {len(self.x)} x {len(self.r)} grid, {np.isfinite(self.values).sum()} points)"
+
+
+def face_map(
+    *,
+    racket=None,
+    quantity: str = "power",
+    nx: int = 41,
+    nr: int = 21,
+    compare_racket=None,
+    compare_tension_lb=None,
+    config=None,
+    **params,
+) -> FaceMap:
+    # (the docstring is made from the parameters' declaration below)
+    for name in params:
+        why = _MAP_SETS.get(_param(name, "face_map")["key"])
+        if why:
+            raise TypeError(f"face_map() got an unexpected keyword argument {name!r}: {why}")
+    pairs = _pairs(params, "face_map")
+    tensions = [] if compare_tension_lb is None else [float(t) for t in np.atleast_1d(compare_tension_lb)]
+    metadata, (_, columns), (xs, rs, z), diagnostics = _native.face_map(
+        _source(racket), _path(config), pairs, quantity, int(nx), int(nr), _source(compare_racket), tensions
+    )
+    diagnostics = json.loads(diagnostics)
+    _warn(diagnostics)
+    x, r = np.frombuffer(xs, "<f8"), np.frombuffer(rs, "<f8")
+    values = np.frombuffer(z, "<f8").reshape(len(x), len(r))
+    return FaceMap(quantity, json.loads(metadata), _table(columns), x, r, values, diagnostics)
+
+
+class Uncertainty:
+    """An impact's result fields under uncertain inputs (``uncertainty --vary``).
+
+    ``summary``: one row per result field (unit, mean, sd, q05, q50, q95); ``first_order`` and
+    ``total_order``: the Sobol' indices, one row per result field and a column per input;
+    ``intervals``: every index with its bootstrap interval (output, input, order, value, lo, hi).
+    DataFrames where pandas is installed, else dicts of numpy arrays. ``to_dict()`` is the JSON
+    document of ``uncertainty --format json``."""
+
+    def __init__(self, document: dict[str, Any]):
+        self._doc = document
+        outputs = document["outputs"]
+        inputs = [i["key"] for i in document["inputs"]]
+        names = list(outputs)
+        f = lambda v: np.nan if v is None else float(v)  # noqa: E731  (an index of a constant output is null)
+        summary = [("output", "str", names), ("unit", "str", [outputs[n]["unit"] for n in names])]
+        for stat in ("mean", "sd", "q05", "q50", "q95"):
+            summary.append((stat, "f", [f(outputs[n][stat]) for n in names]))
+        self.summary = _frame(summary, "output")
+        for order in ("first_order", "total_order"):
+            cols = [("output", "str", names)] + [(i, "f", [f(outputs[n][order][i]) for n in names]) for i in inputs]
+            setattr(self, order, _frame(cols, "output"))
+        rows = [
+            (n, i, order.split("_")[0], f(outputs[n][order][i]), f(outputs[n][order + "_ci"][i][0]), f(outputs[n][order + "_ci"][i][1]))
+            for n in names
+            for i in inputs
+            for order in ("first_order", "total_order")
+        ]
+        cols = list(zip(*rows)) if rows else [[]] * 6
+        self.intervals = _frame(
+            [
+                ("output", "str", list(cols[0])),
+                ("input", "str", list(cols[1])),
+                ("order", "str", list(cols[2])),
+                ("value", "f", list(cols[3])),
+                ("lo", "f", list(cols[4])),
+                ("hi", "f", list(cols[5])),
+            ]
+        )
+        self.inputs = inputs
+        self.samples = document["samples"]
+        self.seed = document["seed"]
+        self.runs = document["runs"]
+        self.diagnostics = document["diagnostics"]
+
+    def to_dict(self) -> dict[str, Any]:
+        """The study as the JSON document of ``uncertainty --format json`` (a copy)."""
+        return copy.deepcopy(self._doc)
+
+    def __repr__(self) -> str:
+        return f"Uncertainty(inputs={self.inputs}, samples={self.samples}, runs={self.runs})"
+
+
+def _frame(columns: list[tuple[str, str, list]], index: str | None = None):
+    """Python lists as a table (``f``: float64, ``str``: text)."""
+    data = {
+        name: np.array(values, dtype=object) if kind == "str" else np.asarray(values, dtype="<f8")
+        for name, kind, values in columns
+    }
+    pd = _pandas()
+    if pd is None:
+        return data
+    frame = pd.DataFrame(data)
+    return frame.set_index(index) if index else frame
+
+
+def uncertainty(vary, *, samples: int | None = None, seed: int | None = None, racket=None, config=None, **params) -> Uncertainty:
+    # (the docstring is made from the parameters' declaration below)
+    if isinstance(vary, (str, dict)):
+        vary = [vary] if isinstance(vary, str) else [k if d is None else f"{k}={d}" for k, d in vary.items()]
+    texts = []
+    for v in vary:
+        name, sep, dist = str(v).partition("=")
+        p = _by_name().get(name.strip())
+        texts.append(f"{p['key'] if p else name}{sep}{dist}")
+    pairs = _pairs(params, "uncertainty")
+    doc = json.loads(_native.uncertainty(_source(racket), _path(config), pairs, texts, samples, seed))
+    _warn(doc["diagnostics"])
+    return Uncertainty(doc)
+
+
+# --- rackets, strings, experiments ----------------------------------------------------------
+
+#: The beam segments a racket is fitted for unless told (the paper's N).
+_SEGMENTS = 39
+
+
+def presets(segments: int = _SEGMENTS):
+    """The built-in racket presets fitted to the model (``racket --list``): name, length,
+    mass, balance, swingweight, twistweight, first frequency, string-bed stiffness, profile.
+    Give a name as ``racket=`` to any function."""
+    _, columns = _native.presets(int(segments))
+    return _table(columns)
+
+
+class Racket:
+    """A racket file (TOML in player units, README "Your own racket") or preset, fitted to the
+    model's beam (``racket`` command). Give it as ``racket=`` to any function.
+
+    ``name``; ``source`` (the preset name or file path); ``fit``: the spec sheet beside the
+    model (``racket --format csv``); ``model``: the fitted racket, strings and ball (SI units,
+    as ``racket --format json``); ``diagnostics``."""
+
+    def __init__(self, source: str | os.PathLike, segments: int = _SEGMENTS):
+        self.source = os.fspath(source)
+        name, model, (_, columns) = _native.racket(self.source, int(segments))
+        self.name = name
+        self.model = json.loads(model)
+        self.diagnostics = self.model.pop("diagnostics")
+        self.fit = _table(columns)
+        _warn(self.diagnostics)
+
+    @classmethod
+    def from_toml(cls, path: str | os.PathLike, segments: int = _SEGMENTS) -> "Racket":
+        """A racket file (TOML, player units), fitted for ``segments`` beam segments."""
+        return cls(path, segments)
+
+    @classmethod
+    def preset(cls, name: str, segments: int = _SEGMENTS) -> "Racket":
+        """A built-in preset (see :func:`presets`), fitted for ``segments`` beam segments."""
+        return cls(name, segments)
+
+    def __repr__(self) -> str:
+        r = self.model["racket"]
+        return f"Racket({self.name!r}, length={r['length']:.4g} m, mass={r['mass']:.4g} kg)"
+
+
+def strings():
+    """The strings ``string=`` can name (data/strings): material, gauge and the friction
+    coefficients the tangential contact uses, with the database row they come from."""
+    rows = json.loads(_native.strings())
+    names = list(rows[0]) if rows else []
+    cols = []
+    for n in names:
+        values = [row[n] for row in rows]
+        numeric = all(v is None or isinstance(v, (int, float)) for v in values)
+        cols.append((n, "f" if numeric else "str", [np.nan if v is None else v for v in values]))
+    return _frame(cols)
+
+
+class Experiment(NamedTuple):
+    """One of the paper's results this package replicates (``figures --list``)."""
+
+    id: str
+    title: str
+    paper_ref: str
+
+
+def experiments() -> list[Experiment]:
+    """Every experiment (the paper's figures and results, and ours beyond them), in the paper's
+    order; :func:`run_experiment` gives one's table."""
+    return [Experiment(**e) for e in json.loads(_native.experiments())]
+
+
+def run_experiment(id: str, *, racket=None):
+    """The table of the experiment ``id`` (see :func:`experiments`): the CSV ``figures`` writes
+    for it, with numbers at full precision. ``racket``: run it on this racket instead of the
+    paper's (as ``figures --racket``)."""
+    _, columns = _native.run_experiment(str(id), _source(racket))
+    return _table(columns)
+
+
+# --- docstrings and signatures made from the declaration ------------------------------------
+
+
+def _param_doc(p: dict[str, Any]) -> str:
+    """One parameter in a numpydoc ``Parameters`` list: name, type and unit, its help, allowed
+    and usual ranges, default (and how it is chosen), which impacts use it, and its declared
+    uncertainty; its help heading in brackets."""
+    kind = {"number": "float", "count": "int", "choice": "str"}[p["kind"]]
+    unit = f", {p['unit']}" if p["unit"] else ""
+    lines = [f"{p['name']} : {kind}{unit} [{p['heading']}]", f"    {p['help']}."]
+    if p["kind"] == "choice":
+        for c in p["choices"]:
+            lines.append(f"    ``{c['name']}``" + (f": {c['help']}" if c["help"] else ""))
+    else:
+        lines.append(f"    Allowed: {p['range_text'].replace(p['key'], p['name'])}.")
+    if p["usual"]:
+        lo, hi = p["usual"]
+        lines.append(f"    Usual: {_num(lo)} .. {_num(hi)}{(' ' + p['unit']) if p['unit'] else ''} (outside: a warning).")
+    default = p["default"]
+    if default is not None:
+        unit_default = f" {p['unit']}" if p["unit"] and p["kind"] != "choice" and _is_number(default) else ""
+        how = f" ({p['default_words'].replace('--racket', 'racket=')})" if p["default_words"] else ""
+        lines.append(f"    Default: {default}{unit_default}{how}.")
+    if p["used_when"] != "always":
+        lines.append(f"    Used only {p['used_when']}.")
+    if p["uncertainty"]:
+        u = p["uncertainty"]
+        lines.append(f"    Declared uncertainty: {u['dist']} (nominal {_num(u['nominal'])}).")
+    return "\n".join(lines)
+
+
+def _num(v: float) -> str:
+    """A bound as the help writes it: ``1e12``, ``0.01``, ``5000``."""
+    return f"{v:g}".replace("e+0", "e").replace("e+", "e").replace("e-0", "e-")
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+
+_RACKET_DOC = """racket : str, os.PathLike or Racket, optional
+    A preset name (see presets()) or a racket file (TOML, player units); its values replace
+    the paper's racket, strings and ball, and the impact moves to the centre of its head.
+config : str or os.PathLike, optional
+    A TOML file with any parameter key (as the command line's --config); keywords win."""
+
+_COMMON_NOTE = """The defaults are the paper's racket hit at the centre of its strings with the
+paper's ball (the command line's): with ``racket=``, the racket's own values. Precedence: the
+defaults < the racket < the config file < the keywords."""
+
+_DOCS = {
+    simulate: f"""One impact: the ball's rebound (e_A), contact time, twist and where the energy went.
+
+Returns an :class:`Impact` with every field of ``racket-impact simulate --format json`` as an
+attribute (and ``to_dict()``), bit for bit the command line's numbers. A bad value raises
+``ValueError`` with the command line's message; a doubt about the run is a warning
+(:class:`RacketImpactWarning`).
+
+{_COMMON_NOTE}
+
+Example: ``simulate(x=0.10, r=0.05, ks=3e4).e_a``
+
+Parameters
+----------
+{_RACKET_DOC}
+@PARAMETERS@
+""",
+    sweep: f"""Every impact of the cartesian product of the values given, in parallel, as ``sweep``.
+
+Each keyword is a parameter and its values: an array or list (``x=np.linspace(0.02, 0.6,
+50)``, ``load=["node", "hat"]``), one value, or a spec string as the command line's
+(``"0.02:0.6:50"``, ``"1e3:1e5:5:log"``); the first keyword varies slowest. Returns a pandas
+DataFrame where pandas is installed, else a dict of numpy arrays, with ``sweep``'s CSV
+columns: the swept parameters, the recorded ones, every result field, and the solver. The
+numbers are the command line's, at full precision. The work runs on every core with the GIL
+released; nothing is done in Python per impact. Sweeps use the modal solver unless
+``solver`` is given or a hand grip or stiffening strings need fd.
+
+{_COMMON_NOTE}
+
+Parameters
+----------
+{_RACKET_DOC}
+@PARAMETERS@
+""",
+    face_map: f"""A quantity over the string face, one impact per point of an nx x nr grid (``map``).
+
+Returns a :class:`FaceMap`: the grid ``x`` and ``r``, ``values[i, j]`` at ``(x[i], r[j])``,
+the ``table`` of every quantity at every point, ``metadata`` and ``diagnostics``. No file is
+written. The grid sets the impact point and the map its solver, so ``x``, ``r``, ``solver`` and
+``dt`` are not keywords here.
+
+Parameters
+----------
+quantity : str
+    power (100 e_A, %), e_a, tau (ms), theta (deg), f_vib, spin (rpm) or rebound_angle (deg).
+nx, nr : int
+    Grid points along the racket (tip to the end of the face) and across it (2..=401).
+compare_racket : str, os.PathLike or Racket, optional
+    A difference map, B - A, against this racket (A: ``racket``).
+compare_tension_lb : float or two floats, optional
+    A difference map between string tensions, lb: T (A as given, B at T) or (T1, T2).
+{_RACKET_DOC}
+@PARAMETERS@
+""",
+    uncertainty: f"""An impact's result fields under uncertain inputs: quantiles and Sobol' indices.
+
+``vary``: the uncertain inputs, each ``"KEY=DIST"`` (DIST ``uniform:LO:HI``,
+``normal:MEAN:SD`` or ``loguniform:LO:HI``) or ``"KEY"`` alone for the distribution declared
+with the parameter; or a dict ``{{KEY: DIST or None}}``. The impact runs ``samples`` (d + 2)
+times over a Saltelli design (scrambled Sobol' sequence, deterministic for ``seed``) on every
+core with the GIL released, with the modal solver unless ``solver`` is given or a hand grip or
+stiffening strings need fd. Returns an :class:`Uncertainty` (DataFrames of the quantiles and
+indices), equal to ``uncertainty --format json``.
+
+Parameters
+----------
+vary : list of str or dict
+    The uncertain inputs.
+samples : int, optional
+    Base samples N of the design, 1..=65536 (default 256).
+seed : int, optional
+    Seed of the sequence and the bootstrap (default 0).
+{_RACKET_DOC}
+@PARAMETERS@
+""",
+}
+
+
+def _signature(function, names: list[str]) -> inspect.Signature:
+    """The function's own parameters, then every impact parameter as a keyword (default None:
+    the default named in the docstring)."""
+    own = list(inspect.signature(function).parameters.values())
+    own = [q for q in own if q.kind is not inspect.Parameter.VAR_KEYWORD]
+    extra = [inspect.Parameter(n, inspect.Parameter.KEYWORD_ONLY, default=None) for n in names]
+    return inspect.Signature(own + extra)
+
+
+#: The parameters a map sets itself, with why (the grid sets the impact point, the map its
+#: solver), as the library declares them.
+_MAP_SETS: dict[str, str] = dict(json.loads(_native.map_sets()))
+#: The parameters a function does not take.
+_EXCLUDED = {face_map: set(_MAP_SETS)}
+
+
+def _taken(function) -> list[dict[str, Any]]:
+    """The parameters ``function`` takes as keywords."""
+    return [p for p in _PARAMS if p["key"] not in _EXCLUDED.get(function, ())]
+
+
+def _docstring(function) -> str:
+    """The function's docstring with every parameter it takes."""
+    return _DOCS[function].replace("@PARAMETERS@", "\n".join(_param_doc(p) for p in _taken(function)))
+
+
+for _f in _DOCS:
+    _f.__doc__ = _docstring(_f)
+    _f.__signature__ = _signature(_f, [p["name"] for p in _taken(_f)])
+del _f

@@ -1,0 +1,118 @@
+"""Every bad input raises: a bad value ValueError with the command line's one-line message, an
+unknown keyword or a value of the wrong type TypeError; nothing is printed."""
+
+import numpy as np
+import pytest
+
+import racket_impact as ri
+
+from conftest import cli_error, flags
+
+# (keywords, the same on the command line)
+VALUE_ERRORS = [
+    (ri.simulate, {"ks": 0.5}, ["simulate"]),
+    (ri.simulate, {"p": 1}, ["simulate"]),
+    (ri.simulate, {"x": 0.9}, ["simulate"]),
+    (ri.simulate, {"ks": float("nan")}, ["simulate"]),
+    (ri.simulate, {"ks": "1e-400"}, ["simulate"]),
+    (ri.simulate, {"segments": 2}, ["simulate"]),
+    (ri.simulate, {"solver": "modal", "dt": 1e-6}, ["simulate"]),
+    (ri.simulate, {"frame": "rigid", "angle_deg": 30}, ["simulate"]),
+    (ri.simulate, {"racket": "nope"}, ["simulate"]),
+    (ri.simulate, {"config": "missing.toml"}, ["simulate"]),
+    (ri.simulate, {"string": "alu-power-16", "mu": 0.3, "angle_deg": 20}, ["simulate"]),
+    # (a value the command line's flag parser refuses before the library sees it: the message
+    # of the library's own reading, as a sweep or a config file gets it)
+    (ri.simulate, {"ks": "abc"}, ["sweep"]),
+    (ri.simulate, {"segments": 39.5}, ["sweep"]),
+    (ri.simulate, {"load": "nodes"}, ["sweep"]),
+    (ri.simulate, {"string": "nope"}, ["sweep"]),
+    (ri.sweep, {"ks": "1:2:3:lin"}, ["sweep"]),
+    (ri.sweep, {"x": "0.1:0.1:3"}, ["sweep"]),
+    (ri.sweep, {"ks": [2e4, 2e4]}, ["sweep"]),
+    (ri.sweep, {"x": [0.1, 0.9]}, ["sweep"]),
+    (ri.sweep, {"x": [0.1, 0.2], "ks": [0.5, 4e4]}, ["sweep"]),
+    (ri.sweep, {"ks": []}, ["sweep"]),
+    (ri.uncertainty, {"vary": ["ks=uniform:2e4:6e4"], "ks": 3e4}, ["uncertainty", "--vary", "ks=uniform:2e4:6e4"]),
+    (ri.uncertainty, {"vary": ["load=uniform:1:2"]}, ["uncertainty", "--vary", "load=uniform:1:2"]),
+    (ri.uncertainty, {"vary": ["ks=uniform:0:6e4"]}, ["uncertainty", "--vary", "ks=uniform:0:6e4"]),
+    (ri.uncertainty, {"vary": ["ks"], "samples": 0}, ["uncertainty", "--vary", "ks", "--samples", "0"]),
+    (ri.face_map, {"quantity": "spin"}, ["map", "--quantity", "spin"]),
+    (ri.face_map, {"nx": 1}, ["map", "--nx", "1"]),
+    (ri.face_map, {"compare_tension_lb": [50, 50]}, ["map", "--compare-tension-lb", "50,50"]),
+]
+
+
+def _cli_args(function, kwargs, command):
+    own = {"vary", "samples", "quantity", "nx", "nr", "compare_tension_lb"}
+    rest = {k: v for k, v in kwargs.items() if k not in own}
+    if function is ri.sweep or command == ["sweep"]:
+        args = []
+        for k, v in rest.items():
+            p = ri._param(k, "t")
+            spec = v if isinstance(v, str) else ",".join(ri._text(p, x) for x in np.atleast_1d(v)) if len(np.atleast_1d(v)) else ""
+            args += [f"--{p['key']}", spec]
+        return command + args
+    return command + flags(rest)
+
+
+@pytest.mark.parametrize("function,kwargs,command", VALUE_ERRORS, ids=lambda v: str(v) if isinstance(v, dict) else "")
+def test_bad_value_is_value_error_with_the_command_lines_message(function, kwargs, command, tmp_cwd, capfd):
+    expected = cli_error(*_cli_args(function, kwargs, command))
+    with pytest.raises(ValueError) as e:
+        function(**kwargs)
+    assert str(e.value) == expected
+    assert "\n" not in str(e.value)
+    out, err = capfd.readouterr()
+    assert out == "" and err == "", "nothing printed"
+
+
+def test_unknown_keyword_is_type_error_with_the_nearest_names():
+    with pytest.raises(TypeError, match=r"simulate\(\) got an unexpected keyword argument 'kss'; did you mean 'ks'"):
+        ri.simulate(kss=3e4)
+    with pytest.raises(TypeError, match=r"sweep\(\) got an unexpected keyword argument 'angle'"):
+        ri.sweep(angle=[1, 2])
+    with pytest.raises(TypeError, match="face_map\\(\\) got an unexpected keyword argument 'x': the grid sets the impact point"):
+        ri.face_map(nx=5, nr=5, x=0.1)
+    with pytest.raises(TypeError, match="face_map\\(\\) got an unexpected keyword argument 'solver': a map runs the modal solver"):
+        ri.face_map(nx=5, nr=5, solver="fd")
+    with pytest.raises(TypeError, match="at least one parameter"):
+        ri.sweep()
+
+
+def test_wrong_types_are_type_errors():
+    with pytest.raises(TypeError, match="ks takes a number, not True"):
+        ri.simulate(ks=True)
+    with pytest.raises(TypeError, match="ks takes a number"):
+        ri.simulate(ks=[2e4])
+    with pytest.raises(TypeError, match="load takes one of the names node, hat"):
+        ri.simulate(load=1)
+    with pytest.raises(TypeError, match="racket is a preset name"):
+        ri.simulate(racket=3)
+    with pytest.raises(TypeError, match="config is a TOML file's path"):
+        ri.simulate(config=3)
+
+
+def test_a_parameter_given_twice_under_two_names():
+    with pytest.raises(ValueError, match="invalid ks = 30000: is given twice"):
+        ri.simulate(ks=2e4, ks_n_per_m=30000)
+
+
+def test_racket_files_and_experiments(tmp_path):
+    with pytest.raises(ValueError, match="^invalid racket = nope: must be a racket preset"):
+        ri.Racket.from_toml("nope")
+    bad = tmp_path / "bad.toml"
+    bad.write_text("mass_g = -3\n")
+    with pytest.raises(ValueError) as e:
+        ri.Racket.from_toml(bad)
+    assert str(e.value) == cli_error("racket", bad)
+    with pytest.raises(ValueError) as e:
+        ri.run_experiment("fig99")
+    assert str(e.value) == cli_error("figures", "--only", "fig99", "--out", tmp_path / "f")
+    with pytest.raises(ValueError):
+        ri.presets(segments=2)
+
+
+def test_a_sweep_axis_is_one_dimensional():
+    with pytest.raises(TypeError, match="x takes one value, a list of values or a spec string, not a 2-d array"):
+        ri.sweep(x=np.ones((2, 2)))
