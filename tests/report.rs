@@ -19,7 +19,7 @@ fn every_verdict_is_pinned_and_reproduced_claims_are_within_tolerance() {
         assert!(r.ours.is_finite(), "{}: ours is not finite", r.claim.id);
         assert_eq!(
             r.verdict, r.claim.expected,
-            "{}: verdict flipped (paper {}, ours {}, error {}, tolerance {})",
+            "{}: verdict flipped (paper {}, ours {}, error {:?}, tolerance {:?})",
             r.claim.id, r.claim.paper, r.ours, r.error, r.tolerance
         );
         if let (Verdict::Reproduced, Some(e), Some((_, tol))) = (r.verdict, r.error, r.tolerance) {

@@ -113,8 +113,9 @@ pub struct Claim {
     pub conclusion_check: String,
     /// Where the conclusion's thresholds come from: the paper's words, or ours with the reason.
     pub threshold_source: String,
-    /// Why the model makes the conclusion true whatever the inputs, where it does (empty
-    /// otherwise): such a conclusion is labelled so and not counted as support.
+    /// Why the model makes the conclusion true by construction, where it does (empty otherwise):
+    /// true whatever the inputs, or set by an input chosen to give it (EI chosen for the paper's
+    /// 125 and 200 Hz). Such a conclusion is labelled so and not counted as support.
     pub by_construction: String,
     /// Why it differs, or how it is computed (one line; shown in the report).
     pub note: String,

@@ -104,7 +104,8 @@ fn conclusions(rows: &[ClaimRobustness]) -> String {
          value less the threshold, at the same inputs) stays from the threshold, in units of that range's \
          width, at the nearest threshold: +1 clears it by a whole width, a negative margin crosses it. *Threshold \
          from*: the paper's words, or ours with the reason (`threshold_source` of the claims file). A conclusion \
-         the model makes true whatever the inputs is *by construction*: labelled so, with the reason, and not \
+         the model makes true whatever the inputs, or that an input was chosen to give (EI for the paper's 125 \
+         and 200 Hz), is *by construction*: labelled so, with the reason, and not \
          counted as support.\n\n**Conclusions: {holds} hold in every sample, {mostly} mostly, {contested} \
          contested, {fails} fail; {independent} do not depend on the sampled inputs; borderline, counted \
          apart: {borderline}; by construction, not counted: {by_construction}.**\n\n",

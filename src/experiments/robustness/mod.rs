@@ -2,7 +2,8 @@
 //! the parameters with an uncertainty declared beside them in
 //! [`keys`] (ball mass, p through the rules' e, k1, k_s, EI through f1,
 //! racket mass, length, I_x, the 30 m/s of Figs 7-8), each drawn as a factor `drawn / nominal`
-//! on the context's value; a Saltelli design of [`SAMPLES`] base samples runs every claim's own
+//! on the context's value, and the shape of the tension calibration between the paper's two
+//! statements of it ([`TENSION_SHAPE`]); a Saltelli design of [`SAMPLES`] base samples runs every claim's own
 //! computation at each point with the modal solver (within 1e-4 of the explicit one), and
 //! each claim gets q05-q95, its Sobol' indices and a verdict: the paper's value holds (is
 //! within the claim's tolerance) over the whole 5-95 % interval, over part of it, or not at
@@ -24,10 +25,10 @@ use crate::render::table::Table;
 use crate::study::sensitivity::{self, quantile_sorted, Design, Summary};
 pub use write::{json, table, text, COLUMNS};
 
-/// Base samples of the design: 128 x (9 inputs + 2) = 1408 evaluations of every claim, about
-/// 6 s of CPU; the experiment also runs twice as many (the `_2x` columns, whose first half are
-/// the same runs) to show how the intervals move when it doubles, about 12 s of CPU in all
-/// (the `make figures` budget is 30 s on two cores).
+/// Base samples of the design: 128 x (10 inputs + 2) = 1536 evaluations of every claim; the
+/// experiment also runs twice as many (the `_2x` columns, whose first half are the same runs)
+/// to show how the intervals move when it doubles (the `make figures` budget is 30 s on two
+/// cores).
 pub const SAMPLES: u64 = 128;
 /// The seed of the design.
 pub const SEED: u32 = 2000;
@@ -379,7 +380,7 @@ pub fn tally(rows: &[ClaimRobustness]) -> ([(Robust, usize); 5], usize) {
 
 /// How many claims have each verdict on the conclusion, in [`Standing::ALL`]'s order, how many
 /// are borderline and how many hold by construction (both counted apart, not under their
-/// verdict: a conclusion the model makes true whatever the inputs is no support).
+/// verdict: a conclusion the model makes true by construction is no support).
 pub fn conclusion_tally(rows: &[ClaimRobustness]) -> ConclusionTally {
     let counted = |r: &&ClaimRobustness| !r.claim.by_construction() && !r.conclusion_borderline();
     ConclusionTally {
