@@ -13,7 +13,7 @@ use crate::render::table::Table;
 
 /// The verdicts with a range to draw, and their palette colours.
 const COLOURS: [(Standing, usize); 4] =
-    [(Standing::Holds, 3), (Standing::Mostly, 5), (Standing::Contested, 1), (Standing::Fails, 4)];
+    [(Standing::Holds, 3), (Standing::Mostly, 5), (Standing::Contested, 1), (Standing::Fails, 6)];
 
 /// The x axis' named ticks: margins in widths of the sampled range, on the asinh scale.
 fn margin_ticks() -> Vec<(f64, String)> {
