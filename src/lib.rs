@@ -42,6 +42,8 @@
 //!         |
 //! src/error.rs           the crate's errors; src/diagnostic.rs, warnings as data
 //! src/numfmt.rs          how numbers are written in messages and tables (imports nothing)
+//! src/numeric/           numerical tools apart from the physics: roots, rank-one modes, short
+//!                        turns, reused buffers (imports nothing)
 //! ```
 //! Arrows point down only: nothing in `model/` or `solve/` knows of tables, plots, files or the
 //! command line.
@@ -66,6 +68,8 @@
 //!   impact, the files of a map, atomic writes.
 //! - [`report`]: the paper's numbers beside ours, collected from the experiments' claims.
 //! - [`numfmt`]: how numbers are written, in messages and in tables, for every layer.
+//! - [`numeric`]: numerical tools apart from the physics (a bracketing root finder, the modes of
+//!   oscillators joined by one spring, short turns, buffers reused from impact to impact).
 //! - [`diagnostic`]: warnings as data, returned with a result ([`study::diagnose`] checks a run).
 //!
 //! ## Example
@@ -90,6 +94,7 @@ pub mod diagnostic;
 pub mod error;
 pub mod experiments;
 pub mod model;
+pub mod numeric;
 pub mod numfmt;
 pub mod params;
 pub mod racket;

@@ -2,20 +2,11 @@
 //! and a `figures` run killed midway leaves every output either as it was or complete (temp
 //! file + rename), never truncated.
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+mod common;
+
+use common::{bin, Scratch};
+use std::path::Path;
 use std::time::{Duration, Instant};
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_racket-impact"))
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("racket-impact-atomic-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 fn committed(name: &str) -> Vec<u8> {
     std::fs::read(Path::new(env!("CARGO_MANIFEST_DIR")).join("figures").join(name)).unwrap()
@@ -23,14 +14,14 @@ fn committed(name: &str) -> Vec<u8> {
 
 #[test]
 fn the_same_command_twice_writes_identical_bytes() {
-    let (a, b) = (scratch("det-a"), scratch("det-b"));
-    for dir in [&a, &b] {
+    let (a, b) = (Scratch::new("det-a"), Scratch::new("det-b"));
+    for dir in [a.dir(), b.dir()] {
         let out =
             bin().args(["figures", "--only", "fig4_energy", "--only", "modes", "--out"]).arg(dir).output().unwrap();
         assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     }
     for f in ["fig4_energy.csv", "fig4_energy.png", "modes.csv", "modes.png"] {
-        let (x, y) = (std::fs::read(a.join(f)).unwrap(), std::fs::read(b.join(f)).unwrap());
+        let (x, y) = (std::fs::read(a.path(f)).unwrap(), std::fs::read(b.path(f)).unwrap());
         assert!(x == y, "{f} differs between two runs");
         assert!(x == committed(f), "{f} differs from the committed figure");
     }
@@ -40,14 +31,13 @@ fn the_same_command_twice_writes_identical_bytes() {
         assert!(out.status.success());
         (out.stdout, std::fs::read(p).unwrap())
     };
-    assert_eq!(series(&a), series(&b));
-    let _ = std::fs::remove_dir_all(a);
-    let _ = std::fs::remove_dir_all(b);
+    assert_eq!(series(a.dir()), series(b.dir()));
 }
 
 #[test]
 fn a_figures_run_killed_midway_leaves_every_output_old_or_complete() {
-    let dir = scratch("kill");
+    let scratch = Scratch::new("kill");
+    let dir = scratch.dir();
     let ids =
         ["fig5a_position_soft", "fig5b_position_stiff", "fig6_string_stiffness", "fig9_stiff_frame", "convergence"];
     let old = b"old output, must survive intact or be replaced whole\n".to_vec();
@@ -56,7 +46,7 @@ fn a_figures_run_killed_midway_leaves_every_output_old_or_complete() {
         std::fs::write(dir.join(f), &old).unwrap();
     }
     let mut cmd = bin();
-    cmd.arg("figures").arg("--out").arg(&dir);
+    cmd.arg("figures").arg("--out").arg(dir);
     for id in ids {
         cmd.args(["--only", id]);
     }
@@ -85,5 +75,4 @@ fn a_figures_run_killed_midway_leaves_every_output_old_or_complete() {
     // (figures publishes every experiment's files together at the end, issue 32: a SIGKILL,
     // which nothing can catch, lands during or after the renames, so some or all are new)
     assert!(replaced >= 1, "the kill landed before any output was published ({replaced} replaced, {kept} kept)");
-    let _ = std::fs::remove_dir_all(dir);
 }

@@ -2,54 +2,11 @@
 //! and output paths, gives exit code 2, exactly one line on stderr naming the field (and, for
 //! range violations, the allowed range), prints no result, and creates or changes no file.
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+mod common;
+
+use common::{bin, Scratch};
 
 const SENTINEL: &str = "previous content\n";
-
-struct Scratch {
-    dir: PathBuf,
-}
-
-impl Scratch {
-    fn new(name: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("racket-impact-bad-{}-{name}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        Scratch { dir }
-    }
-    fn file(&self, name: &str, bytes: &[u8]) -> String {
-        let p = self.dir.join(name);
-        std::fs::write(&p, bytes).unwrap();
-        p.to_str().unwrap().to_string()
-    }
-    fn path(&self, name: &str) -> String {
-        self.dir.join(name).to_str().unwrap().to_string()
-    }
-    /// Every file below the scratch dir with its bytes, to check nothing changed.
-    fn snapshot(&self) -> Vec<(PathBuf, Vec<u8>)> {
-        fn walk(d: &Path, out: &mut Vec<(PathBuf, Vec<u8>)>) {
-            let mut entries: Vec<_> = std::fs::read_dir(d).unwrap().map(|e| e.unwrap().path()).collect();
-            entries.sort();
-            for p in entries {
-                if p.is_dir() {
-                    walk(&p, out);
-                } else {
-                    out.push((p.clone(), std::fs::read(&p).unwrap()));
-                }
-            }
-        }
-        let mut out = Vec::new();
-        walk(&self.dir, &mut out);
-        out
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.dir);
-    }
-}
 
 /// What a case must name: the field, and whether it is a range check (our validation, whose
 /// message states the allowed range) or a parse error (clap or TOML, which names the flag/key).
@@ -71,7 +28,7 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
     let wrong_type = s.file("wrong_type.toml", b"ks = \"stiff\"\n");
     let empty = s.file("empty.toml", b"");
     let blank = s.file("blank.toml", b"  \n\n");
-    let binary = s.file("binary.toml", &[0xff, 0xfe, 0x00, 0x81, 0x13, 0x37, 0xc3, 0x28]);
+    let binary = s.file("binary.toml", [0xff, 0xfe, 0x00, 0x81, 0x13, 0x37, 0xc3, 0x28]);
     let nul = s.file("nul.toml", b"ks = 4e4\0\n");
     let nan_cfg = s.file("nan.toml", b"ks = nan\n");
     let p_cfg = s.file("p.toml", b"p = 1\n");
@@ -79,11 +36,11 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
     let dup = s.file("dup.toml", b"ks = 4e4\nks = 5e4\n");
     let table_cfg = s.file("table.toml", b"[racket]\nei = 150\n");
     let neg_seg = s.file("negseg.toml", b"segments = -3\n");
-    let missing = s.path("missing.toml");
+    let missing = s.arg("missing.toml");
     let a_file = s.file("a_file", b"not a directory\n");
     let under_file = format!("{a_file}/out");
-    let no_dir_series = s.path("no/such/dir/series.csv");
-    let no_dir_report = s.path("no/such/dir/REPORT.md");
+    let no_dir_series = s.arg("no/such/dir/series.csv");
+    let no_dir_report = s.arg("no/such/dir/REPORT.md");
     let bad_racket =
         s.file("bad_racket.toml", b"length_in = 27\nmass_g = -300\ntwistweight_kg_cm2 = 14\nei_n_m2 = 150\n");
     let many_racket = s.file(
@@ -184,7 +141,7 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
         case(&["figures", "--only", "fig4_energy", "--out", &under_file], "out", false),
         case(&["figures", "--only", "modes", "--out", &a_file], "invalid out", false),
         case(&["figures", "--only", "modes", "--out", &under_file], "a_file is a file, not a directory", false),
-        case(&["figures", "--only", "no_such_experiment", "--out", &s.path("figs")], "no_such_experiment", false),
+        case(&["figures", "--only", "no_such_experiment", "--out", &s.arg("figs")], "no_such_experiment", false),
         case(&["report", "--out", &no_dir_report], "out", true),
         case(&["modes", "--count", "0"], "count", true),
         case(&["modes", "--ei", "-150"], "ei", true),
@@ -210,10 +167,10 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
         case(&["speed", "--incoming", "20"], "--swing", false),
         // what two or more compared tensions set (k_s) is not taken from a flag as well
         case(&["speed", "--swing", "100", "--ks", "1e3", "--compare-tension-lb", "50,60"], "compare-tension-lb", false),
-        case(&["map", "--out", &s.path("t.csv"), "--ks", "1e3", "--compare-tension-lb", "50,60"], "ks", false),
-        case(&["map", "--out", &s.path("t.csv"), "--compare-tension-lb", "50,50"], "given twice", false),
+        case(&["map", "--out", &s.arg("t.csv"), "--ks", "1e3", "--compare-tension-lb", "50,60"], "ks", false),
+        case(&["map", "--out", &s.arg("t.csv"), "--compare-tension-lb", "50,50"], "given twice", false),
         case(&["speed", "--swing", "100", "--compare-tension-lb", "50,60,50"], "given twice", false),
-        case(&["sweep", "--out", &s.path("sw.csv"), "--solver", "modal", "--grip", "hand,free"], "solver", true),
+        case(&["sweep", "--out", &s.arg("sw.csv"), "--solver", "modal", "--grip", "hand,free"], "solver", true),
         // options a command does not use are refused, with the reason
         case(&["simulate", "--series-dt", "1e-4"], "series-dt", false),
         case(&["simulate", "--series-end", "0.02"], "series-end", false),
@@ -224,7 +181,7 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
         case(&["modes", "--x", "0.1"], "x", false),
         case(&["racket", "tweener", "--list"], "racket", false),
         // options after the swept pairs, and unknown keys, say so
-        case(&["sweep", "--x", "0.1,0.2", "--out", &s.path("late.csv")], "go before the --KEY SPEC pairs", false),
+        case(&["sweep", "--x", "0.1,0.2", "--out", &s.arg("late.csv")], "go before the --KEY SPEC pairs", false),
         case(&["sweep", "--x", "0.1", "--quiet"], "go before the --KEY SPEC pairs", false),
         case(&["sweep", "--xx", "0.1"], "unknown parameter", false),
         // every problem of a racket file at once
@@ -234,7 +191,7 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
 
     for c in &cases {
         let before = s.snapshot();
-        let out = Command::new(env!("CARGO_BIN_EXE_racket-impact")).args(&c.args).output().unwrap();
+        let out = bin().args(&c.args).output().unwrap();
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{:?}: exit {:?}, stderr {err}", c.args, out.status.code());
         assert_eq!(err.trim_end().lines().count(), 1, "{:?}: not one line: {err}", c.args);
@@ -251,7 +208,7 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
         assert!(!err.contains("panicked"), "{:?}: panic", c.args);
     }
     assert_eq!(std::fs::read_to_string(&series).unwrap(), SENTINEL);
-    assert!(!s.dir.join("figs").exists(), "figures created its output directory for an unknown id");
+    assert!(!s.path("figs").exists(), "figures created its output directory for an unknown id");
 }
 
 /// Numbers in messages read as numbers: a huge value with an exponent, not 31 digits; a
@@ -260,7 +217,7 @@ fn every_bad_input_exits_2_names_the_field_and_writes_nothing() {
 #[test]
 fn numbers_in_messages_are_short_and_readable() {
     let stderr = |args: &[&str]| {
-        let o = Command::new(env!("CARGO_BIN_EXE_racket-impact")).args(args).output().unwrap();
+        let o = bin().args(args).output().unwrap();
         assert_eq!(o.status.code(), Some(2), "{args:?}");
         String::from_utf8(o.stderr).unwrap()
     };

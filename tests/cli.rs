@@ -1,27 +1,13 @@
 //! The command-line contract (SPEC.md section 5): results match the library, and every class of
 //! bad input gives one line on stderr naming the field, exit code 2, and no output file.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
+mod common;
+
+use common::{bin, run, Scratch};
 
 use approx::assert_relative_eq;
 use racket_impact::params::{LoadRule, Params};
 use racket_impact::simulate;
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_racket-impact"))
-}
-
-fn run(args: &[&str]) -> Output {
-    bin().args(args).output().expect("binary runs")
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("racket-impact-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 #[test]
 fn json_run_parses_and_matches_the_library() {
@@ -90,7 +76,8 @@ fn csv_and_text_formats_carry_the_same_e_a() {
 
 #[test]
 fn config_file_uses_the_flag_names_and_flags_win() {
-    let dir = scratch("config");
+    let scratch = Scratch::new("config");
+    let dir = scratch.dir();
     let cfg = dir.join("c.toml");
     std::fs::write(&cfg, "x = 0.158\nr = 0.0\nks = 2e4\nload = \"node\"\n").unwrap();
     let cfg_s = cfg.to_str().unwrap();
@@ -105,7 +92,8 @@ fn config_file_uses_the_flag_names_and_flags_win() {
 
 #[test]
 fn series_file_holds_time_force_and_every_energy_term() {
-    let dir = scratch("series");
+    let scratch = Scratch::new("series");
+    let dir = scratch.dir();
     let path = dir.join("s.csv");
     let out = run(&["simulate", "--series", path.to_str().unwrap(), "--series-end", "0.02"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
@@ -158,7 +146,8 @@ fn modes_reports_125_hz() {
 
 #[test]
 fn unwritable_series_path_is_an_error_and_leaves_nothing() {
-    let dir = scratch("unwritable");
+    let scratch = Scratch::new("unwritable");
+    let dir = scratch.dir();
     let path = dir.join("no-such-dir").join("s.csv");
     let out = run(&["simulate", "--series", path.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(2));
@@ -184,7 +173,8 @@ fn a_recontact_is_reported_on_stderr_and_in_the_json() {
 
 #[test]
 fn sweep_streams_the_cartesian_product_in_order_and_matches_simulate() {
-    let dir = scratch("sweep");
+    let scratch = Scratch::new("sweep");
+    let dir = scratch.dir();
     let path = dir.join("s.csv");
     let out =
         run(&["sweep", "--out", path.to_str().unwrap(), "--ks", "2e4,4e4", "--x", "0.05:0.25:5", "--load", "node"]);
@@ -225,12 +215,13 @@ fn sweep_streams_the_cartesian_product_in_order_and_matches_simulate() {
 
 #[test]
 fn a_sweep_with_a_bad_value_anywhere_writes_nothing() {
-    let dir = scratch("sweep-bad");
+    let scratch = Scratch::new("sweep-bad");
+    let dir = scratch.dir();
     let path = dir.join("s.csv");
     let out = run(&["sweep", "--out", path.to_str().unwrap(), "--x", "0.1:0.9:5"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("invalid x = 0.9"));
-    assert!(std::fs::read_dir(&dir).unwrap().next().is_none(), "left a file behind");
+    assert!(std::fs::read_dir(dir).unwrap().next().is_none(), "left a file behind");
     let stdout = run(&["sweep", "--x", "0.1:0.9:5"]);
     assert!(stdout.stdout.is_empty());
 }
@@ -269,7 +260,8 @@ fn one_compared_tension_keeps_the_given_ks_in_the_first_row() {
 /// fixed ones), the first failing point in the sweep's order; one line, exit 2, no file.
 #[test]
 fn a_failing_sweep_point_is_named_by_its_swept_values() {
-    let dir = scratch("sweep-point");
+    let scratch = Scratch::new("sweep-point");
+    let dir = scratch.dir();
     let out = dir.join("f.csv");
     let o = run(&[
         "sweep",
@@ -294,7 +286,6 @@ fn a_failing_sweep_point_is_named_by_its_swept_values() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.starts_with("error: at mu = 2.1, x = 0.1: invalid mu = 2.1: "), "{err}");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// No command at all: clap's usage and command list, laid out on several lines on stderr
@@ -313,7 +304,8 @@ fn no_command_prints_the_help_on_several_lines() {
 /// An experiment named twice with --only runs once (one progress line, its two files).
 #[test]
 fn an_experiment_given_twice_runs_once() {
-    let dir = scratch("only-twice");
+    let scratch = Scratch::new("only-twice");
+    let dir = scratch.dir();
     let out = dir.join("figs");
     let o = run(&["figures", "--only", "modes", "--only", "modes", "--out", out.to_str().unwrap()]);
     let err = String::from_utf8_lossy(&o.stderr);
@@ -323,7 +315,6 @@ fn an_experiment_given_twice_runs_once() {
         std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     names.sort();
     assert_eq!(names, vec!["modes.csv", "modes.png"]);
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Each option's help states its default once: the declaration's text carries no default of
@@ -386,7 +377,8 @@ fn json_prints_no_negative_zero() {
 /// about unused config keys (a config file may be shared, so it is not refused as a flag is).
 #[test]
 fn a_config_ks_under_two_compared_tensions_is_named_as_unused() {
-    let dir = scratch("tension-config");
+    let scratch = Scratch::new("tension-config");
+    let dir = scratch.dir();
     let cfg = dir.join("cfg.toml");
     std::fs::write(&cfg, "ks = 1000\n").unwrap();
     let o = run(&["speed", "--swing", "100", "--config", cfg.to_str().unwrap(), "--compare-tension-lb", "50,60"]);
@@ -395,5 +387,4 @@ fn a_config_ks_under_two_compared_tensions_is_named_as_unused() {
     let notes: Vec<&str> = err.lines().filter(|l| l.contains("not used here")).collect();
     assert_eq!(notes.len(), 1, "{err}");
     assert!(notes[0].contains("ks (set on the command line)"), "{err}");
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -5,16 +5,14 @@
 //! JSON, map table and title) names the angle, azimuth, spin and friction it was run at, and
 //! the spin convention is written next to every spin printed.
 
-use std::process::Command;
+mod common;
+
+use common::bin;
 
 use racket_impact::params::{Params, SolverKind};
 use racket_impact::render::impact::{recorded_oblique, result_csv, result_text, sign_remark};
 use racket_impact::simulate;
 use racket_impact::study::map::{FaceMap, Quantity};
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_racket-impact"))
-}
 
 /// The paper's racket hit at `x`, `r` (m), 10 m/s, at an angle, azimuth and spin, modal solver.
 fn oblique(x: f64, r: f64, angle_deg: f64, azimuth_deg: f64, spin_rpm: f64) -> Params {

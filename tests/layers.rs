@@ -12,7 +12,9 @@ use std::path::{Path, PathBuf};
 /// `cli` (with `main.rs`) is the binary on top: the library never names it, and the test
 /// checks that too (no `crate::cli` anywhere in the library).
 const LAYERS: &[&[&str]] = &[
-    // how numbers are written; the one error type; warnings as data
+    // numerical tools apart from the physics (roots, rank-one modes, short turns, buffers); how
+    // numbers are written; the one error type; warnings as data
+    &["numeric"],
     &["numfmt"],
     &["error"],
     &["diagnostic"],

@@ -3,21 +3,15 @@
 //! degenerate fields, the CLI refuses bad input with one line and exit code 2 and writes
 //! nothing, runs are byte-identical, and the maps committed in figures/ are current.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
+
+use common::{bin, run, Scratch};
+use std::path::Path;
 
 use racket_impact::params::{ks_from_tension_lb, LoadRule, Overrides, Params};
 use racket_impact::render::heatmap::{self, contour_segments, HeatMap};
 use racket_impact::study::map::{params_at, DiffMap, Face, FaceMap, Quantity};
 use racket_impact::{racket, simulate};
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_racket-impact"))
-}
-
-fn run(args: &[&str]) -> Output {
-    bin().args(args).output().expect("binary runs")
-}
 
 fn preset(name: &str) -> Params {
     racket::resolve(Some(&racket::load(name).unwrap()), &Overrides::default()).unwrap().0
@@ -27,34 +21,6 @@ fn paper_node() -> Params {
     let mut p = Params::default();
     p.numerics.load = LoadRule::Node;
     p
-}
-
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(name: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("racket-impact-map-{}-{name}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        Scratch(dir)
-    }
-    fn path(&self, name: &str) -> String {
-        self.0.join(name).to_str().unwrap().to_string()
-    }
-    fn files(&self) -> Vec<String> {
-        let mut v: Vec<String> = std::fs::read_dir(&self.0)
-            .unwrap()
-            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-            .collect();
-        v.sort();
-        v
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
 }
 
 #[test]
@@ -229,16 +195,16 @@ fn degenerate_heat_maps_render() {
         title: "all NaN".into(),
         ..HeatMap::default()
     };
-    heatmap::render_png("nan", &nan, Path::new(&dir.path("nan.png"))).unwrap();
+    heatmap::render_png("nan", &nan, Path::new(&dir.arg("nan.png"))).unwrap();
     let constant = HeatMap { z: vec![0.25; 9], title: "constant".into(), ..nan.clone() };
-    heatmap::render_png("const", &constant, Path::new(&dir.path("const.png"))).unwrap();
+    heatmap::render_png("const", &constant, Path::new(&dir.arg("const.png"))).unwrap();
     let tiny = HeatMap { xs: vec![0.0, 1.0], ys: vec![0.0, 1.0], z: vec![1.0, 2.0, 3.0, 4.0], ..nan.clone() };
-    heatmap::render_png("tiny", &tiny, Path::new(&dir.path("tiny.png"))).unwrap();
+    heatmap::render_png("tiny", &tiny, Path::new(&dir.arg("tiny.png"))).unwrap();
     // an empty map from the library (a 2 x 2 grid has no point inside the face) renders too
     let m = FaceMap::compute(&paper_node(), 2, 2, &mut |_| {}).unwrap();
     assert!(m.is_empty());
-    heatmap::render_png("empty", &m.heatmap(Quantity::Power, "paper"), Path::new(&dir.path("empty.png"))).unwrap();
-    assert_eq!(dir.files(), vec!["const.png", "empty.png", "nan.png", "tiny.png"]);
+    heatmap::render_png("empty", &m.heatmap(Quantity::Power, "paper"), Path::new(&dir.arg("empty.png"))).unwrap();
+    assert_eq!(dir.names(), vec!["const.png", "empty.png", "nan.png", "tiny.png"]);
 }
 
 /// One line on stderr, exit code 2, nothing on stdout, no file in the scratch directory.
@@ -249,18 +215,18 @@ fn refused(dir: &Scratch, args: &[&str], names: &str) {
     assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: not one line: {err}");
     assert!(err.contains(names), "{args:?}: '{err}' does not name {names}");
     assert!(out.stdout.is_empty(), "{args:?} printed a result");
-    assert!(dir.files().iter().all(|f| f == "bad.toml"), "{args:?} wrote {:?}", dir.files());
+    assert!(dir.names().iter().all(|f| f == "bad.toml"), "{args:?} wrote {:?}", dir.names());
 }
 
 #[test]
 fn bad_input_is_one_line_exit_2_and_writes_nothing() {
     let s = Scratch::new("bad");
-    let out = s.path("m.csv");
-    let bad_toml = s.0.join("bad.toml");
+    let out = s.arg("m.csv");
+    let bad_toml = s.path("bad.toml");
     std::fs::write(&bad_toml, "length_cm = 71\nmass_g = 'heavy'\n").unwrap();
     let bad_toml = bad_toml.to_str().unwrap().to_string();
-    let missing_dir = s.path("no/such/dir/m.csv");
-    let png_out = s.path("m.png");
+    let missing_dir = s.arg("no/such/dir/m.csv");
+    let png_out = s.arg("m.png");
     let o = out.as_str();
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (vec!["map", "--nx", "1", "--out", o], "nx"),
@@ -305,24 +271,22 @@ fn identical_runs_are_byte_identical_and_match_the_library() {
             out.to_string(),
         ]
     };
-    let (a, b) = (s.path("a.csv"), s.path("b.csv"));
+    let (a, b) = (s.arg("a.csv"), s.arg("b.csv"));
     for out in [&a, &b] {
         let o = bin().args(args(out)).output().unwrap();
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     }
     for ext in ["csv", "png", "json"] {
-        let (x, y) = (
-            std::fs::read(s.0.join(format!("a.{ext}"))).unwrap(),
-            std::fs::read(s.0.join(format!("b.{ext}"))).unwrap(),
-        );
+        let (x, y) =
+            (std::fs::read(s.path(&format!("a.{ext}"))).unwrap(), std::fs::read(s.path(&format!("b.{ext}"))).unwrap());
         assert!(x == y, "{ext} differs between identical runs");
     }
-    assert_eq!(s.files(), vec!["a.csv", "a.json", "a.png", "b.csv", "b.json", "b.png"]);
+    assert_eq!(s.names(), vec!["a.csv", "a.json", "a.png", "b.csv", "b.json", "b.png"]);
     // the CSV is the library's table
     let m = FaceMap::compute(&preset("tweener"), 9, 7, &mut |_| {}).unwrap();
     assert_eq!(std::fs::read_to_string(&a).unwrap(), m.table().to_csv());
     // the metadata carries the full parameters, the quantity and the node
-    let meta: serde_json::Value = serde_json::from_slice(&std::fs::read(s.0.join("a.json")).unwrap()).unwrap();
+    let meta: serde_json::Value = serde_json::from_slice(&std::fs::read(s.path("a.json")).unwrap()).unwrap();
     assert_eq!(meta["quantity"], "theta");
     assert_eq!(meta["grid"]["nx"], 9);
     let params: Params = serde_json::from_value(meta["a"]["params"].clone()).unwrap();
@@ -334,9 +298,9 @@ fn identical_runs_are_byte_identical_and_match_the_library() {
 #[test]
 fn flags_and_config_apply_to_every_point_but_config_x_r_are_ignored() {
     let s = Scratch::new("config");
-    let cfg = s.0.join("c.toml");
+    let cfg = s.path("c.toml");
     std::fs::write(&cfg, "ks = 2.5e4\nx = 0.6\nr = 0.2\nv1 = 20\n").unwrap();
-    let out = s.path("m.csv");
+    let out = s.arg("m.csv");
     let o = run(&[
         "map",
         "--config",
@@ -360,7 +324,7 @@ fn flags_and_config_apply_to_every_point_but_config_x_r_are_ignored() {
     let m = FaceMap::compute(&p, 5, 5, &mut |_| {}).unwrap();
     assert_eq!(std::fs::read_to_string(&out).unwrap(), m.table().to_csv());
     // tensions: T1,T2 against the library's difference map
-    let out = s.path("d.csv");
+    let out = s.arg("d.csv");
     let o =
         run(&["map", "--racket", "tweener", "--compare-tension-lb", "50,60", "--nx", "5", "--nr", "5", "--out", &out]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
@@ -384,7 +348,7 @@ fn committed_maps_are_current() {
         let k = args.iter().position(|a| a == "--out").expect("--out in the Makefile line") + 1;
         let committed = root.join(&args[k]);
         let name = committed.file_name().unwrap().to_str().unwrap().to_string();
-        args[k] = s.path(&name);
+        args[k] = s.arg(&name);
         let o = bin().args(&args).output().unwrap();
         assert!(o.status.success(), "{line}: {}", String::from_utf8_lossy(&o.stderr));
         for ext in ["csv", "png", "json"] {

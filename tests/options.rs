@@ -16,41 +16,17 @@
 #[allow(dead_code, unused_imports, unused_macros)]
 #[path = "../src/cli/mod.rs"]
 mod cli;
+mod common;
 
+use common::{bin, Scratch};
 use std::collections::{BTreeMap, HashMap};
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
 use clap::CommandFactory;
 use racket_impact::params::spec::{UsedWhen, Values};
 use racket_impact::params::{keys, used, Overrides, Params};
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_racket-impact"))
-}
-
-/// A fresh directory each run works in (its files are part of the output).
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(name: &str) -> Self {
-        // (runs go on in parallel: each its own folder)
-        static COUNT: AtomicUsize = AtomicUsize::new(0);
-        let n = COUNT.fetch_add(1, Ordering::Relaxed);
-        let dir = std::env::temp_dir().join(format!("racket-impact-options-{}-{n}-{name}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        Scratch(dir)
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
 
 /// What a run produced: its exit code and everything a user sees of it.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -133,11 +109,11 @@ fn noted(seen: &Seen, key: &str) -> bool {
 /// Run `racket-impact <command> <args>` in a fresh directory holding `cfg.toml` = `config`.
 fn run(command: &str, args: &[String], config: &str) -> Seen {
     let s = Scratch::new(&format!("{command}-{}", args.join("_").replace(['/', '.', ' '], "-")));
-    std::fs::write(s.0.join("cfg.toml"), config).unwrap();
-    let o = bin().current_dir(&s.0).arg(command).args(args).output().unwrap();
+    std::fs::write(s.path("cfg.toml"), config).unwrap();
+    let o = bin().current_dir(s.dir()).arg(command).args(args).output().unwrap();
     let stderr = String::from_utf8_lossy(&o.stderr).into_owned();
     let mut files = BTreeMap::new();
-    files_below(&s.0, &s.0, &mut files);
+    files_below(s.dir(), s.dir(), &mut files);
     Seen {
         code: o.status.code(),
         stdout: results_only(&without_times(&String::from_utf8_lossy(&o.stdout))),
@@ -233,9 +209,20 @@ fn base(command: &str) -> Vec<&'static str> {
         "map" => vec!["--nx", "7", "--nr", "5", "--format", "json"],
         "sweep" => vec!["--x", "0.1,0.2"],
         "uncertainty" => vec!["--vary", "v1=uniform:6:8", "--samples", "8", "--format", "json"],
+        // normal incidence: a frame of either kind runs it, and an oblique ball's parameters are
+        // noted as not exercised (the probes of the oblique fit run over LAB)
+        "calibrate" => vec![NORMAL, "--fit", "ks", "--hold-out", "none", "--format", "json"],
         _ => vec!["--format", "json"],
     }
 }
+
+/// `calibrate`'s measurements in its probes: free-racket oblique shots that leave every
+/// parameter to the flags (no tension, string or impact point of their own).
+const LAB: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/calibrate_lab.csv");
+/// The same shots with the racket in a hand (the hand's parameters).
+const HAND: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/calibrate_hand.csv");
+/// Normal-incidence rows (e_a): the base of calibrate's parameter probes.
+const NORMAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/calibrate_normal.csv");
 
 /// The probes of the options that are not impact parameters: (command, option id, the
 /// arguments with the option, the same without it). The config file of every run is
@@ -295,6 +282,99 @@ const PROBES: &[(&str, &str, &[&str], &[&str])] = &[
         "v1",
         &["--vary", "ks=uniform:3e4:5e4", "--samples", "8", "--v1", "10"],
         &["--vary", "ks=uniform:3e4:5e4", "--samples", "8"],
+    ),
+    (
+        "calibrate",
+        "quiet",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--quiet", "--mb", "0.3"],
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--mb", "0.3"],
+    ),
+    (
+        "calibrate",
+        "racket",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--racket", "tweener"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "config",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--config", "cfg.toml"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "format",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--format", "json"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    ("calibrate", "measurements", &[LAB, "--fit", "kt", "--hold-out", "none"], &["--fit", "kt", "--hold-out", "none"]),
+    (
+        "calibrate",
+        "fit",
+        &[LAB, "--fit", "mu-scale", "--hold-out", "none"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "range",
+        &[LAB, "--fit", "kt", "--range", "kt=1e4:1e5", "--hold-out", "none"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "rows",
+        &[LAB, "--fit", "kt", "--rows", "L01-L03", "--hold-out", "none"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "weights",
+        &[LAB, "--fit", "kt", "--weights", "uncertainty", "--hold-out", "none"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    ("calibrate", "hold_out", &[LAB, "--fit", "kt", "--hold-out", "row"], &[LAB, "--fit", "kt", "--hold-out", "none"]),
+    (
+        "calibrate",
+        "plot",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--plot", "c.png"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "out",
+        &[LAB, "--fit", "kt", "--hold-out", "none", "--out", "c.txt"],
+        &[LAB, "--fit", "kt", "--hold-out", "none"],
+    ),
+    // the fitted parameter's own flag is refused: probed while another is fitted
+    (
+        "calibrate",
+        "kt",
+        &[LAB, "--fit", "mu-scale", "--hold-out", "none", "--kt", "3e4"],
+        &[LAB, "--fit", "mu-scale", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "hand-stiffness",
+        &[HAND, "--fit", "kt", "--hold-out", "none", "--hand-stiffness", "8000"],
+        &[HAND, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "hand-damping",
+        &[HAND, "--fit", "kt", "--hold-out", "none", "--hand-damping", "30"],
+        &[HAND, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "grip-length",
+        &[HAND, "--fit", "kt", "--hold-out", "none", "--grip-length", "0.2"],
+        &[HAND, "--fit", "kt", "--hold-out", "none"],
+    ),
+    (
+        "calibrate",
+        "ks",
+        &[NORMAL, "--fit", "k1", "--hold-out", "none", "--ks", "3e4"],
+        &[NORMAL, "--fit", "k1", "--hold-out", "none"],
     ),
     ("figures", "only", &["--only", "modes"], &[]),
     ("figures", "out", &["--only", "modes", "--out", "elsewhere"], &["--only", "modes"]),
@@ -379,14 +459,18 @@ fn sample_value(key: &str) -> String {
 /// The flags a parameter needs to be used by `command` (a variant selected, an oblique ball).
 fn context(command: &str, key: &str) -> Vec<&'static str> {
     match key {
+        // calibrate's base rows set the shot (the grip and the incidence are theirs)
+        "dt" if command == "calibrate" => vec!["--solver", "fd"],
+        "string-stiffening" | "stiffening-deflection" if command == "calibrate" => vec!["--strings", "stiffening"],
+        _ if command == "calibrate" => vec![],
         "mu-ss" if command == "speed" => vec!["--swing-path-deg", "20", "--tangential", "bed"],
         "mu-ss" => vec!["--angle-deg", "30", "--tangential", "bed"],
-        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string"
+        "azimuth-deg" | "mu" | "mu-scale" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string"
             if command == "speed" =>
         {
             vec!["--swing-path-deg", "20"]
         }
-        "azimuth-deg" | "mu" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string" => {
+        "azimuth-deg" | "mu" | "mu-scale" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string" => {
             vec!["--angle-deg", "30"]
         }
         "hand-stiffness" | "hand-damping" | "grip-length" => vec!["--grip", "hand"],
@@ -432,7 +516,7 @@ fn every_option_changes_the_output_or_is_refused(runs: &Runs) -> (usize, Vec<Str
                 (None, Some(spec)) => {
                     // sweep and uncertainty run modal unless told: their other solver is fd
                     let value = match (spec.key, command.as_str()) {
-                        ("solver", "sweep" | "uncertainty") => "fd".to_string(),
+                        ("solver", "sweep" | "uncertainty" | "calibrate") => "fd".to_string(),
                         _ => sample_value(spec.key),
                     };
                     let flag = [format!("--{}", spec.key), value];

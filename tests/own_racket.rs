@@ -1,21 +1,14 @@
 //! Issue 5 at the command line: `--racket FILE|PRESET` on every command, flags over file
 //! values, the fit report, the speed calculator, and clear one-line errors for bad files.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
+mod common;
+
+use common::{run, Scratch};
 
 use approx::assert_relative_eq;
 use racket_impact::params::{ks_from_tension_lb, Params};
 use racket_impact::racket::{load, resolve};
 use racket_impact::simulate;
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_racket-impact"))
-}
-
-fn run(args: &[&str]) -> Output {
-    bin().args(args).output().expect("binary runs")
-}
 
 fn ok(args: &[&str]) -> String {
     let out = run(args);
@@ -29,13 +22,6 @@ fn fails(args: &[&str]) -> String {
     let err = String::from_utf8(out.stderr).unwrap();
     assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
     err
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("racket-impact-own-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 fn json(args: &[&str]) -> serde_json::Value {
@@ -86,7 +72,8 @@ fn a_preset_on_the_command_line_equals_the_library_fit_and_flags_override_it() {
 
 #[test]
 fn a_racket_file_works_in_simulate_modes_sweep_speed_and_figures() {
-    let dir = scratch("file");
+    let scratch = Scratch::new("file");
+    let dir = scratch.dir();
     let file = dir.join("mine.toml");
     std::fs::write(
         &file,
@@ -109,7 +96,6 @@ fn a_racket_file_works_in_simulate_modes_sweep_speed_and_figures() {
     let paper =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/figures/fig5b_position_stiff.csv")).unwrap();
     assert_ne!(csv, paper, "the figure must be of the user's racket");
-    let _ = std::fs::remove_dir_all(dir);
 }
 
 #[test]
@@ -144,7 +130,8 @@ fn speed_follows_the_frame_transformation_and_compares_tensions() {
 
 #[test]
 fn bad_racket_input_is_one_line_with_the_key() {
-    let dir = scratch("bad");
+    let scratch = Scratch::new("bad");
+    let dir = scratch.dir();
     let bad = dir.join("bad.toml");
     std::fs::write(&bad, "length_in = 27\nmass_g = 300\nmas_g = 3\n").unwrap();
     let err = fails(&["simulate", "--racket", bad.to_str().unwrap()]);
@@ -158,7 +145,6 @@ fn bad_racket_input_is_one_line_with_the_key() {
     assert!(err.contains("swing"), "{err}");
     let err = fails(&["simulate", "--racket", "tweener", "--x", "0.5"]);
     assert!(err.contains("invalid x") && err.contains("string face"), "{err}");
-    let _ = std::fs::remove_dir_all(dir);
 }
 
 /// A fit row without a target (ei, the densities) has null target and rel_error in the JSON,
@@ -184,7 +170,8 @@ fn racket_json_gives_null_for_a_missing_target() {
 #[test]
 fn racket_help_names_every_file_key() {
     let help = ok(&["racket", "--help"]);
-    let dir = scratch("help-keys");
+    let scratch = Scratch::new("help-keys");
+    let dir = scratch.dir();
     for (file, text) in [("racket.toml", "nosuchkey = 1\n"), ("ball.toml", "mass_g = 300\n[ball]\nnosuchkey = 1\n")] {
         let path = dir.join(file);
         std::fs::write(&path, text).unwrap();

@@ -38,42 +38,11 @@
 
 #![cfg(unix)]
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use common::{bin, Scratch};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_racket-impact"))
-}
-
-/// A scratch directory, removed on drop.
-struct Scratch(tempfile::TempDir);
-
-impl Scratch {
-    fn new() -> Self {
-        Scratch(tempfile::tempdir().expect("scratch dir"))
-    }
-    fn path(&self, name: &str) -> PathBuf {
-        self.0.path().join(name)
-    }
-    fn file(&self, name: &str, text: &str) -> PathBuf {
-        let p = self.path(name);
-        std::fs::write(&p, text).unwrap();
-        p
-    }
-    /// Every name in the directory (hidden temporary files too), sorted.
-    fn names(&self) -> Vec<String> {
-        let mut v: Vec<String> = std::fs::read_dir(self.0.path())
-            .unwrap()
-            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-            .collect();
-        v.sort();
-        v
-    }
-    /// Run the binary in this directory.
-    fn run(&self, args: &[&str]) -> Output {
-        bin().current_dir(self.0.path()).args(args).stdin(Stdio::null()).output().expect("run")
-    }
-}
 
 fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
@@ -101,7 +70,7 @@ const RACKET: &str = "name = \"g\"\nlength_in = 27\nmass_g = 300\nbalance_cm = 3
 
 #[test]
 fn inertia_factor_1e_30_is_refused_by_every_command() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     for args in [
         vec!["simulate", "--angle-deg", "30", "--ball-inertia-factor", "1e-30"],
         vec!["sweep", "--angle-deg", "30", "--ball-inertia-factor", "1e-30", "--x", "0.1,0.2"],
@@ -113,7 +82,7 @@ fn inertia_factor_1e_30_is_refused_by_every_command() {
 
 #[test]
 fn tiny_inertia_factors_never_run_to_nonsense() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     for alpha in ["1e-25", "1e-100", "1e-300", "0.05", "0.7", "1"] {
         let o = s.run(&["simulate", "--angle-deg", "30", "--ball-inertia-factor", alpha]);
         refused(&o, "ball-inertia-factor");
@@ -146,7 +115,7 @@ fn bounded(o: &Output, what: &str) {
 
 #[test]
 fn modal_stiff_contact_is_refused_like_fd() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     let stiff = ["--v1", "1e-3", "--k1", "1e9", "--ks", "1e12", "--segments", "400", "--ei", "1e-2"];
     let mut args = vec!["simulate", "--solver", "fd"];
     args.extend(stiff);
@@ -162,7 +131,7 @@ fn modal_stiff_contact_is_refused_like_fd() {
 
 #[test]
 fn an_output_that_is_an_input_is_refused_before_any_work() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (vec!["sweep", "--racket", "g.toml", "--out", "g.toml", "--x", "0.1"], "g.toml"),
         (vec!["sweep", "--config", "c.toml", "--out", "./c.toml", "--x", "0.1"], "c.toml"),
@@ -200,7 +169,7 @@ fn an_output_that_is_an_input_is_refused_before_any_work() {
 
 #[test]
 fn an_output_linked_to_an_input_is_refused() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     s.file("c.toml", CONFIG);
     std::os::unix::fs::symlink("c.toml", s.path("out.csv")).unwrap();
     std::fs::hard_link(s.path("c.toml"), s.path("hard.csv")).unwrap();
@@ -217,7 +186,7 @@ fn an_output_linked_to_an_input_is_refused() {
 
 #[test]
 fn no_command_writes_toml() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     s.file("g.toml", RACKET);
     for args in [
         vec!["report", "--out", "g.toml"],
@@ -234,7 +203,7 @@ fn no_command_writes_toml() {
 
 #[test]
 fn figures_publish_all_or_none() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     std::fs::create_dir(s.path("out")).unwrap();
     std::fs::write(s.path("out/fig4_energy.csv"), "old").unwrap();
     // the later experiment's figure cannot be written: a directory is in its place
@@ -259,7 +228,7 @@ fn figures_publish_all_or_none() {
 
 #[test]
 fn map_says_wrote_only_after_publishing() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     let o = s.run(&["map", "--nx", "3", "--nr", "3", "--out", "m.csv"]);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(stdout(&o).contains("wrote m.csv, m.png, m.json"), "{}", stdout(&o));
@@ -269,7 +238,7 @@ fn map_says_wrote_only_after_publishing() {
     }
     let full = std::fs::OpenOptions::new().write(true).open("/dev/full").unwrap();
     let o = bin()
-        .current_dir(s.0.path())
+        .current_dir(s.dir())
         .args(["map", "--nx", "3", "--nr", "3", "--out", "m.csv"])
         .stdout(full)
         .output()
@@ -286,9 +255,9 @@ fn map_says_wrote_only_after_publishing() {
 /// Start a sweep too long to finish (a million impacts) writing `big.csv`, wait until its
 /// temporary file exists, send `signal`, and check the exit status and that nothing is left.
 fn interrupt_sweep(signal: &str, status: i32) {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     let mut child = bin()
-        .current_dir(s.0.path())
+        .current_dir(s.dir())
         .args(["sweep", "--out", "big.csv", "--x", "0.02:0.6:1000", "--ks", "1e4:6e4:1000"])
         .stdin(Stdio::null())
         .stdout(Stdio::null())
@@ -326,7 +295,7 @@ fn sigterm_during_sweep_removes_its_temporary_file() {
 
 #[test]
 fn config_and_racket_files_must_be_regular_and_small() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     let fifo = s.path("fifo.toml");
     assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
     let big = s.path("big.toml");
@@ -373,7 +342,7 @@ fn licence_citation_and_changelog_are_there() {
 
 #[test]
 fn sweep_ranges_say_what_they_run() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     refused(&s.run(&["sweep", "--x", "0.1:0.2:1"]), "ignores the stop");
     refused(&s.run(&["sweep", "--x", "0.1:0.1:5"]), "the ends are equal");
     refused(&s.run(&["sweep", "--segments", "4:400:1000"]), "give a count of at most 397");
@@ -386,7 +355,7 @@ fn sweep_ranges_say_what_they_run() {
 
 #[test]
 fn duplicates_in_lists_are_refused() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     refused(&s.run(&["sweep", "--load", "node,hat,node"]), "node is given twice");
     refused(&s.run(&["sweep", "--x", "0.1,1e-1"]), "given twice");
     refused(&s.run(&["speed", "--swing", "100", "--compare-racket", "tweener,tweener"]), "given twice");
@@ -396,7 +365,7 @@ fn duplicates_in_lists_are_refused() {
 
 #[test]
 fn series_values_too_small_are_refused_as_written() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     let series = ["simulate", "--solver", "fd", "--series", "t.csv"];
     for (flag, value) in [("--series-end", "1e-400"), ("--series-dt", "1e-400")] {
         let mut args = series.to_vec();
@@ -419,7 +388,7 @@ fn series_values_too_small_are_refused_as_written() {
 /// silently).
 #[test]
 fn a_series_spacing_below_the_step_is_noted() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     let o = s.run(&["simulate", "--solver", "fd", "--series", "t.csv", "--series-dt", "1e-9"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let notes: Vec<String> = stderr(&o).lines().filter(|l| l.contains("--series-dt")).map(String::from).collect();
@@ -433,15 +402,15 @@ fn a_series_spacing_below_the_step_is_noted() {
 
 #[test]
 fn a_name_with_a_line_break_is_refused() {
-    let s = Scratch::new();
-    s.file("g.toml", &RACKET.replace("name = \"g\"", "name = \"two\\nlines\""));
+    let s = Scratch::new("traps");
+    s.file("g.toml", RACKET.replace("name = \"g\"", "name = \"two\\nlines\""));
     refused(&s.run(&["racket", "g.toml"]), "line breaks");
     refused(&s.run(&["speed", "--swing", "100", "--compare-racket", "a\nb"]), "line breaks");
 }
 
 #[test]
 fn a_preset_name_shadowed_by_a_file_is_refused() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     s.file("tweener", RACKET);
     refused(&s.run(&["racket", "tweener"]), "./tweener");
     let o = s.run(&["racket", "./tweener"]);
@@ -450,7 +419,7 @@ fn a_preset_name_shadowed_by_a_file_is_refused() {
 
 #[test]
 fn an_impact_outside_the_racket_files_head_is_refused() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     s.file("g.toml", RACKET);
     refused(&s.run(&["simulate", "--racket", "g.toml", "--half-width", "0.2", "--r", "0.15"]), "head outline");
     refused(&s.run(&["simulate", "--racket", "g.toml", "--r", "0.15"]), "r");
@@ -473,7 +442,7 @@ fn help_names_a_first_command_and_groups_options() {
 
 #[test]
 fn suggestions_name_the_real_flag_or_nothing() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     for (args, says, not) in [
         (vec!["speed", "--swing", "100", "--spin-rpm", "100"], "--incoming-spin-rpm", "'--p'"),
         (vec!["map", "--r", "0.1"], "the grid sets the impact point", "--grip"),
@@ -491,7 +460,7 @@ fn suggestions_name_the_real_flag_or_nothing() {
 
 #[test]
 fn unused_properties_are_noted_not_refused() {
-    let s = Scratch::new();
+    let s = Scratch::new("traps");
     for (args, key) in [
         (vec!["simulate", "--r", "0", "--ix", "0.0012"], "--ix"),
         (vec!["simulate", "--mu", "0.4"], "--mu"),

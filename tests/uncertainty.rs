@@ -2,32 +2,10 @@
 //! written atomically, `--claims`, and every bad spec refused in one line with exit 2 and no
 //! file written.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
+mod common;
 
-fn bin(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_racket-impact")).args(args).output().unwrap()
-}
-
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(name: &str) -> Self {
-        let dir = std::env::temp_dir().join(format!("racket-impact-uq-{}-{name}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        Scratch(dir)
-    }
-    fn path(&self, name: &str) -> String {
-        self.0.join(name).to_str().unwrap().to_string()
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
+use common::Scratch;
+use std::process::Output;
 
 #[test]
 fn json_has_the_documented_shape_and_a_seed_fixes_it() {
@@ -46,7 +24,7 @@ fn json_has_the_documented_shape_and_a_seed_fixes_it() {
         "--format",
         "json",
     ];
-    let out = bin(&args);
+    let out = common::run(&args);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!((v["samples"].as_u64(), v["seed"].as_u64()), (Some(32), Some(7)));
@@ -67,16 +45,16 @@ fn json_has_the_documented_shape_and_a_seed_fixes_it() {
     }
     // at 6 cm from the tip e_A rises steeply as the strings soften: ks carries its variance
     assert!(e_a["total_order"]["ks"].as_f64().unwrap() > e_a["total_order"]["p"].as_f64().unwrap());
-    assert_eq!(bin(&args).stdout, out.stdout, "same seed, same bytes");
+    assert_eq!(common::run(&args).stdout, out.stdout, "same seed, same bytes");
     let other: Vec<&str> = args.iter().map(|a| if *a == "7" { "8" } else { a }).collect();
-    assert_ne!(bin(&other).stdout, out.stdout, "another seed, other samples");
+    assert_ne!(common::run(&other).stdout, out.stdout, "another seed, other samples");
 }
 
 #[test]
 fn out_writes_the_file_and_csv_has_one_row_per_output() {
     let s = Scratch::new("out");
-    let path = s.path("u.csv");
-    let out = bin(&[
+    let path = s.arg("u.csv");
+    let out = common::run(&[
         "uncertainty",
         "--vary",
         "mb=uniform:0.0558:0.0576",
@@ -96,7 +74,7 @@ fn out_writes_the_file_and_csv_has_one_row_per_output() {
 
 #[test]
 fn claims_give_every_claim_a_verdict() {
-    let out = bin(&["uncertainty", "--claims", "--samples", "2", "--format", "csv"]);
+    let out = common::run(&["uncertainty", "--claims", "--samples", "2", "--format", "csv"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let csv = String::from_utf8(out.stdout).unwrap();
     let mut lines = csv.lines();
@@ -116,7 +94,7 @@ fn claims_give_every_claim_a_verdict() {
 
 #[test]
 fn claims_that_no_sampled_input_moves_are_independent_not_holding_or_failing() {
-    let out = bin(&["uncertainty", "--claims", "--samples", "2", "--format", "csv"]);
+    let out = common::run(&["uncertainty", "--claims", "--samples", "2", "--format", "csv"]);
     let csv = String::from_utf8(out.stdout).unwrap();
     let verdict = |id: &str| {
         let row = csv.lines().find(|l| l.starts_with(&format!("{id},"))).unwrap();
@@ -133,11 +111,11 @@ fn claims_that_no_sampled_input_moves_are_independent_not_holding_or_failing() {
         assert_ne!(verdict(id), "independent", "{id}");
     }
     // the text output counts the verdicts, the independent ones apart
-    let out = bin(&["uncertainty", "--claims", "--samples", "2"]);
+    let out = common::run(&["uncertainty", "--claims", "--samples", "2"]);
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.contains("not at all; 2 do not depend on the sampled inputs (independent)"), "{text}");
     assert!(text.contains("hold by construction (not counted)"), "{text}");
-    let json = bin(&["uncertainty", "--claims", "--samples", "2", "--format", "json"]);
+    let json = common::run(&["uncertainty", "--claims", "--samples", "2", "--format", "json"]);
     let v: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
     let v1 = &v["outputs"]["fig8_theta_v1_proportional"];
     assert_eq!(v1["verdict"], "independent");
@@ -160,7 +138,7 @@ fn claims_that_no_sampled_input_moves_are_independent_not_holding_or_failing() {
 #[test]
 fn bad_specs_are_refused_in_one_line_and_nothing_is_written() {
     let s = Scratch::new("bad");
-    let path = s.path("never.json");
+    let path = s.arg("never.json");
     let cases: [(&[&str], &str); 16] = [
         (&["--vary", "kz=uniform:1:2"], "unknown parameter 'kz'"),
         (&["--vary", "ks=uniform:5e4:2e4"], "invalid ks = uniform:5e4:2e4: the range needs LO < HI"),
@@ -191,7 +169,7 @@ fn bad_specs_are_refused_in_one_line_and_nothing_is_written() {
         let mut all = vec!["uncertainty"];
         all.extend_from_slice(args);
         all.extend_from_slice(&["--format", "json", "--out", &path]);
-        let out = bin(&all);
+        let out = common::run(&all);
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
         assert!(err.contains(want), "{args:?}: {err}");
@@ -203,7 +181,7 @@ fn bad_specs_are_refused_in_one_line_and_nothing_is_written() {
 
 #[test]
 fn help_lists_exactly_what_the_command_accepts() {
-    let help = String::from_utf8(bin(&["uncertainty", "--help"]).stdout).unwrap();
+    let help = String::from_utf8(common::run(&["uncertainty", "--help"]).stdout).unwrap();
     // the solver default it states is the one it runs
     assert!(help.contains("[default: modal; fd where a hand grip or stiffening strings need it]"), "{help}");
     for option in
@@ -230,7 +208,7 @@ fn draws_outside_the_usual_range_earn_one_warning_per_key() {
         for v in vary {
             args.extend(["--vary", v]);
         }
-        let o = bin(&args);
+        let o = common::run(&args);
         assert!(o.status.success(), "{vary:?}: {}", stderr(&o));
         o
     };
@@ -247,7 +225,7 @@ fn draws_outside_the_usual_range_earn_one_warning_per_key() {
         w[1]
     );
     // the usual ranges are simulate's
-    let sim = bin(&["simulate", "--ks", "1000", "--mb", "0.24"]);
+    let sim = common::run(&["simulate", "--ks", "1000", "--mb", "0.24"]);
     for (line, key) in w.iter().zip(["ks", "mb"]) {
         let usual = line.split("outside the usual ").nth(1).unwrap().split(" of ").next().unwrap();
         assert!(
@@ -258,7 +236,7 @@ fn draws_outside_the_usual_range_earn_one_warning_per_key() {
     }
     // a normal judged at 3 sd: 0.15 +- 3 x 0.016 stays inside
     assert!(warns(&run(&["mb=normal:0.15:0.016"])).is_empty());
-    let q = bin(&[&base[..], &["--quiet", "--vary", "ks=uniform:1e3:6e4"]].concat());
+    let q = common::run(&[&base[..], &["--quiet", "--vary", "ks=uniform:1e3:6e4"]].concat());
     assert!(q.stderr.is_empty() && q.stdout == run(&["ks=uniform:1e3:6e4"]).stdout);
 }
 
@@ -268,28 +246,30 @@ fn too_few_samples_warn_once_and_the_text_says_the_indices_mean_nothing() {
         &["uncertainty", "--vary", "ks=uniform:2e4:6e4", "--samples", "1"][..],
         &["uncertainty", "--claims", "--samples", "2", "--format", "csv"][..],
     ] {
-        let loud = bin(args);
+        let loud = common::run(args);
         assert!(loud.status.success());
         let err = String::from_utf8(loud.stderr).unwrap();
         let warnings: Vec<&str> = err.lines().filter(|l| l.starts_with("warning:")).collect();
         assert_eq!(warnings.len(), 1, "{args:?}: {err}");
         assert!(warnings[0].contains("below 64 base samples") && warnings[0].contains("1/sqrt(N)"), "{}", warnings[0]);
-        let quiet = bin(&[&["--quiet"], args].concat());
+        let quiet = common::run(&[&["--quiet"], args].concat());
         assert!(quiet.stderr.is_empty(), "{}", String::from_utf8_lossy(&quiet.stderr));
         assert_eq!(quiet.stdout, loud.stdout, "the warning changed the result");
     }
     let text =
-        String::from_utf8(bin(&["uncertainty", "--vary", "ks=uniform:2e4:6e4", "--samples", "1"]).stdout).unwrap();
+        String::from_utf8(common::run(&["uncertainty", "--vary", "ks=uniform:2e4:6e4", "--samples", "1"]).stdout)
+            .unwrap();
     assert!(text.contains("NOT MEANINGFUL at 1 base samples (fewer than 64)"), "{text}");
-    let text = String::from_utf8(bin(&["uncertainty", "--claims", "--samples", "2"]).stdout).unwrap();
+    let text = String::from_utf8(common::run(&["uncertainty", "--claims", "--samples", "2"]).stdout).unwrap();
     assert!(text.contains("NOT MEANINGFUL at 2 base samples"), "{text}");
     // and it is data: the JSON's diagnostics carry it (with --quiet too)
-    let json = bin(&["--quiet", "uncertainty", "--vary", "ks=uniform:2e4:6e4", "--samples", "1", "--format", "json"]);
+    let json =
+        common::run(&["--quiet", "uncertainty", "--vary", "ks=uniform:2e4:6e4", "--samples", "1", "--format", "json"]);
     let json: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
     let told = json["diagnostics"].as_array().unwrap();
     assert!(told.iter().any(|d| d["field"] == "samples" && d["kind"] == "unusual"), "{told:?}");
     // at the minimum: no warning, no remark
-    let ok = bin(&["uncertainty", "--vary", "ks=uniform:2e4:6e4", "--samples", "64"]);
+    let ok = common::run(&["uncertainty", "--vary", "ks=uniform:2e4:6e4", "--samples", "64"]);
     assert!(!String::from_utf8(ok.stderr).unwrap().contains("warning:"));
     assert!(!String::from_utf8(ok.stdout).unwrap().contains("NOT MEANINGFUL"));
 }
@@ -298,7 +278,7 @@ fn too_few_samples_warn_once_and_the_text_says_the_indices_mean_nothing() {
 /// (`first_angle_deg`, not `first_angle-deg`).
 #[test]
 fn csv_index_columns_spell_keys_with_underscores() {
-    let out = bin(&[
+    let out = common::run(&[
         "uncertainty",
         "--x",
         "0.158",

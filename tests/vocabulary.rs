@@ -4,8 +4,10 @@
 //! (FIELDS), the few other columns in study/mod.rs (OTHER_COLUMNS); this test holds every
 //! output to that table.
 
+mod common;
+
+use common::{bin, Scratch};
 use std::collections::BTreeSet;
-use std::process::Command;
 
 use racket_impact::params::keys;
 use racket_impact::params::spec::Values;
@@ -88,34 +90,30 @@ fn every_result_name_carries_its_unit() {
 }
 
 fn csv_header(args: &[&str], dir: &std::path::Path) -> Vec<String> {
-    let o = Command::new(env!("CARGO_BIN_EXE_racket-impact")).current_dir(dir).args(args).output().unwrap();
+    let o = bin().current_dir(dir).args(args).output().unwrap();
     assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
     String::from_utf8_lossy(&o.stdout).lines().next().unwrap().split(',').map(String::from).collect()
 }
 
 #[test]
 fn every_csv_column_of_every_command_is_a_declared_name() {
-    let dir = tempfile::tempdir().unwrap();
+    let scratch = Scratch::new("vocabulary");
     let mut vocabulary: BTreeSet<String> = keys::ALL.iter().map(|s| s.column.to_string()).collect();
     vocabulary.extend(FIELDS.iter().map(|f| f.key.to_string()));
     vocabulary.extend(OTHER_COLUMNS.iter().map(|c| c.to_string()));
     vocabulary.extend(racket_impact::render::impact::SERIES_COLUMNS.iter().map(|c| c.to_string()));
     let oblique = ["--angle-deg", "30"];
     let headers = [
-        csv_header(&[&["simulate", "--format", "csv"][..], &oblique].concat(), dir.path()),
-        csv_header(&["speed", "--swing", "100", "--swing-path-deg", "20", "--format", "csv"], dir.path()),
-        csv_header(&[&["map", "--nx", "3", "--nr", "3", "--format", "csv"][..], &oblique].concat(), dir.path()),
-        csv_header(&["map", "--nx", "3", "--nr", "3", "--format", "csv", "--compare-tension-lb", "50"], dir.path()),
-        csv_header(&["sweep", "--angle-deg", "0,30", "--grip", "hand"], dir.path()),
-        csv_header(&["modes", "--format", "csv"], dir.path()),
+        csv_header(&[&["simulate", "--format", "csv"][..], &oblique].concat(), scratch.dir()),
+        csv_header(&["speed", "--swing", "100", "--swing-path-deg", "20", "--format", "csv"], scratch.dir()),
+        csv_header(&[&["map", "--nx", "3", "--nr", "3", "--format", "csv"][..], &oblique].concat(), scratch.dir()),
+        csv_header(&["map", "--nx", "3", "--nr", "3", "--format", "csv", "--compare-tension-lb", "50"], scratch.dir()),
+        csv_header(&["sweep", "--angle-deg", "0,30", "--grip", "hand"], scratch.dir()),
+        csv_header(&["modes", "--format", "csv"], scratch.dir()),
     ];
     let series = {
-        let path = dir.path().join("s.csv");
-        let o = Command::new(env!("CARGO_BIN_EXE_racket-impact"))
-            .args(["simulate", "--series"])
-            .arg(&path)
-            .output()
-            .unwrap();
+        let path = scratch.dir().join("s.csv");
+        let o = bin().args(["simulate", "--series"]).arg(&path).output().unwrap();
         assert!(o.status.success());
         std::fs::read_to_string(path).unwrap().lines().next().unwrap().split(',').map(String::from).collect()
     };
@@ -134,8 +132,8 @@ fn every_csv_column_of_every_command_is_a_declared_name() {
 
 #[test]
 fn messages_speak_in_the_names_and_units_of_the_command_run() {
-    let dir = tempfile::tempdir().unwrap();
-    let bad_racket = dir.path().join("r.toml");
+    let scratch = Scratch::new("vocabulary");
+    let bad_racket = scratch.dir().join("r.toml");
     std::fs::write(&bad_racket, "length_cm = \"long\"\n").unwrap();
     let bad_racket = bad_racket.to_str().unwrap();
     // (arguments, words the one stderr line must hold, words it must not)
@@ -153,7 +151,7 @@ fn messages_speak_in_the_names_and_units_of_the_command_run() {
         (&["sweep", "--x", "0.1:0.2:0"], &["invalid sweep = --x 0.1:0.2:0"], &["config file"]),
     ];
     for (args, want, not) in cases {
-        let o = Command::new(env!("CARGO_BIN_EXE_racket-impact")).args(args).output().unwrap();
+        let o = bin().args(args).output().unwrap();
         let err = String::from_utf8_lossy(&o.stderr).into_owned();
         assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
         for w in want {
@@ -172,7 +170,7 @@ fn a_sweep_names_each_column_once() {
     for args in
         [&["--x", "0.1,0.2", "--solver", "modal"][..], &["--solver", "fd,modal"], &["--x", "0.1", "--angle-deg", "30"]]
     {
-        let out = Command::new(env!("CARGO_BIN_EXE_racket-impact")).arg("sweep").args(args).output().unwrap();
+        let out = bin().arg("sweep").args(args).output().unwrap();
         assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
         let text = String::from_utf8_lossy(&out.stdout);
         let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();

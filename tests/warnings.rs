@@ -3,11 +3,10 @@
 //! silences it. And the defaults a new user meets: `--help` shows them, the default impact is
 //! the centre of the string face, `speed` compares against A and shows both sides.
 
-use std::process::{Command, Output};
+mod common;
 
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_racket-impact")).args(args).output().expect("binary runs")
-}
+use common::run;
+use std::process::Output;
 
 fn stdout(o: &Output) -> String {
     String::from_utf8(o.stdout.clone()).unwrap()

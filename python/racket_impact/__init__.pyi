@@ -264,6 +264,7 @@ def simulate(
     azimuth_deg: float | str | None = None,
     spin_rpm: float | str | None = None,
     mu: float | str | None = None,
+    mu_scale: float | str | None = None,
     kt: float | str | None = None,
     tangential: str | None = None,
     mu_ss: float | str | None = None,
@@ -444,9 +445,16 @@ def simulate(
         Usual: 0 .. 1 (outside: a warning).
         Default: 0.4.
         Used only for an oblique or spinning ball.
+    mu_scale : float [Oblique impact]
+        Ratio of the ball's sliding friction on the strings during an impact to the coefficient in use (mu, or the string's TWU database COF) (0.05 ..= 3).
+        Allowed: 0.05 <= mu_scale <= 3.
+        Usual: 0.3 .. 1.5 (outside: a warning).
+        Default: 1.
+        Used only for an oblique or spinning ball.
     kt : float, N/m [Oblique impact]
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
+        Usual: 5000 .. 1e6 N/m (outside: a warning).
         Default: 20000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]
@@ -537,6 +545,7 @@ def sweep(
     azimuth_deg: float | str | Sequence[float] | np.ndarray | None = None,
     spin_rpm: float | str | Sequence[float] | np.ndarray | None = None,
     mu: float | str | Sequence[float] | np.ndarray | None = None,
+    mu_scale: float | str | Sequence[float] | np.ndarray | None = None,
     kt: float | str | Sequence[float] | np.ndarray | None = None,
     tangential: str | Sequence[str] | None = None,
     mu_ss: float | str | Sequence[float] | np.ndarray | None = None,
@@ -719,9 +728,16 @@ def sweep(
         Usual: 0 .. 1 (outside: a warning).
         Default: 0.4.
         Used only for an oblique or spinning ball.
+    mu_scale : float [Oblique impact]
+        Ratio of the ball's sliding friction on the strings during an impact to the coefficient in use (mu, or the string's TWU database COF) (0.05 ..= 3).
+        Allowed: 0.05 <= mu_scale <= 3.
+        Usual: 0.3 .. 1.5 (outside: a warning).
+        Default: 1.
+        Used only for an oblique or spinning ball.
     kt : float, N/m [Oblique impact]
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
+        Usual: 5000 .. 1e6 N/m (outside: a warning).
         Default: 20000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]
@@ -828,6 +844,7 @@ def face_map(
     azimuth_deg: float | str | None = None,
     spin_rpm: float | str | None = None,
     mu: float | str | None = None,
+    mu_scale: float | str | None = None,
     kt: float | str | None = None,
     tangential: str | None = None,
     mu_ss: float | str | None = None,
@@ -991,9 +1008,16 @@ def face_map(
         Usual: 0 .. 1 (outside: a warning).
         Default: 0.4.
         Used only for an oblique or spinning ball.
+    mu_scale : float [Oblique impact]
+        Ratio of the ball's sliding friction on the strings during an impact to the coefficient in use (mu, or the string's TWU database COF) (0.05 ..= 3).
+        Allowed: 0.05 <= mu_scale <= 3.
+        Usual: 0.3 .. 1.5 (outside: a warning).
+        Default: 1.
+        Used only for an oblique or spinning ball.
     kt : float, N/m [Oblique impact]
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
+        Usual: 5000 .. 1e6 N/m (outside: a warning).
         Default: 20000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]
@@ -1111,6 +1135,7 @@ def uncertainty(
     azimuth_deg: float | str | None = None,
     spin_rpm: float | str | None = None,
     mu: float | str | None = None,
+    mu_scale: float | str | None = None,
     kt: float | str | None = None,
     tangential: str | None = None,
     mu_ss: float | str | None = None,
@@ -1294,9 +1319,16 @@ def uncertainty(
         Usual: 0 .. 1 (outside: a warning).
         Default: 0.4.
         Used only for an oblique or spinning ball.
+    mu_scale : float [Oblique impact]
+        Ratio of the ball's sliding friction on the strings during an impact to the coefficient in use (mu, or the string's TWU database COF) (0.05 ..= 3).
+        Allowed: 0.05 <= mu_scale <= 3.
+        Usual: 0.3 .. 1.5 (outside: a warning).
+        Default: 1.
+        Used only for an oblique or spinning ball.
     kt : float, N/m [Oblique impact]
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
+        Usual: 5000 .. 1e6 N/m (outside: a warning).
         Default: 20000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]

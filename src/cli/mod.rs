@@ -5,6 +5,7 @@
 
 use clap::{Parser, Subcommand};
 
+pub mod calibrate;
 pub mod common;
 pub mod figures;
 pub mod hints;
@@ -112,6 +113,9 @@ pub enum Command {
     /// An impact's result fields under uncertain inputs, or every paper claim under the declared uncertainty
     #[command(long_about = uncertainty::long_about())]
     Uncertainty(uncertainty::UncertaintyArgs),
+    /// Fit parameters with a declared range to measured rows: intervals, correlation, held-out error
+    #[command(long_about = calibrate::long_about())]
+    Calibrate(calibrate::CalibrateArgs),
 }
 
 /// Run one command.
@@ -126,5 +130,6 @@ pub fn run(command: Command) -> racket_impact::Result<()> {
         Command::Sweep(a) => sweep::run(a),
         Command::Map(a) => map::run(a),
         Command::Uncertainty(a) => uncertainty::run(a),
+        Command::Calibrate(a) => calibrate::run(a),
     }
 }

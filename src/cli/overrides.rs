@@ -49,6 +49,9 @@ key_set! {
     MapKeys = "map": |key| racket_impact::study::map::set_by_map(key).is_none();
     /// `uncertainty`: every parameter, as `simulate` (its solver default is the modal one).
     UncertaintyKeys = "uncertainty": |_key| true;
+    /// `calibrate`: every parameter but the shot's speed, incidence, incoming spin and grip,
+    /// which each measured row sets.
+    CalibrateKeys = "calibrate": |key| !racket_impact::study::calibrate::shot::ROW_SETS.contains(&key);
 }
 
 /// The parameter flags (`--x`, `--ks`, ...) a command takes ([`KeySet`]), in the order of

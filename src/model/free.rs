@@ -19,8 +19,8 @@
 //! [`AMPLITUDE_TAIL`] of the displacement) are left out of the sampling; their contribution is
 //! bounded by that tail.
 
-use crate::model::short_turn::{series_terms, small_sin_cos};
-use crate::model::spare::Buf;
+use crate::numeric::short_turn::{series_terms, small_sin_cos};
+use crate::numeric::spare::Buf;
 use std::cell::RefCell;
 
 /// Highest modes whose summed energy is below this fraction of the total are not sampled.

@@ -146,10 +146,14 @@ declare_params! {
     MU mu: f64 = "mu" at oblique.mu,
         what "friction coefficient", unit "", column "mu", within(0.0, 2.0),
         under Oblique, Property, used Oblique, usual(0.0, 1.0);
+    /// Ratio of the ball's sliding friction on the strings during an impact to the coefficient in use (mu, or the string's TWU database COF) (0.05 ..= 3)
+    MU_SCALE mu_scale: f64 = "mu-scale" at oblique.mu_scale,
+        what "impact-to-tabulated friction ratio", unit "", column "mu_scale", within(0.05, 3.0),
+        under Oblique, Property, used Oblique, usual(0.3, 1.5);
     /// Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9)
     KT kt: f64 = "kt" at oblique.kt,
         what "tangential stiffness", unit "N/m", column "kt_n_per_m", within(1.0, 1.0e9),
-        under Oblique, Property, used Oblique;
+        under Oblique, Property, used Oblique, usual(5.0e3, 1.0e6);
     /// Tangential contact law: elastic, loss, offset, bed, radius or physical (all four)
     TANGENTIAL tangential: TangentialLaw = "tangential" at oblique.tangential,
         what "tangential contact law", unit "", column "tangential", choice,

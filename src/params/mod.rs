@@ -2,7 +2,7 @@
 //! (SPEC.md section 3), each validated once at the boundary.
 //!
 //! Every field's doc gives its unit and allowed range; [`Params::validate`] returns the same
-//! sentence as an [`Error::InvalidParameter`](crate::Error::InvalidParameter) naming the field
+//! sentence as an [`Error::InvalidParameter`](crate::error::Error::InvalidParameter) naming the field
 //! by its flag / config key.
 //!
 //! Each parameter a flag or a config file can set is declared once, in [`keys`]: its key,
@@ -97,7 +97,7 @@ impl Params {
         self.variants.validate(&self.racket, self.numerics.solver)?;
         self.oblique.validate()?;
         if !self.oblique.is_normal() && self.variants.frame == Frame::Rigid {
-            return Err(crate::Error::invalid(
+            return Err(crate::error::Error::invalid(
                 keys::FRAME.key,
                 "rigid",
                 "must be beam for an oblique or spinning ball (the tangential contact follows the normal force history of the fd or modal solver)",

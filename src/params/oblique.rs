@@ -33,6 +33,13 @@ pub struct Oblique {
     pub spin_rpm: f64,
     /// Coefficient of friction of ball on strings; 0..=2.
     pub mu: f64,
+    /// The ratio of the ball's sliding friction on the strings during an impact to the
+    /// coefficient in use (`mu`, or the named string's TWU database COF: a slow pull of felt
+    /// over a string, not a friction during a 5 ms impact); 0.05..=3. Default 1 (the tabulated
+    /// coefficient as it is). A constant of the impact, the same for every string: the only
+    /// friction a calibration may fit (`racket-impact calibrate --fit mu-scale`), since a
+    /// string's own coefficient is measured.
+    pub mu_scale: f64,
     /// Tangential stiffness of ball and string bed in series, N/m; 1..=1e9.
     pub kt: f64,
     /// Ball radius `R`, m; 1e-3..=1.
@@ -89,6 +96,7 @@ impl Default for Oblique {
             azimuth_deg: 0.0,
             spin_rpm: 0.0,
             mu: 0.4,
+            mu_scale: 1.0,
             kt: 2.0e4,
             ball_radius: 0.033,
             ball_inertia_factor: 0.55,
@@ -115,6 +123,12 @@ impl Oblique {
         entry.map_or((self.mu, self.mu_ss), |e| (e.mu, e.mu_ss))
     }
 
+    /// The ball/string friction coefficient of the sliding ball during an impact: the one in
+    /// use ([`Oblique::friction`]) times [`Oblique::mu_scale`].
+    pub fn sliding_mu(&self) -> f64 {
+        self.friction().0 * self.mu_scale
+    }
+
     /// Whether every field has its default value.
     pub fn is_default(&self) -> bool {
         *self == Oblique::default()
@@ -127,6 +141,7 @@ impl Oblique {
             (keys::AZIMUTH_DEG, self.azimuth_deg),
             (keys::SPIN_RPM, self.spin_rpm),
             (keys::MU, self.mu),
+            (keys::MU_SCALE, self.mu_scale),
             (keys::KT, self.kt),
             (keys::BALL_RADIUS, self.ball_radius),
             (keys::MU_SS, self.mu_ss),

@@ -123,7 +123,6 @@ impl TangentialLaw {
     pub fn has(self, m: TangentialLaw) -> bool {
         self == m || (self == TangentialLaw::Physical && m != TangentialLaw::Elastic)
     }
-
 }
 
 choice_enum! {

@@ -54,6 +54,10 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
                 Some(format!("{} {}{unit}", spec.key, fmt_sig(keys::value_number(spec.key, p)?, 6)))
             })
             .collect();
+        if o.mu_scale != 1.0 {
+            let scaled = format!("sliding mu {}", fmt_sig(o.sliding_mu(), 6));
+            used.insert(0, format!("{} {}: {scaled}", keys::MU_SCALE.key, fmt_sig(o.mu_scale, 6)));
+        }
         if let Some(e) = crate::params::strings::entry(o.string) {
             used.push(format!("{} {}", keys::STRING.key, e.name));
         }

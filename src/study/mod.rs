@@ -5,12 +5,14 @@
 //! sensitivity for any model), [`impact`] (one impact as `simulate` runs it). [`Sources`] resolves a command's parameters from a racket, a config
 //! file and the flags.
 
+pub mod calibrate;
 pub mod diagnose;
 pub mod impact;
 pub mod map;
 pub mod measured;
 pub mod sensitivity;
 pub mod speed;
+pub mod stats;
 pub mod sweep;
 pub mod uncertainty;
 

@@ -3,7 +3,7 @@
 
 use crate::error::Result;
 use crate::model::contact::{ball_stiffness, series, ContactLaw, ContactState, Cross, Phase};
-use crate::model::root::Bracket;
+use crate::numeric::root::Bracket;
 use crate::params::{Params, StringLaw};
 
 /// The paper's ball on stiffening strings.

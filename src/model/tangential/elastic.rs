@@ -256,14 +256,14 @@ fn first_root(f: impl Fn(f64) -> f64, t0: f64, t1: f64, samples: usize) -> Optio
 }
 
 /// The sign change of `f` in `[lo, hi]` (`f(lo) >= 0 > f(hi)`) by bisection
-/// ([`crate::model::root::bisect`]; zero counts as before, a NaN too): the first time where it
+/// ([`crate::numeric::root::bisect`]; zero counts as before, a NaN too): the first time where it
 /// is negative, to rounding level.
 fn bisect(f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> f64 {
     let before = |t| {
         let v = f(t);
         v >= 0.0 || v.is_nan()
     };
-    crate::model::root::bisect(before, lo, hi, BISECTIONS).hi
+    crate::numeric::root::bisect(before, lo, hi, BISECTIONS).hi
 }
 
 /// Four-point Gauss-Legendre quadrature on [a, b] (exact for polynomials of degree 7).

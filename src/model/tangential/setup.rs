@@ -40,9 +40,9 @@ impl Setup {
         let (sin_z, cos_z) = o.azimuth_deg.to_radians().sin_cos();
         // the lever of a force along t about the normal through the centre of mass
         let arm = (x_load - beam.x_cm) * sin_z - p.impact.r * cos_z;
-        let (mu, mu_ss) = o.friction();
+        let mu_ss = o.friction().1;
         let law = GripSlip {
-            mu,
+            mu: o.sliding_mu(),
             kt: o.kt,
             mb,
             radius: o.ball_radius,

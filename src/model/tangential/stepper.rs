@@ -114,7 +114,7 @@ fn violated<L: Switched<N, G>, const N: usize, const G: usize>(law: &L, y: &[f64
 /// The earliest time in `(0, h]` after `t` at which a guard fails (one fails at `h`), to
 /// rounding: the Illinois variant of regula falsi on the guard that fails, restarted on
 /// any guard that fails earlier. Returns the time, the state there and the drive. (Not the
-/// crate's bisection, [`crate::model::root`]: each iterate here is a whole RK4 step from the
+/// crate's bisection, [`crate::numeric::root`]: each iterate here is a whole RK4 step from the
 /// substep's start, so the fewer the better, and the search restarts on another guard.)
 fn locate<L: Switched<N, G>, const N: usize, const G: usize>(
     law: &L,

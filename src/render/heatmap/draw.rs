@@ -162,12 +162,11 @@ pub(super) fn draw(root: &DrawingArea<BitMapBackend<'_>, Shift>, map: &HeatMap) 
     };
     draw_lines(&mut cc, map, &shown, &levels)?;
 
-    let label_style = plot::font(TICK_SIZE, FontStyle::Normal);
-    let mut taken: Vec<Rect> = Vec::new();
-
-    draw_segments(root, &mut cc, map, plot_rect, &label_style, &mut taken)?;
-    draw_markers(root, &mut cc, map, plot_rect, &label_style, &mut taken)?;
-    draw_contour_labels(root, &cc, map, &levels, step, plot_rect, &mut taken)?;
+    let mut labels =
+        Labels { root, cc: &mut cc, plot_rect, style: plot::font(TICK_SIZE, FontStyle::Normal), taken: Vec::new() };
+    labels.segments(map)?;
+    labels.markers(map)?;
+    labels.contour_labels(map, &levels, step)?;
 
     if data.is_none() {
         let style = plot::font(AXIS_DESC_SIZE, FontStyle::Normal).pos(Pos::new(HPos::Center, VPos::Center));
@@ -177,6 +176,9 @@ pub(super) fn draw(root: &DrawingArea<BitMapBackend<'_>, Shift>, map: &HeatMap) 
 
     draw_color_bar(root, map, plot_rect, (lo, hi), &levels, step, &color)
 }
+
+/// Font size of the contour labels, pixels.
+const CONTOUR_LABEL_SIZE: f64 = 14.0;
 
 /// The chart's coordinates (data x and y, both linear).
 type Coords<'a, 'b> = ChartContext<'a, BitMapBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
@@ -276,139 +278,135 @@ fn draw_lines(cc: &mut Coords<'_, '_>, map: &HeatMap, z: &[f64], levels: &[f64])
     Ok(())
 }
 
-/// The dashed segments with their labels at the upper end, placed clear of what is `taken`.
-fn draw_segments(
-    root: &DrawingArea<BitMapBackend<'_>, Shift>,
-    cc: &mut Coords<'_, '_>,
-    map: &HeatMap,
+/// Where the labelled parts of a map are drawn (the dashed segments, the markers, the contour
+/// labels): the image, the chart's coordinates on it, the plotting area's pixel rectangle, the
+/// labels' font, and the label boxes placed so far, which each new label keeps clear of.
+struct Labels<'c, 'a, 'b> {
+    root: &'c DrawingArea<BitMapBackend<'b>, Shift>,
+    cc: &'c mut Coords<'a, 'b>,
     plot_rect: Rect,
-    label_style: &TextStyle<'_>,
-    taken: &mut Vec<Rect>,
-) -> std::result::Result<(), String> {
-    for s in &map.segments {
-        let style = BLACK.stroke_width(2);
-        cc.draw_series(std::iter::once(DashedPathElement::new(vec![s.from, s.to], 10, 6, style))).map_err(plot::msg)?;
-        let (a, b) = (cc.backend_coord(&s.from), cc.backend_coord(&s.to));
-        taken.push((a.0.min(b.0) - 3, a.1.min(b.1) - 3, a.0.max(b.0) + 3, a.1.max(b.1) + 3));
-        if s.label.is_empty() {
-            continue;
-        }
-        let (w, h) = root.estimate_text_size(&s.label, label_style).map_err(plot::msg)?;
-        let (w, h) = (w as i32 + 10, h as i32 + 6);
-        let (top, bottom) = if s.from.1 >= s.to.1 { (s.from, s.to) } else { (s.to, s.from) };
-        let pt = cc.backend_coord(&top);
-        let pb = cc.backend_coord(&bottom);
-        let candidates =
-            [(pt.0 - w / 2, pt.1 - 6 - h), (pb.0 - w / 2, pb.1 + 6), (pt.0 + 8, pt.1), (pt.0 - 8 - w, pt.1)];
-        let rects = candidates.map(|(l, t)| (l, t, l + w, t + h));
-        // the first box inside the plot and clear of the rest, else the first
-        let cost = |r: Rect| usize::from(!inside(r, plot_rect) || taken.iter().any(|&o| overlaps(r, o)));
-        let rect = first_least(rects, cost).map_or(rects[0], |(r, _)| r);
-        boxed_text(root, &s.label, rect, label_style)?;
-        taken.push(rect);
-    }
-    Ok(())
+    style: TextStyle<'static>,
+    taken: Vec<Rect>,
 }
 
-/// Font size of the contour labels, pixels.
-const CONTOUR_LABEL_SIZE: f64 = 14.0;
-
-/// One label per contour line with its value, on a segment of the line (tried from the middle
-/// of the traced segments outwards) where the label box lies inside the plotting area and every
-/// clip ellipse and clear of what is `taken`; a level with no such place goes unlabelled.
-fn draw_contour_labels(
-    root: &DrawingArea<BitMapBackend<'_>, Shift>,
-    cc: &Coords<'_, '_>,
-    map: &HeatMap,
-    levels: &[f64],
-    step: f64,
-    plot_rect: Rect,
-    taken: &mut Vec<Rect>,
-) -> std::result::Result<(), String> {
-    let style = plot::font(CONTOUR_LABEL_SIZE, FontStyle::Normal);
-    let shown = map.shown_values();
-    for &level in levels {
-        let segs = contour_segments(&map.xs, &map.ys, &shown, level);
-        if segs.is_empty() {
-            continue;
-        }
-        let text = level_label(level, step);
-        let (w, h) = root.estimate_text_size(&text, &style).map_err(plot::msg)?;
-        let (w, h) = (w as i32 + 6, h as i32 + 4);
-        let mid = segs.len() / 2;
-        let order = (0..segs.len()).map(|k| if k % 2 == 0 { mid + k / 2 } else { mid.wrapping_sub(k / 2 + 1) });
-        let inside_clip = |p: (i32, i32)| {
-            cc.as_coord_spec().reverse_translate(p).is_some_and(|(x, y)| map.clip.iter().all(|e| e.contains(x, y)))
-        };
-        let rects = order.filter(|&k| k < segs.len()).map(|k| {
-            let s = segs[k];
-            let c = ((s[0].0 + s[1].0) / 2.0, (s[0].1 + s[1].1) / 2.0);
-            let p = cc.backend_coord(&c);
-            (p.0 - w / 2, p.1 - h / 2, p.0 - w / 2 + w, p.1 - h / 2 + h)
-        });
-        // the first box inside the plot and every clip ellipse and clear of the rest, or none
-        let cost = |rect: Rect| {
-            let corners = [(rect.0, rect.1), (rect.2, rect.1), (rect.0, rect.3), (rect.2, rect.3)];
-            usize::from(
-                !(inside(rect, plot_rect)
-                    && corners.iter().all(|&q| inside_clip(q))
-                    && !taken.iter().any(|&o| overlaps(rect, o))),
-            )
-        };
-        if let Some((rect, 0)) = first_least(rects, cost) {
-            root.draw(&Rectangle::new([(rect.0, rect.1), (rect.2, rect.3)], WHITE.mix(0.8).filled()))
+impl Labels<'_, '_, '_> {
+    /// The dashed segments with their labels at the upper end, placed clear of what is taken.
+    fn segments(&mut self, map: &HeatMap) -> std::result::Result<(), String> {
+        let Labels { root, cc, plot_rect, style: label_style, taken } = self;
+        let (root, plot_rect) = (*root, *plot_rect);
+        for s in &map.segments {
+            let style = BLACK.stroke_width(2);
+            cc.draw_series(std::iter::once(DashedPathElement::new(vec![s.from, s.to], 10, 6, style)))
                 .map_err(plot::msg)?;
-            root.draw_text(&text, &style, (rect.0 + 3, rect.1 + 2)).map_err(plot::msg)?;
+            let (a, b) = (cc.backend_coord(&s.from), cc.backend_coord(&s.to));
+            taken.push((a.0.min(b.0) - 3, a.1.min(b.1) - 3, a.0.max(b.0) + 3, a.1.max(b.1) + 3));
+            if s.label.is_empty() {
+                continue;
+            }
+            let (w, h) = root.estimate_text_size(&s.label, label_style).map_err(plot::msg)?;
+            let (w, h) = (w as i32 + 10, h as i32 + 6);
+            let (top, bottom) = if s.from.1 >= s.to.1 { (s.from, s.to) } else { (s.to, s.from) };
+            let pt = cc.backend_coord(&top);
+            let pb = cc.backend_coord(&bottom);
+            let candidates =
+                [(pt.0 - w / 2, pt.1 - 6 - h), (pb.0 - w / 2, pb.1 + 6), (pt.0 + 8, pt.1), (pt.0 - 8 - w, pt.1)];
+            let rects = candidates.map(|(l, t)| (l, t, l + w, t + h));
+            // the first box inside the plot and clear of the rest, else the first
+            let cost = |r: Rect| usize::from(!inside(r, plot_rect) || taken.iter().any(|&o| overlaps(r, o)));
+            let rect = first_least(rects, cost).map_or(rects[0], |(r, _)| r);
+            boxed_text(root, &s.label, rect, label_style)?;
             taken.push(rect);
         }
+        Ok(())
     }
-    Ok(())
-}
 
-/// The markers (ringed dots) with their labels where they fit, clear of what is `taken`.
-fn draw_markers(
-    root: &DrawingArea<BitMapBackend<'_>, Shift>,
-    cc: &mut Coords<'_, '_>,
-    map: &HeatMap,
-    plot_rect: Rect,
-    label_style: &TextStyle<'_>,
-    taken: &mut Vec<Rect>,
-) -> std::result::Result<(), String> {
-    for m in &map.markers {
-        let ring = [
-            Circle::new(m.at, 9, WHITE.filled()),
-            Circle::new(m.at, 9, BLACK.stroke_width(2)),
-            Circle::new(m.at, 3, BLACK.filled()),
-        ];
-        cc.draw_series(ring).map_err(plot::msg)?;
-        if m.label.is_empty() {
-            continue;
+    /// One label per contour line with its value, on a segment of the line (tried from the
+    /// middle of the traced segments outwards) where the label box lies inside the plotting area
+    /// and every clip ellipse and clear of what is taken; a level with no such place goes
+    /// unlabelled.
+    fn contour_labels(&mut self, map: &HeatMap, levels: &[f64], step: f64) -> std::result::Result<(), String> {
+        let Labels { root, cc, plot_rect, taken, .. } = self;
+        let (root, plot_rect) = (*root, *plot_rect);
+        let style = plot::font(CONTOUR_LABEL_SIZE, FontStyle::Normal);
+        let shown = map.shown_values();
+        for &level in levels {
+            let segs = contour_segments(&map.xs, &map.ys, &shown, level);
+            if segs.is_empty() {
+                continue;
+            }
+            let text = level_label(level, step);
+            let (w, h) = root.estimate_text_size(&text, &style).map_err(plot::msg)?;
+            let (w, h) = (w as i32 + 6, h as i32 + 4);
+            let mid = segs.len() / 2;
+            let order = (0..segs.len()).map(|k| if k % 2 == 0 { mid + k / 2 } else { mid.wrapping_sub(k / 2 + 1) });
+            let inside_clip = |p: (i32, i32)| {
+                cc.as_coord_spec().reverse_translate(p).is_some_and(|(x, y)| map.clip.iter().all(|e| e.contains(x, y)))
+            };
+            let rects = order.filter(|&k| k < segs.len()).map(|k| {
+                let s = segs[k];
+                let c = ((s[0].0 + s[1].0) / 2.0, (s[0].1 + s[1].1) / 2.0);
+                let p = cc.backend_coord(&c);
+                (p.0 - w / 2, p.1 - h / 2, p.0 - w / 2 + w, p.1 - h / 2 + h)
+            });
+            // the first box inside the plot and every clip ellipse and clear of the rest, or none
+            let cost = |rect: Rect| {
+                let corners = [(rect.0, rect.1), (rect.2, rect.1), (rect.0, rect.3), (rect.2, rect.3)];
+                usize::from(
+                    !(inside(rect, plot_rect)
+                        && corners.iter().all(|&q| inside_clip(q))
+                        && !taken.iter().any(|&o| overlaps(rect, o))),
+                )
+            };
+            if let Some((rect, 0)) = first_least(rects, cost) {
+                root.draw(&Rectangle::new([(rect.0, rect.1), (rect.2, rect.3)], WHITE.mix(0.8).filled()))
+                    .map_err(plot::msg)?;
+                root.draw_text(&text, &style, (rect.0 + 3, rect.1 + 2)).map_err(plot::msg)?;
+                taken.push(rect);
+            }
         }
-        let p = cc.backend_coord(&m.at);
-        let (w, h) = root.estimate_text_size(&m.label, label_style).map_err(plot::msg)?;
-        let (w, h) = (w as i32 + 10, h as i32 + 6);
-        let candidates = [
-            (p.0 + 14, p.1 - h / 2),
-            (p.0 - 14 - w, p.1 - h / 2),
-            (p.0 - w / 2, p.1 - 14 - h),
-            (p.0 - w / 2, p.1 + 14),
-            (p.0 + 10, p.1 - 10 - h),
-            (p.0 - 10 - w, p.1 - 10 - h),
-            (p.0 + 10, p.1 + 10),
-            (p.0 - 10 - w, p.1 + 10),
-        ];
-        let rects = candidates.map(|(l, t)| (l, t, l + w, t + h));
-        // the first box inside the plot and clear of the rest, else the first inside, else the first
-        let cost = |r: Rect| match (inside(r, plot_rect), taken.iter().any(|&o| overlaps(r, o))) {
-            (true, false) => 0,
-            (true, true) => 1,
-            (false, _) => 2,
-        };
-        let rect = first_least(rects, cost).map_or(rects[0], |(r, _)| r);
-        boxed_text(root, &m.label, rect, label_style)?;
-        taken.push(rect);
+        Ok(())
     }
-    Ok(())
+
+    /// The markers (ringed dots) with their labels where they fit, clear of what is taken.
+    fn markers(&mut self, map: &HeatMap) -> std::result::Result<(), String> {
+        let Labels { root, cc, plot_rect, style: label_style, taken } = self;
+        let (root, plot_rect) = (*root, *plot_rect);
+        for m in &map.markers {
+            let ring = [
+                Circle::new(m.at, 9, WHITE.filled()),
+                Circle::new(m.at, 9, BLACK.stroke_width(2)),
+                Circle::new(m.at, 3, BLACK.filled()),
+            ];
+            cc.draw_series(ring).map_err(plot::msg)?;
+            if m.label.is_empty() {
+                continue;
+            }
+            let p = cc.backend_coord(&m.at);
+            let (w, h) = root.estimate_text_size(&m.label, label_style).map_err(plot::msg)?;
+            let (w, h) = (w as i32 + 10, h as i32 + 6);
+            let candidates = [
+                (p.0 + 14, p.1 - h / 2),
+                (p.0 - 14 - w, p.1 - h / 2),
+                (p.0 - w / 2, p.1 - 14 - h),
+                (p.0 - w / 2, p.1 + 14),
+                (p.0 + 10, p.1 - 10 - h),
+                (p.0 - 10 - w, p.1 - 10 - h),
+                (p.0 + 10, p.1 + 10),
+                (p.0 - 10 - w, p.1 + 10),
+            ];
+            let rects = candidates.map(|(l, t)| (l, t, l + w, t + h));
+            // the first box inside the plot and clear of the rest, else the first inside, else the first
+            let cost = |r: Rect| match (inside(r, plot_rect), taken.iter().any(|&o| overlaps(r, o))) {
+                (true, false) => 0,
+                (true, true) => 1,
+                (false, _) => 2,
+            };
+            let rect = first_least(rects, cost).map_or(rects[0], |(r, _)| r);
+            boxed_text(root, &m.label, rect, label_style)?;
+            taken.push(rect);
+        }
+        Ok(())
+    }
 }
 
 /// The colour bar right of the plot, as tall as the plotting area, with the contour levels

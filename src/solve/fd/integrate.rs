@@ -7,9 +7,10 @@ use crate::error::{Error, Result};
 use crate::model::contact::{ContactLaw, ContactState, Phase};
 use crate::model::free::FreeVibration;
 use crate::model::tangential::ForcePiece;
+use crate::solve::fd::ledger::Motion;
 use crate::solve::fd::stepper::Stepper;
 use crate::solve::fd::FdModel;
-use crate::solve::hermite::{hermite_eval, hermite_max, hermite_root};
+use crate::solve::hermite::Hermite;
 use crate::solve::oblique::Follower;
 use crate::solve::observer::Observer;
 use crate::solve::outcome::ImpactResult;
@@ -83,7 +84,9 @@ impl FdModel {
         // contact: a cubic through both over each step)
         let mut force_prev = (0.0, self.impact.contact.compression_stiffness() * v1);
         let yt_of = |st: &Stepper| cp.compression(st.ball.y, &st.y, st.th);
-        obs.observe(0, || self.ledger(&st, phase, &cs, 0.0, 0.0).row(0.0, e0, cs.force, st.ball.y, yt_of(&st), st.th));
+        let motion =
+            |t: f64, st: &Stepper, force: f64| Motion { t, force, y_ball: st.ball.y, y_total: yt_of(st), theta: st.th };
+        obs.observe(0, || self.ledger(&st, phase, &cs, 0.0, 0.0).row(e0, motion(0.0, &st, cs.force)));
 
         loop {
             if t > t_limit {
@@ -98,7 +101,7 @@ impl FdModel {
             let mut ytd = cp.compression(st.ball.v, &st.v, st.om);
             if phase == Phase::Compression && ytd <= 0.0 {
                 // The maximum of Y_T lies in this step: switch to the expansion law there.
-                let (s_max, yt_max) = hermite_max(yt_prev, ytd_prev, yt, ytd, dt);
+                let (s_max, yt_max) = Hermite { h: dt, p0: yt_prev, m0: ytd_prev, p1: yt, m1: ytd }.max();
                 t_max = t + s_max * dt;
                 y0 = self.impact.contact.ball_compression_at_max(yt_max);
                 phase = Phase::Expansion { y0 };
@@ -115,11 +118,11 @@ impl FdModel {
             let l = self.ledger(&st, phase, &cs, pe, ke);
             energy_dev = energy_dev.max((l.total() - e0).abs());
             momentum_dev = momentum_dev.max((mb * st.ball.v + mom - p0).abs());
-            obs.observe(step, || l.row(t, e0, cs.force, st.ball.y, yt_of(&st), st.th));
+            obs.observe(step, || l.row(e0, motion(t, &st, cs.force)));
             if matches!(phase, Phase::Expansion { .. }) && yt <= 0.0 {
-                let s = hermite_root(yt_prev, ytd_prev, yt, ytd, dt);
+                let s = Hermite { h: dt, p0: yt_prev, m0: ytd_prev, p1: yt, m1: ytd }.root();
                 tangential.advance(|| ForcePiece::hermite(s * dt, force_prev, (0.0, 0.0)));
-                let theta_end = hermite_eval(th_prev, om_prev, st.th, st.om, dt, s);
+                let theta_end = Hermite { h: dt, p0: th_prev, m0: om_prev, p1: st.th, m1: st.om }.eval(s);
                 let tau = t - dt + s * dt;
                 return Ok(Separated {
                     st,
@@ -209,8 +212,9 @@ impl FdModel {
             *t += self.dt;
             *step += 1;
             obs.observe(*step, || {
-                let yt = cp.compression(st.ball.y, &st.y, st.th);
-                self.ledger(st, *phase, cs, pe, ke).row(*t, e0, cs.force, st.ball.y, yt, st.th)
+                let y_total = cp.compression(st.ball.y, &st.y, st.th);
+                let at = Motion { t: *t, force: cs.force, y_ball: st.ball.y, y_total, theta: st.th };
+                self.ledger(st, *phase, cs, pe, ke).row(e0, at)
             });
         }
     }

@@ -18,18 +18,32 @@ pub(super) struct Ledger {
     hand: f64,
 }
 
+/// Where the impact is at one instant: the time series' columns beside the ledger's.
+pub(super) struct Motion {
+    /// Time, s.
+    pub t: f64,
+    /// Contact force, N.
+    pub force: f64,
+    /// Ball displacement `y_b` and total compression `Y_T`, m.
+    pub y_ball: f64,
+    pub y_total: f64,
+    /// Twist angle, rad.
+    pub theta: f64,
+}
+
 impl Ledger {
     pub fn total(&self) -> f64 {
         self.ke_ball + self.pe_ball + self.pe_string + self.ke_racket + self.pe_racket + self.ke_spin + self.hand
     }
 
-    pub fn row(&self, t: f64, e0: f64, force: f64, yb: f64, yt: f64, th: f64) -> SeriesRow {
+    /// The time-series row at `at`, the energies as fractions of the incident `e0` (J).
+    pub fn row(&self, e0: f64, at: Motion) -> SeriesRow {
         SeriesRow {
-            t_s: t,
-            force_n: force,
-            y_ball_m: yb,
-            y_total_m: yt,
-            theta_rad: th,
+            t_s: at.t,
+            force_n: at.force,
+            y_ball_m: at.y_ball,
+            y_total_m: at.y_total,
+            theta_rad: at.theta,
             ke_ball: self.ke_ball / e0,
             pe_ball: self.pe_ball / e0,
             pe_string: self.pe_string / e0,

@@ -5,7 +5,7 @@
 //! (`Y_T = -g.q - R F`) the force is `F = -kappa g.q`, `kappa = k / (1 + k R)`. Every coordinate
 //! then obeys `q'' + (Lambda + kappa g g^T) q = 0`: a linear system whose modes, the *coupled*
 //! modes of ball, strings and frame, are found once per prepared model (the eigenpairs of
-//! `Lambda + kappa g g^T` that the spring couples, [`crate::model::rank_one`]; the part of the
+//! `Lambda + kappa g g^T` that the spring couples, [`crate::numeric::rank_one`]; the part of the
 //! ball's arrival they do not carry is a rigid motion the spring does not feel). The ball
 //! arrives with the frame at rest, so each coupled mode `k` moves as `c_k v1 sin(s_k t) / s_k`
 //! (or `c_k v1 t` for a rigid motion of frequency 0) and the compression rate is
@@ -20,9 +20,9 @@
 //! compression phase is taken, so no error is made in it: the stepping starts at maximum
 //! compression, where the force's rate is zero on both sides and the expansion law takes over.
 
-use crate::model::rank_one::coupled_modes;
-use crate::model::short_turn::{series_terms, small_sin_cos};
-use crate::model::spare::Buf;
+use crate::numeric::rank_one::coupled_modes;
+use crate::numeric::short_turn::{series_terms, small_sin_cos};
+use crate::numeric::spare::Buf;
 use crate::solve::modal::pair::Pair;
 use crate::solve::modal::State;
 

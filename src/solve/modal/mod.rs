@@ -1,4 +1,10 @@
-//! A second, independent solver: modal superposition of the same discrete beam.
+//! The fast solver: modal superposition of the same discrete beam as the explicit solver
+//! ([`crate::solve::fd`], the accuracy reference), independent of it in method. Every coordinate
+//! is propagated exactly between steps, so the step is set by the contact (a tenth of a radian of
+//! its stiffest oscillation), not by the stiffest beam mode, and the compression phase takes no
+//! step at all: the two solvers agree to about 1e-4 (tests/modal.rs), the modal one at some
+//! fifty times less work an impact, which is what makes maps, sweeps and uncertainty studies of
+//! thousands of impacts cheap.
 //!
 //! The free-free beam is written in its mass-normalised modes (rigid translation and rotation
 //! about the centre of mass exactly, flexible modes from the nalgebra eigen-decomposition of
@@ -9,7 +15,7 @@
 //!
 //! Until maximum compression the contact is a linear spring (Eq 9), so the compression phase is
 //! solved in closed form: the coupled modes of ball, strings and frame are found once per
-//! prepared model (a rank-one secular equation, [`crate::model::rank_one`]) and the run finds the
+//! prepared model (a rank-one secular equation, [`crate::numeric::rank_one`]) and the run finds the
 //! time of maximum compression and every coordinate there (`compression`). No step is taken
 //! before it, so no error is made there, and the steps start where the force's rate is zero on
 //! both sides and the expansion law (Eq 10) takes over.
@@ -46,50 +52,8 @@
 //! result, `compression` solves the compression phase, `steps` builds the step tables, `run`
 //! takes the steps.
 //!
-//! Where the time goes (callgrind instruction counts, repeatable on a loaded machine; the Fig 4
-//! impact at N 39 on a prepared model, 14 coordinates, 28 steps from maximum compression, some
-//! halved where the force history misses the law, most of those towards the end; about 72,600
-//! instructions an impact, against 86,500 before the time of maximum compression moved into the
-//! set-up and the per-impact buffers were reused, and 153,000 when the compression phase was
-//! stepped too):
-//! ```text
-//! the state at maximum compression       2k  (the time itself found once, in the set-up)
-//! steps from maximum compression        45k  (about 31 attempts of some 1.45k each)
-//!   expansion law, Newton + powers       12k  (3-4 iterations a step)
-//!   predict + correct, 14 pairs, check, ledger, the separation root: the rest
-//! peak bending PE after separation      23k  (20 sin_cos, short rotations, the Newton polish)
-//! re-contact check, result, buffers     ~3k  (no allocation: `model::spare`)
-//! ```
-//! The floor of this design is the step count times the cost of a step: each attempt is a
-//! prediction, an end-of-step law solve, a check of the cubic against the law and a correction,
-//! about 1.45k instructions of which the 14 coordinates take a third; the peak-PE search adds
-//! some 20k of trigonometry and short rotations: about 5 us on this machine, not 2.
-//! Fewer steps at the end of the contact (where the force falls as `(t_s - t)^p` and a cubic
-//! history needs steps of 1/2 and 1/4: 10 of the 28) would need a force history that is not a
-//! cubic in time there, and the exact step tables need the responses to be linear in the step's
-//! end values, which a power of a cubic is not: not done. Fewer coordinates, measured (largest
-//! difference from fd over 30 impacts, instructions a paper impact): cut-off 50 (today, 10
-//! flexible modes) 2.9e-7 in e_A and 5.6e-7 in tau at 72.6k; 20 (6 modes) 3.3e-6 and 1.0e-5 at
-//! 58.8k; 10 (4 modes) 8.6e-6 and 6.3e-5 at 53.3k. A residual mode standing in for the dropped
-//! ones (matching their static flexibility and first dynamic correction) was worse at the same
-//! cut-off (2.5e-5 and 8.3e-5 at 10): it rings at one frequency where the dropped modes
-//! dephase. Trading a tenfold loss of agreement for a fifth of the time would move every modal
-//! map and study, so the cut-off stays. With set-up, as a sweep runs it (the model prepared per
-//! point: coupled modes 20-25k, the time of maximum compression about 10k, step tables 8-11k a
-//! level, three levels built during the run), a sweep point over x, r and ks costs about 187,000
-//! instructions (195,000 before), the same impact at 30 deg with 2000 rpm under `elastic`
-//! 126,000 prepared (143,000; 128,000 since issue 29): the tangential law follows 40-odd force
-//! pieces. Under the default law `loss` (issue 29: modes up to 100 times the contact
-//! frequency, [`MECHANISMS_RESOLUTION`]) the prepared oblique impact costs 236,000
-//! instructions. The set-up does not depend on the incident speed, angle, azimuth, spin or
-//! friction (but for the resolution, [`Resolution::of`]: normal or `elastic` impacts and
-//! oblique ones under a law with mechanisms have set-ups of their own), so an impact that differs from the one
-//! before on its thread only in those takes it as it is (`shared`, bit for bit the same model):
-//! a 1000-point sweep over x, r and v1 costs 123,000 instructions a point (136,000 before).
-//!
-//! Design note: a quintic force history (carrying `F''` too, 6th order) was tried. Its steps can
-//! be twice as long for the same accuracy, but each costs about 1.5 times as much, its set-up
-//! twice as much, and the end of the contact still needs split steps, so it was no faster.
+//! Where the time goes, what was measured and what was tried (the cut-off, a residual mode, a
+//! quintic force history) is in `docs/performance.md`.
 
 mod compression;
 mod pair;
@@ -100,8 +64,8 @@ mod steps;
 use crate::error::{Error, Result};
 use crate::model::contact::{ContactLaw, Cross, Phase};
 use crate::model::free::FreeVibration;
-use crate::model::spare::{pooled, Buf, Pooled};
 use crate::model::tangential::ForcePiece;
+use crate::numeric::spare::{pooled, Buf, Pooled};
 use crate::params::{Params, TangentialLaw};
 use crate::solve::oblique::Follower;
 use crate::solve::outcome::ImpactResult;
@@ -329,36 +293,17 @@ impl ModalModel {
             }
             run.advance()?;
         }
-        let (tau, theta) = run.separated.unwrap_or_default();
-        let mut result = self.finish(
-            &run.s,
-            run.t - tau,
-            y0,
-            tau,
-            theta,
-            run.at.t_max,
-            run.peak_force,
-            run.energy_err,
-            run.momentum_err,
-        )?;
+        let mut result = self.finish(&run, y0);
         run.tangential.complete(self.impact.oblique.as_ref(), &mut result, v1)?;
         result.check_finite()?;
         Ok(result)
     }
 
-    #[allow(clippy::too_many_arguments)]
-    fn finish(
-        &self,
-        s: &State,
-        since_separation: f64,
-        y0: f64,
-        tau: f64,
-        theta: f64,
-        t_max: f64,
-        peak_force: f64,
-        energy_err: f64,
-        momentum_err: f64,
-    ) -> Result<ImpactResult> {
+    /// The result of the separated impact `run` whose ball was compressed by `y0` at most, m
+    /// (its oblique fields aside).
+    fn finish(&self, run: &Run<'_>, y0: f64) -> ImpactResult {
+        let (s, (tau, theta)) = (&run.s, run.separated.unwrap_or_default());
+        let since_separation = run.t - tau;
         let p = &self.impact.params;
         let e0 = 0.5 * p.ball.mass * p.impact.v1 * p.impact.v1;
         let e_a = -s.v(0) / (p.ball.mass.sqrt() * p.impact.v1);
@@ -367,7 +312,7 @@ impl ModalModel {
             .map(|k| 0.5 * (s.v(k) * s.v(k) + self.set.lam[k] * s.q(k) * s.q(k)))
             .fold(0.0, |a, b| a + b);
         let (peak_pe, recontact) = self.after_impact(s, since_separation);
-        let result = ImpactResult {
+        ImpactResult {
             e_a,
             tau_s: tau,
             theta_end_deg: theta.to_degrees(),
@@ -378,17 +323,16 @@ impl ModalModel {
             f_spin: 0.5 * s.v(3) * s.v(3) / e0,
             f_rigid: 0.5 * (s.v(1) * s.v(1) + s.v(2) * s.v(2)) / e0,
             f_ke_ball: e_a * e_a,
-            peak_force_n: peak_force,
-            energy_error: energy_err,
-            momentum_error: momentum_err,
+            peak_force_n: run.peak_force,
+            energy_error: run.energy_err,
+            momentum_error: run.momentum_err,
             x_load_m: self.impact.coupling.load.x_load,
-            t_max_compression_s: t_max,
+            t_max_compression_s: run.at.t_max,
             y0_m: y0,
             recontact,
             dt_s: self.step(),
             ..ImpactResult::ZERO
-        };
-        Ok(result)
+        }
     }
 
     /// Peak bending PE over two fundamental periods of free vibration from separation, and
@@ -412,7 +356,7 @@ impl ModalModel {
 }
 
 /// The coordinates (mass-normalised, rigid first) and their rates, `[q, q']` each (storage
-/// reused from impact to impact, [`crate::model::spare`]).
+/// reused from impact to impact, [`crate::numeric::spare`]).
 #[derive(Debug, Clone)]
 struct State {
     x: Buf<Pair>,

@@ -6,7 +6,7 @@
 use crate::error::Result;
 use crate::model::contact::{ContactLaw, ImplicitLaw, Phase};
 use crate::model::tangential::ForcePiece;
-use crate::solve::hermite::{hermite_eval, hermite_root};
+use crate::solve::hermite::Hermite;
 use crate::solve::modal::pair::Pair;
 use crate::solve::modal::steps::Grid;
 use crate::solve::modal::{ModalModel, State, LEVELS, START};
@@ -104,10 +104,11 @@ impl Run<'_> {
         let y0 = a.y0();
         let f1 = end.f;
         let points: &[f64] = if f1 < 0.25 * a.f { &[0.25, 0.5, 0.75] } else { &[0.5] };
+        let compression = Hermite { h, p0: a.yt, m0: a.ytd, p1: end.yt, m1: end.ytd };
+        let force = Hermite { h, p0: a.f, m0: a.d, p1: f1, m1: end.d };
         let mut miss: f64 = 0.0;
         for &s in points {
-            let ym = hermite_eval(a.yt, a.ytd, end.yt, end.ytd, h, s);
-            let cubic = hermite_eval(a.f, a.d, f1, end.d, h, s);
+            let (ym, cubic) = (compression.eval(s), force.eval(s));
             miss = miss.max(c.expansion_miss(y0, ym, cubic).abs());
         }
         miss
@@ -124,11 +125,12 @@ impl Run<'_> {
         self.peak_force = self.peak_force.max(f1);
         self.ledger(&end, modal_energy);
         if f1 <= 0.0 {
-            let sc = hermite_root(a.yt, a.ytd, end.yt, end.ytd, h);
+            let sc = Hermite { h, p0: a.yt, m0: a.ytd, p1: end.yt, m1: end.ytd }.root();
             // twist angle at the crossing (`next` now holds the state before the step)
             let ix = m.impact.params.racket.ix;
             let (before, after) = (self.next.x[3].get(), self.s.x[3].get());
-            let theta = hermite_eval(before[0], before[1], after[0], after[1], h, sc) / ix.sqrt();
+            let twist = Hermite { h, p0: before[0], m0: before[1], p1: after[0], m1: after[1] };
+            let theta = twist.eval(sc) / ix.sqrt();
             self.separated = Some((self.t - h + sc * h, theta));
             // the last piece ends at the separation with no force and no rate, as in the explicit
             // solver: the ball's tangent stiffness vanishes with its compression (p > 1)

@@ -11,7 +11,8 @@
 //! Nielsen and Sorensen (1978; the poles on each side of the root replaced by one pole with the
 //! same value and slope, whose root is a quadratic's), kept inside its interval by bisection
 //! ([`super::root::Bracket`]), with `mu` measured from the nearer pole so that no digits are
-//! lost next to it: three to seven iterations a root. The cost is of order `n^2`, against `n^3` for a dense decomposition.
+//! lost next to it: three to seven iterations a root. The cost is of order `n^2`, against `n^3`
+//! for a dense decomposition.
 
 use super::root::Bracket;
 

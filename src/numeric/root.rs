@@ -2,12 +2,12 @@
 //! `lo` before the switch and `hi` past it, halved by [`bisect`] to rounding, or kept around
 //! the iterates of a faster method that falls back on its midpoint when a step would leave it
 //! ([`Bracket::inside_or_mid`]: the Newton steps of `solve::hermite` and of the stiffening
-//! strings' expansion, [`super::contact`], the rational steps of [`super::rank_one`]).
+//! strings' expansion, [`crate::model::contact`], the rational steps of [`super::rank_one`]).
 //!
 //! Each caller says which side a point is on (`before`), and with it its sign convention:
 //! `f > 0` before a fall through zero that counts zero as past, `f >= 0` one that counts zero
 //! as before. (The event location of the tangential stepper, an Illinois regula falsi on RK4
-//! substeps, `super::tangential::stepper`, stays its own: its iterates are whole integration
+//! substeps, `crate::model::tangential::stepper`, stays its own: its iterates are whole integration
 //! steps, and it restarts on another guard that fails earlier.)
 //!
 //! Hand-written rather than taken from a crate: `roots` has no plain bisection, and its
