@@ -115,7 +115,7 @@ pub struct ClaimRobustness {
     pub conclusion: Standing,
     /// How far the sampled 5-95 % range of what the conclusion compares stays from its
     /// threshold, in units of that range's width (negative where it crosses); the nearest of its
-    /// thresholds; `None` where no sampled input moves it ([`margin`]).
+    /// thresholds; `None` where no sampled input moves it ([`margins`]).
     pub conclusion_margin: Option<f64>,
     /// Whether the conclusion holds at the paper's inputs (the report's values).
     pub conclusion_nominal: bool,
@@ -229,6 +229,9 @@ pub fn context_at(base: &Context, inputs: &[Input], x: &[f64]) -> Result<Context
     Ok(ctx)
 }
 
+/// A claim at twice the samples: its summary, conclusion share and conclusion margin.
+type Twice = (Summary, Option<f64>, Option<f64>);
+
 /// Every claim under the declared uncertainty, on `base` (the paper's context for the
 /// report): `samples` base samples from `seed`, and with `doubled` also twice as many (their
 /// first half are the same runs); `progress` gets the claim evaluations done. `nominal`: the
@@ -268,7 +271,7 @@ pub fn study(
     let small_ab = &small_rows[..2 * small.samples()];
     let small_shares = shares(&ids, &checks, small_ab);
     let small_margins = margins(&ids, &checks, small_ab);
-    let mut twice: Vec<Option<(Summary, Option<f64>, Option<f64>)>> = vec![None; claims.len()];
+    let mut twice: Vec<Option<Twice>> = vec![None; claims.len()];
     if doubled {
         let ab = &rows[..2 * design.samples()];
         let (twice_shares, twice_margins) = (shares(&ids, &checks, ab), margins(&ids, &checks, ab));
