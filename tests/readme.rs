@@ -104,33 +104,41 @@ fn the_claims_counts_agree_in_the_command_readme_and_report() {
     // the README's prose, a count of none written as a word
     let readme = std::fs::read_to_string(format!("{root}/README.md")).unwrap();
     let readme = readme.split_whitespace().collect::<Vec<_>>().join(" ");
-    let word = |k: u64, none: &str| if k == 0 { none.to_string() } else { k.to_string() };
+    let number = |k: u64, one: &str, many: &str| match k {
+        0 => format!("none {one}"),
+        1 => format!("1 {one}"),
+        _ => format!("{k} {many}"),
+    };
     let phrases = [
         format!("{} of the {claims} hold in every sample", c("holds")),
         format!("{} mostly", c("mostly")),
         format!("{} are contested", c("contested")),
-        format!("{} fails", word(c("fails"), "none")),
-        format!("{} do not depend on the sampled inputs", c("independent")),
+        number(c("fails"), "fails", "fail"),
+        number(c("independent"), "does not depend on the sampled inputs", "do not depend on the sampled inputs"),
+        format!("{} hold by construction", c("by_construction")),
         format!("{} hold over the whole 5-95 % interval", n("holds")),
         format!("{} over part of it", n("part")),
         format!("{} nowhere", n("not at all")),
-        format!("{} do not depend on the sampled inputs (a closed form", n("independent")),
-        format!("{} is borderline", word(n("borderline"), "none")),
+        number(
+            n("independent"),
+            "does not depend on the sampled inputs (verdict `independent`)",
+            "do not depend on the sampled inputs (verdict `independent`)",
+        ),
+        number(n("no number"), "states no number", "state no number"),
+        number(n("borderline"), "is borderline", "are borderline"),
     ];
     let missing: Vec<&String> = phrases.iter().filter(|p| !readme.contains(p.as_str())).collect();
     assert!(missing.is_empty(), "README does not say what `uncertainty --claims` counts: {missing:?}");
-    // REPORT.md's two count lines
+    // REPORT.md's two count lines give the same numbers, in this order
     let report = std::fs::read_to_string(format!("{root}/REPORT.md")).unwrap();
-    let line =
-        |start: &str| report.lines().find(|l| l.starts_with(start)).unwrap_or_else(|| panic!("{start}")).to_string();
-    let conclusions = format!(
-        "**Conclusions: {} hold in every sample, {} mostly, {} contested, {} fail; {} do not depend on the sampled inputs; borderline, counted apart: {}.**",
-        c("holds"), c("mostly"), c("contested"), c("fails"), c("independent"), c("borderline")
-    );
-    assert_eq!(line("**Conclusions:"), conclusions);
-    let numbers = format!(
-        "**Numbers: {} hold over the whole interval, {} over part of it, {} not at all; {} do not depend on the sampled inputs; borderline, counted apart: {}.**",
-        n("holds"), n("part"), n("not at all"), n("independent"), n("borderline")
-    );
-    assert!(line("**Numbers:").starts_with(&numbers), "REPORT.md: {}\ncommand: {numbers}", line("**Numbers:"));
+    let numbers_in = |start: &str| -> Vec<u64> {
+        let line = report.lines().find(|l| l.starts_with(start)).unwrap_or_else(|| panic!("{start}"));
+        let bold = line.split("**").nth(1).unwrap();
+        bold.split(|ch: char| !ch.is_ascii_digit()).filter(|w| !w.is_empty()).map(|w| w.parse().unwrap()).collect()
+    };
+    let conclusions: Vec<u64> =
+        ["holds", "mostly", "contested", "fails", "independent", "borderline", "by_construction"].map(c).to_vec();
+    assert_eq!(numbers_in("**Conclusions:"), conclusions, "REPORT.md's conclusions against the command's");
+    let numbers: Vec<u64> = ["holds", "part", "not at all", "independent", "no number", "borderline"].map(n).to_vec();
+    assert_eq!(numbers_in("**Numbers:"), numbers, "REPORT.md's numbers against the command's");
 }
