@@ -27,6 +27,8 @@
 //! src/study/             sweeps, string-face maps, swing-speed comparisons, Sobol' uncertainty
 //! src/experiments/       one file per result of the paper, each with its paper claims
 //! src/report.rs          the claims collected, the paper beside ours
+//! src/intake/            where a command's parameters come from (racket, config, flags), what
+//!                        a value no impact uses is told, the checks of a run's inputs and results
 //! src/racket/            racket files in player units, fitted to the beam, and the fit report
 //!         |                            \
 //! src/render/            tables (CSV), line charts, heat maps, one impact as text, atomic files
@@ -64,13 +66,16 @@
 //!   with its paper claims; they run on a racket given as an argument ([`experiments::Context`]).
 //! - [`study`]: parallel, streamed parameter sweeps, string-face maps, swing-speed comparisons,
 //!   uncertainty propagation and Sobol' sensitivity (`uncertainty`, the `robustness` experiment).
+//! - [`intake`]: a command's parameters from a racket, a config file and the flags
+//!   ([`intake::Sources`]), the notes and refusals of a value no impact uses, the comparison
+//!   options, and the physics-validity checks of a run ([`intake::diagnose`]).
 //! - [`render`]: result tables, the one look of every figure, heat maps, the text of one
 //!   impact, the files of a map, atomic writes.
 //! - [`report`]: the paper's numbers beside ours, collected from the experiments' claims.
 //! - [`numfmt`]: how numbers are written, in messages and in tables, for every layer.
 //! - [`numeric`]: numerical tools apart from the physics (a bracketing root finder, the modes of
 //!   oscillators joined by one spring, short turns, buffers reused from impact to impact).
-//! - [`diagnostic`]: warnings as data, returned with a result ([`study::diagnose`] checks a run).
+//! - [`diagnostic`]: warnings as data, returned with a result ([`intake::diagnose`] checks a run).
 //!
 //! ## Example
 //! The Fig 4 impact with the paper's numerics:
@@ -93,6 +98,7 @@
 pub mod diagnostic;
 pub mod error;
 pub mod experiments;
+pub mod intake;
 pub mod model;
 pub mod numeric;
 pub mod numfmt;

@@ -1,6 +1,6 @@
 //! The crate's arrows point down only: each top-level module of the library imports only
 //! modules of lower layers, so there is no import circle between them, and no lower layer
-//! (params, model, solve, render, racket, study) knows of the experiments, the report or the
+//! (params, model, solve, render, racket, intake, study) knows of the experiments, the report or the
 //! command line. The check reads the sources: every `crate::` path (`use crate::x::...`,
 //! `use crate::{x::..., y::...}`, an inline `crate::x::f()`) and every `super::` chain that
 //! climbs out of its top-level module, outside comments.
@@ -23,6 +23,7 @@ const LAYERS: &[&[&str]] = &[
     &["solve"],
     &["render"],
     &["racket"],
+    &["intake"],
     &["study"],
     &["experiments"],
     &["report"],

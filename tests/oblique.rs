@@ -268,13 +268,13 @@ fn a_chattering_switch_is_flagged_and_told() {
     let (a, b) = (simulate(&with(p, SolverKind::Fd)).unwrap(), simulate(&with(p, SolverKind::Modal)).unwrap());
     assert!(a.tangential_chatter || b.tangential_chatter);
     assert!((a.slip_fraction - b.slip_fraction).abs() > 1e-4, "{} vs {}", a.slip_fraction, b.slip_fraction);
-    let told = racket_impact::study::diagnose::impact(&p, &b);
+    let told = racket_impact::intake::diagnose::impact(&p, &b);
     assert!(told.iter().any(|d| d.field == "tangential"), "{told:?}");
     // the same impact under loss (no strings sliding) does not chatter
     p.oblique.tangential = TangentialLaw::Loss;
     let c = simulate(&with(p, SolverKind::Modal)).unwrap();
     assert!(!c.tangential_chatter);
-    assert!(!racket_impact::study::diagnose::impact(&p, &c).iter().any(|d| d.field == "tangential"));
+    assert!(!racket_impact::intake::diagnose::impact(&p, &c).iter().any(|d| d.field == "tangential"));
 }
 
 #[test]

@@ -25,6 +25,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
 use clap::CommandFactory;
+use cli::overrides::KeySet;
 use racket_impact::params::spec::{UsedWhen, Values};
 use racket_impact::params::{keys, used, Overrides, Params};
 
@@ -456,29 +457,36 @@ fn sample_value(key: &str) -> String {
     }
 }
 
-/// The flags a parameter needs to be used by `command` (a variant selected, an oblique ball).
-fn context(command: &str, key: &str) -> Vec<&'static str> {
-    match key {
-        // calibrate's base rows set the shot (the grip and the incidence are theirs)
-        "dt" if command == "calibrate" => vec!["--solver", "fd"],
-        "string-stiffening" | "stiffening-deflection" if command == "calibrate" => vec!["--strings", "stiffening"],
-        _ if command == "calibrate" => vec![],
-        "mu-ss" if command == "speed" => vec!["--swing-path-deg", "20", "--tangential", "bed"],
-        "mu-ss" => vec!["--angle-deg", "30", "--tangential", "bed"],
-        "azimuth-deg" | "mu" | "mu-scale" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string"
-            if command == "speed" =>
-        {
-            vec!["--swing-path-deg", "20"]
+/// The flags a parameter needs to be used by `command`, read from its row's `used_when` (a
+/// variant selected, an oblique ball, an impact off the long axis), so that a new parameter
+/// needs no entry here.
+fn context(command: &str, key: &str) -> Vec<String> {
+    let spec = keys::find(key).unwrap();
+    let takes = |flag: &str| {
+        option_table()
+            .iter()
+            .any(|(c, opts)| c == command && opts.iter().any(|(_, long)| long.as_deref() == Some(flag)))
+    };
+    match spec.used_when {
+        // (modes runs no impact: its parameters describe the free racket)
+        _ if command == cli::overrides::ModesKeys::COMMAND => vec![],
+        // calibrate's base rows set the shot (its point, incidence and grip are theirs)
+        UsedWhen::Oblique | UsedWhen::OffAxis | UsedWhen::Twisted if command == "calibrate" => vec![],
+        UsedWhen::Always => vec![],
+        UsedWhen::Oblique if command == "speed" => strings(&["--swing-path-deg", "20"]),
+        UsedWhen::Oblique => strings(&["--angle-deg", "30"]),
+        // a map's grid is off the long axis; elsewhere the twist needs r != 0 and the face's
+        // width an impact beyond the default one (0.125 m)
+        UsedWhen::OffAxis | UsedWhen::Twisted if command == "map" => vec![],
+        UsedWhen::OffAxis => strings(&["--r", "0.13"]),
+        UsedWhen::Twisted => strings(&["--r", "0.03"]),
+        UsedWhen::In(selector, names) => {
+            let mut ctx = context(command, selector.key);
+            if takes(selector.key) {
+                ctx.extend([format!("--{}", selector.key), names[0].to_string()]);
+            }
+            ctx
         }
-        "azimuth-deg" | "mu" | "mu-scale" | "kt" | "ball-radius" | "ball-inertia-factor" | "tangential" | "string" => {
-            vec!["--angle-deg", "30"]
-        }
-        "hand-stiffness" | "hand-damping" | "grip-length" => vec!["--grip", "hand"],
-        "string-stiffening" | "stiffening-deflection" => vec!["--strings", "stiffening"],
-        // the twist and the face's width matter off the long axis (a map's grid is)
-        "ix" if command != "map" => vec!["--r", "0.03"],
-        "half-width" if command != "map" => vec!["--r", "0.13"],
-        _ => vec![],
     }
 }
 
@@ -521,7 +529,7 @@ fn every_option_changes_the_output_or_is_refused(runs: &Runs) -> (usize, Vec<Str
                     };
                     let flag = [format!("--{}", spec.key), value];
                     let b = strings(&base(&command));
-                    let ctx = strings(&context(&command, spec.key));
+                    let ctx = context(&command, spec.key);
                     let without: Vec<String> = ctx.iter().chain(&b).cloned().collect();
                     let with: Vec<String> = flag.iter().chain(&without).cloned().collect();
                     let bare = (!ctx.is_empty()).then(|| (flag.iter().chain(&b).cloned().collect::<Vec<_>>(), b));
@@ -681,8 +689,20 @@ fn every_parameter_under_every_selection(runs: &Runs) -> (usize, Vec<String>) {
             if selection[0] == format!("--{}", spec.key) {
                 continue;
             }
-            let ctx: Vec<String> = strings(&context("simulate", spec.key))
-                .into_iter()
+            // (the selection replaces a model the context selects, dt's --frame beam under --frame
+            // rigid; a selection of the impact the context also sets is not run, --r twice)
+            let context = context("simulate", spec.key);
+            let selected_too = context.iter().any(|a| *a == selection[0]);
+            let is_choice = keys::find(selection[0].trim_start_matches("--"))
+                .is_some_and(|s| matches!(s.values, racket_impact::params::spec::Values::Choice(_)));
+            if selected_too && !is_choice {
+                continue;
+            }
+            let ctx: Vec<String> = context
+                .chunks(2)
+                .filter(|pair| pair[0] != selection[0])
+                .flatten()
+                .cloned()
                 .chain(strings(selection))
                 .chain(strings(&base("simulate")))
                 .collect();
@@ -733,7 +753,10 @@ fn every_parameter_flag_is_under_its_declared_heading_and_says_when_it_is_used()
             let help = arg.get_help().map(ToString::to_string).unwrap_or_default();
             assert!(help.starts_with(spec.help()), "{at}: {help}");
             let said = help.rsplit_once(" [used only ").map(|(_, w)| w.trim_end_matches(']'));
+            // (modes runs no impact: its parameters are the free racket's, always used)
+            let impacts = command.get_name() != cli::overrides::ModesKeys::COMMAND;
             match spec.used_when {
+                _ if !impacts => assert_eq!(said, None, "{at}: {help}"),
                 UsedWhen::Always => assert_eq!(said, None, "{at}: {help}"),
                 when => assert_eq!(said, Some(used::words(&when).as_str()), "{at}: {help}"),
             }

@@ -1,7 +1,7 @@
 //! One vocabulary (trap class 6 of issue 24): each quantity has one name, with its unit, in the
 //! flags, the config files, the JSON and every CSV a command writes. The names are declared
 //! once: the parameters in params/keys.rs (key and column), the results in solve/outcome.rs
-//! (FIELDS), the few other columns in study/mod.rs (OTHER_COLUMNS); this test holds every
+//! (FIELDS), the few other columns in render/columns.rs (OTHER_COLUMNS); this test holds every
 //! output to that table.
 
 mod common;
@@ -12,8 +12,8 @@ use std::collections::BTreeSet;
 use racket_impact::params::keys;
 use racket_impact::params::spec::Values;
 use racket_impact::params::{Overrides, Params};
+use racket_impact::render::columns::OTHER_COLUMNS;
 use racket_impact::solve::outcome::FIELDS;
-use racket_impact::study::OTHER_COLUMNS;
 
 /// The unit as it is spelled at the end of a name (`N/m` -> `_n_per_m`).
 fn unit_suffix(unit: &str) -> String {

@@ -24,11 +24,11 @@ use pyo3::prelude::*;
 use pyo3::types::{PyByteArray, PyBytes, PyCFunction, PyList, PyString, PyTuple};
 use pyo3::BoundObject;
 
+use racket_impact::intake::Sources;
 use racket_impact::params::spec::Values;
 use racket_impact::params::{keys, Overrides};
 use racket_impact::render::table::{Table, Value};
 use racket_impact::study::sweep::Cell;
-use racket_impact::study::Sources;
 
 /// A library error as the `ValueError` the command line's message becomes.
 fn fail(e: racket_impact::Error) -> PyErr {
@@ -362,7 +362,7 @@ fn face_map(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyAny>> {
     // (the command has no flag for what the grid sets: a config file's values are noted)
     sources.not_taken = MAP_SETS.iter().map(|(s, _)| s.key).collect();
     if compare_tension_lb.len() >= 2 {
-        sources.set_by_options.extend(racket_impact::study::TENSION_SETS);
+        sources.set_by_options.extend(racket_impact::intake::compare::TENSION_SETS);
     }
     let quantity: Quantity = quantity.parse().map_err(fail)?;
     let request = MapRequest { sources, quantity, nx, nr, compare_racket, compare_tension_lb };
@@ -416,14 +416,14 @@ fn racket(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyAny>> {
     let run = || -> racket_impact::Result<_> {
         let spec = racket_impact::racket::load(&source)?;
         let fitted = spec.to_racket(segments)?;
-        let diagnostics = racket_impact::study::diagnose::racket(&fitted, segments);
+        let diagnostics = racket_impact::intake::diagnose::racket(&fitted, segments);
         let model = serde_json::json!({
             "racket": serde_json::to_value(fitted.racket).map_err(|e| racket_impact::Error::io("<json>", e))?,
             "strings": serde_json::to_value(fitted.strings).map_err(|e| racket_impact::Error::io("<json>", e))?,
             "ball": serde_json::to_value(fitted.ball).map_err(|e| racket_impact::Error::io("<json>", e))?,
             "diagnostics": serde_json::to_value(&diagnostics).map_err(|e| racket_impact::Error::io("<json>", e))?,
         });
-        Ok((racket_impact::study::racket_label(Some(&source)), model, fitted.report.table()))
+        Ok((racket_impact::intake::compare::racket_label(Some(&source)), model, fitted.report.table()))
     };
     let (name, model, table) = py.detach(run).map_err(fail)?;
     let out = (name, json_text(&model)?, table_py(py, &table)?);

@@ -120,7 +120,7 @@ pub fn run(a: CalibrateArgs) -> Result<()> {
         return Err(Error::invalid("format", "csv", "calibrate writes text or json"));
     }
     let sources = a.common.sources();
-    let from_config = racket_impact::study::config_file(sources.config.as_deref())?;
+    let from_config = racket_impact::intake::config_file(sources.config.as_deref())?;
     let given = sources.flags.clone().or(from_config.clone());
     let mut base = sources.params()?;
     if let Some(solver) = racket_impact::study::sweep::default_solver(&given, &[]) {
@@ -201,7 +201,7 @@ pub fn run(a: CalibrateArgs) -> Result<()> {
         noted.push(Diagnostic::new(Kind::NotUsed, "config", sentence));
     }
     let fitted_keys: Vec<&str> = params.iter().map(|f| f.spec.key).collect();
-    noted.extend(racket_impact::study::diagnose::parameters([&base], &fitted_keys));
+    noted.extend(racket_impact::intake::diagnose::parameters([&base], &fitted_keys));
     let problem = Problem::new(params, rows, weights)?;
     let outcome = calibrate::calibrate(&problem, hold_out)?;
     let text = match a.common.format {

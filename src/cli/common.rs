@@ -5,8 +5,8 @@ use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
 use racket_impact::diagnostic::Diagnostic;
+use racket_impact::intake::Sources;
 use racket_impact::params::Params;
-use racket_impact::study::Sources;
 use racket_impact::{Error, Result};
 
 use super::overrides::{KeySet, OverrideArgs};

@@ -61,7 +61,7 @@ pub struct MapArgs {
 pub fn run(a: MapArgs) -> Result<()> {
     let mut sources = a.common.sources();
     if a.compare_tension_lb.len() >= 2 {
-        sources.set_by_options.extend(racket_impact::study::TENSION_SETS);
+        sources.set_by_options.extend(racket_impact::intake::compare::TENSION_SETS);
     }
     let request = MapRequest {
         sources: sources.clone(),

@@ -30,7 +30,7 @@ pub fn run(a: ModesArgs) -> Result<()> {
     let freqs: Vec<f64> = (1..=a.count).map(|k| modes.frequency_hz(k)).collect();
     let nodes = modes.node_positions(1, &beam.x);
     let diagnostics: Vec<_> =
-        noted.into_iter().chain(racket_impact::study::diagnose::parameters([&params], &[])).collect();
+        noted.into_iter().chain(racket_impact::intake::diagnose::parameters([&params], &[])).collect();
     let text = match a.common.format {
         Format::Json => {
             let v = serde_json::json!({

@@ -15,20 +15,25 @@ pub trait KeySet: std::fmt::Debug + Clone + Send + Sync + 'static {
     const COMMAND: &'static str;
     /// Whether the command takes the parameter `key`.
     fn takes(key: &str) -> bool;
+    /// Whether the command runs impacts (the help then says which impacts use a parameter);
+    /// `modes` runs none.
+    const RUNS_IMPACTS: bool = true;
     /// The declared keys it does not take.
     fn not_taken() -> Vec<&'static str> {
         keys::ALL.iter().map(|s| s.key).filter(|k| !Self::takes(k)).collect()
     }
 }
 
-/// Declares a [`KeySet`]: `name = "command": |key| takes`.
+/// Declares a [`KeySet`]: `name = "command": |key| takes`, or `name = "command" (false): ...`
+/// for a command that runs no impacts.
 macro_rules! key_set {
-    ($($(#[doc = $doc:literal])* $name:ident = $command:literal: |$key:ident| $takes:expr;)+) => {$(
+    ($($(#[doc = $doc:literal])* $name:ident = $command:literal $(($impacts:literal))?: |$key:ident| $takes:expr;)+) => {$(
         $(#[doc = $doc])*
         #[derive(Debug, Clone, Copy, Default)]
         pub struct $name;
         impl KeySet for $name {
             const COMMAND: &'static str = $command;
+            $(const RUNS_IMPACTS: bool = $impacts;)?
             fn takes($key: &str) -> bool {
                 $takes
             }
@@ -40,7 +45,7 @@ key_set! {
     /// `simulate`: every parameter.
     SimulateKeys = "simulate": |_key| true;
     /// `modes`: the free racket's modes depend only on its length, mass, stiffness and segments.
-    ModesKeys = "modes": |key| keys::FREE_RACKET.iter().any(|s| s.key == key);
+    ModesKeys = "modes" (false): |key| keys::FREE_RACKET.iter().any(|s| s.key == key);
     /// `speed`: every parameter but the impact speed, incidence and spin, which the swing sets.
     SpeedKeys = "speed": |key| racket_impact::study::speed::set_by_speed(key).is_none();
     /// `map`: every parameter but the impact point (the grid sets it) and the solver and its
@@ -68,13 +73,13 @@ impl<K: KeySet> Default for OverrideArgs<K> {
 /// The clap argument of one parameter: `--KEY <KEY>` with its help under its declared heading
 /// ([`ParamSpec::heading`]); numbers may be negative (the validation names the range), choices
 /// list their names.
-fn arg(spec: &ParamSpec, defaults: &Params, command: &str) -> Arg {
+fn arg(spec: &ParamSpec, defaults: &Params, command: &str, runs_impacts: bool) -> Arg {
     let arg = Arg::new(spec.key)
         .long(spec.key)
         .help_heading(spec.heading.title())
         .value_name(spec.key.to_uppercase().replace('-', "_"))
         .action(ArgAction::Set)
-        .help(help(spec, defaults, command));
+        .help(help(spec, defaults, command, runs_impacts));
     match spec.values {
         Values::Number => arg.value_parser(value_parser!(f64)).allow_hyphen_values(true),
         Values::Count => arg.value_parser(value_parser!(usize)).allow_hyphen_values(true),
@@ -91,8 +96,9 @@ fn arg(spec: &ParamSpec, defaults: &Params, command: &str) -> Arg {
 /// The help line with the default the commands use, read from the parameters the commands
 /// start from (the paper's racket hit at its face centre), how the default is chosen where the
 /// declaration says, and which impacts use the parameter where not every one does.
-fn help(spec: &ParamSpec, defaults: &Params, command: &str) -> String {
+fn help(spec: &ParamSpec, defaults: &Params, command: &str, runs_impacts: bool) -> String {
     let used = match spec.used_when {
+        _ if !runs_impacts => String::new(),
         UsedWhen::Always => String::new(),
         ref when => format!(" [used only {}]", used::words(when)),
     };
@@ -119,7 +125,7 @@ impl<K: KeySet> clap::Args for OverrideArgs<K> {
         // grouped by heading, in the order of Heading::ALL, each group in the declarations' order
         let mut specs: Vec<&ParamSpec> = keys::ALL.iter().filter(|s| K::takes(s.key)).collect();
         specs.sort_by_key(|s| Heading::ALL.iter().position(|h| *h == s.heading));
-        specs.into_iter().fold(cmd, |cmd, spec| cmd.arg(arg(spec, &defaults, K::COMMAND)))
+        specs.into_iter().fold(cmd, |cmd, spec| cmd.arg(arg(spec, &defaults, K::COMMAND, K::RUNS_IMPACTS)))
     }
 
     fn augment_args_for_update(cmd: Command) -> Command {

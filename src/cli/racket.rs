@@ -35,7 +35,7 @@ pub fn run(a: RacketArgs) -> Result<()> {
         return Err(Error::invalid("racket", "(missing)", "give a racket file or preset name, or --list"));
     };
     let fitted = racket::load(arg)?.to_racket(a.segments)?;
-    let diagnostics = racket_impact::study::diagnose::racket(&fitted, a.segments);
+    let diagnostics = racket_impact::intake::diagnose::racket(&fitted, a.segments);
     print_diagnostics(&diagnostics);
     let text = match a.format {
         Format::Text => text(&fitted),

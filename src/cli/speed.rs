@@ -65,7 +65,7 @@ pub struct SpeedArgs {
 pub fn run(a: SpeedArgs) -> Result<()> {
     let mut sources = a.common.sources();
     if a.compare_tension_lb.len() >= 2 {
-        sources.set_by_options.extend(racket_impact::study::TENSION_SETS);
+        sources.set_by_options.extend(racket_impact::intake::compare::TENSION_SETS);
     }
     let request = SpeedRequest {
         sources: sources.clone(),

@@ -8,6 +8,7 @@
 //! | [`plot`] | line charts ([`plot::Chart`]) drawn to PNG |
 //! | [`heatmap`] | heat maps with contours ([`heatmap::HeatMap`]) drawn to PNG |
 //! | [`impact`] | one impact as text, CSV and a time-series file |
+//! | [`columns`] | the column names of the commands' tables that no declaration holds |
 //! | [`map_files`] | the three files of a string-face map, written together |
 //! | [`io`] | atomic, deterministic file writes |
 //! | [`temps`] | the temporary files staged, removed on an interrupt |
@@ -16,6 +17,7 @@
 //!
 //! Nothing here runs a solver: the layers above compute, and hand tables and charts down.
 
+pub mod columns;
 pub mod heatmap;
 pub mod impact;
 pub mod io;

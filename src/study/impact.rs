@@ -8,7 +8,7 @@ use crate::error::{Error, Result};
 use crate::params::Params;
 use crate::solve::ImpactResult;
 
-use super::Sources;
+use crate::intake::Sources;
 
 /// One impact, run.
 #[derive(Debug, Clone)]
@@ -18,7 +18,7 @@ pub struct Single {
     /// Its result.
     pub result: ImpactResult,
     /// The notes about what it does not use, then the physics-validity checks of the run
-    /// ([`super::diagnose::impact`]), in the order the command line prints them.
+    /// ([`crate::intake::diagnose::impact`]), in the order the command line prints them.
     pub diagnostics: Vec<Diagnostic>,
 }
 
@@ -34,7 +34,7 @@ impl Single {
 
     /// The impact `result` of `params`, with the notes `noted` made before it ran.
     pub fn of(params: Params, result: ImpactResult, noted: Vec<Diagnostic>) -> Single {
-        let diagnostics = noted.into_iter().chain(super::diagnose::impact(&params, &result)).collect();
+        let diagnostics = noted.into_iter().chain(crate::intake::diagnose::impact(&params, &result)).collect();
         Single { params, result, diagnostics }
     }
 

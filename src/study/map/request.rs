@@ -7,11 +7,12 @@ use super::summary::{diff_summary, map_summary};
 use super::{check_count, DiffMap, FaceMap, Quantity};
 use crate::diagnostic::{Diagnostic, Kind};
 use crate::error::{Error, Result};
+use crate::intake::compare::{check_comparison, racket_label};
+use crate::intake::diagnose;
+use crate::intake::Sources;
 use crate::params::{ks_from_tension_lb, Params};
 use crate::render::heatmap::HeatMap;
 use crate::render::table::Table;
-use crate::study::diagnose;
-use crate::study::{check_comparison, racket_label, Sources};
 
 /// A map of one configuration, or the difference of two.
 #[derive(Debug, Clone)]

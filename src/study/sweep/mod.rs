@@ -49,8 +49,8 @@ pub fn default_solver(base: &Overrides, axes: &[Axis]) -> Option<crate::params::
 /// `theta_max_deg` beyond the small-angle model.
 pub fn diagnostics(noted: &[Diagnostic], representatives: &[Params], theta_max_deg: f64) -> Vec<Diagnostic> {
     let mut out = noted.to_vec();
-    out.extend(crate::study::diagnose::parameters(representatives, &[]));
-    out.extend(crate::study::diagnose::twist(theta_max_deg));
+    out.extend(crate::intake::diagnose::parameters(representatives, &[]));
+    out.extend(crate::intake::diagnose::twist(theta_max_deg));
     out
 }
 
@@ -73,7 +73,7 @@ impl Sweep {
     /// file's segment count) and the fixed values of the `config` file. The solver is the
     /// [`default_solver`] unless given. Every point is validated before anything runs.
     pub fn from_pairs(racket: Option<&str>, config: Option<&Path>, pairs: &[String]) -> Result<Sweep> {
-        let mut base = crate::study::config_file(config)?;
+        let mut base = crate::intake::config_file(config)?;
         if let Some(option) = pairs.iter().find(|t| t.strip_prefix("--").is_some_and(|k| OPTIONS.contains(&k))) {
             return Err(Error::invalid(
                 "sweep",
@@ -148,19 +148,19 @@ impl Sweep {
     /// [`crate::diagnostic::Kind::NotUsed`] diagnostics: one for each swept property none of the impacts
     /// exercises (a method's option none of them can honour is refused, as for `simulate`,
     /// [`crate::params::used`]), and one naming the keys of the `config` file that
-    /// none of them uses ([`crate::study::unused_config_note`]).
+    /// none of them uses ([`crate::intake::unused_config_note`]).
     pub fn check_used(&self, representatives: &[Params], config: Option<&Path>) -> Result<Vec<Diagnostic>> {
         let mut noted = Vec::new();
         let swept: Vec<&ParamSpec> = self.axes.iter().filter_map(|ax| keys::find(&ax.key)).collect();
         for spec in &swept {
             let values =
                 self.axes.iter().find(|ax| ax.key == spec.key).map(|ax| ax.values.join(",")).unwrap_or_default();
-            noted.extend(crate::study::unused_flag(spec, &values, representatives, "these impacts")?);
+            noted.extend(crate::intake::unused_flag(spec, &values, representatives, "these impacts")?);
         }
         if let Some(path) = config {
-            let file = crate::study::config_file(Some(path))?;
+            let file = crate::intake::config_file(Some(path))?;
             let swept: Vec<&str> = swept.iter().map(|s| s.key).collect();
-            noted.extend(crate::study::unused_config_note(path, &file, &swept, &[], "sweep", representatives)?);
+            noted.extend(crate::intake::unused_config_note(path, &file, &swept, &[], "sweep", representatives)?);
         }
         Ok(noted)
     }

@@ -14,13 +14,13 @@ pub use write::{not_meaningful, summary_json};
 use super::sensitivity::{self, Design, Summary};
 use crate::diagnostic::{Diagnostic, Kind};
 use crate::error::{Error, Result};
+use crate::intake::Sources;
 use crate::numfmt::{readable, sig};
 use crate::params::spec::{Check, Values};
 use crate::params::uncertainty::Dist;
 use crate::params::{keys, Overrides, Params};
 use crate::solve::outcome::{Get, FIELDS};
 use crate::solve::simulate;
-use crate::study::Sources;
 
 /// Base samples unless given (a power of two, as the Sobol' sequence likes).
 pub const DEFAULT_SAMPLES: u64 = 256;
@@ -126,7 +126,7 @@ pub struct Study {
     /// The design.
     pub design: Design,
     /// The notes about what the run does not use (a flag of a property the impact does not
-    /// exercise, a config key: [`crate::study::Sources::check_used`]), first among its
+    /// exercise, a config key: [`crate::intake::Sources::check_used`]), first among its
     /// [`diagnostics`](Study::diagnostics); none unless the caller gives them.
     pub noted: Vec<Diagnostic>,
 }
@@ -177,7 +177,7 @@ impl Study {
     /// notes and refusals of [`Sources::check_used`] with that solver, and each input.
     pub fn from_sources(sources: &Sources, varies: &[String], samples: u64, seed: u32) -> Result<Study> {
         Design::new(samples, varies.len().max(1), 0)?; // the count first, before anything else
-        let from_config = crate::study::config_file(sources.config.as_deref())?;
+        let from_config = crate::intake::config_file(sources.config.as_deref())?;
         let given = sources.flags.clone().or(from_config.clone());
         let mut unused_in_config = Vec::new();
         for text in varies {
@@ -297,7 +297,7 @@ impl Study {
         let few = few_samples(self.design.samples() as u64).map(|s| Diagnostic::new(Kind::Unusual, "samples", s));
         let mut out: Vec<Diagnostic> = few.into_iter().collect();
         out.extend(self.noted.iter().cloned());
-        out.extend(crate::study::diagnose::parameters([&self.base], &drawn));
+        out.extend(crate::intake::diagnose::parameters([&self.base], &drawn));
         for input in &self.inputs {
             let line = keys::find(input.key).and_then(|spec| spec.unusual_draws(&input.dist));
             out.extend(line.map(|s| Diagnostic::new(Kind::Unusual, input.key, s)));

@@ -4,24 +4,24 @@
 //! `v_out = e_A v_in + (1 + e_A) v_racket` (the paper's frame transformation), with `e_A`
 //! computed at the relative speed `v_in + v_racket` and the racket's swing speed taken at the
 //! impact point.
+//!
+//! Here the request and its run; the comparison's diagnostics in `diagnose.rs`, its table,
+//! JSON and text in `write.rs`.
 
-use crate::diagnostic::{Diagnostic, Kind};
+mod diagnose;
+mod write;
+
+pub use write::SPEED_SPIN_CONVENTION;
+
+use crate::diagnostic::Diagnostic;
 use crate::error::{Error, Result};
-use crate::numfmt::sig;
+use crate::intake::compare::check_comparison;
+use crate::intake::Sources;
 use crate::params::keys;
 use crate::params::spec::ParamSpec;
 use crate::params::{ks_from_tension_lb, Params};
-use crate::render::table::{Table, Value};
-use crate::solve::swing::{gain_pct, outgoing_speed, Swing};
+use crate::solve::swing::{outgoing_speed, Swing};
 use crate::solve::ImpactResult;
-use crate::study::diagnose;
-use crate::study::{check_comparison, Sources};
-
-/// The sign conventions of the spins a stroke's JSON prints.
-pub const SPEED_SPIN_CONVENTION: &str =
-    "spin_rpm (the ball's spin as it leaves) and incoming_spin_rpm: > 0 topspin in the \
-     court's frame (the ball's top moving forward in its flight); params.oblique.spin_rpm and result.spin_out_rpm: the \
-     racket's frame, > 0 topspin relative to the ball's incoming motion along the strings";
 
 /// A unit of speed.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -102,7 +102,7 @@ pub struct SpeedComparison {
     /// One row per variant.
     pub rows: Vec<SpeedRow>,
     /// The notes about flags of properties no variant exercises and config-file keys the
-    /// command does not use ([`crate::study::Sources::check_used`]).
+    /// command does not use ([`crate::intake::Sources::check_used`]).
     pub noted: Vec<Diagnostic>,
 }
 
@@ -200,14 +200,14 @@ impl SpeedRequest {
     /// (A at the first against A at each of the others).
     fn variants(&self) -> Vec<(String, Option<String>, Option<f64>)> {
         let racket = &self.sources.racket;
-        let name = crate::study::racket_label(racket.as_deref());
+        let name = crate::intake::compare::racket_label(racket.as_deref());
         let at = |t: f64| (format!("{name} at {t} lb"), racket.clone(), Some(t));
         let mut variants = Vec::new();
         match self.compare_tension_lb[..] {
             [] => {
                 variants.push((name.clone(), racket.clone(), None));
                 for r in &self.compare_racket {
-                    variants.push((crate::study::racket_label(Some(r)), Some(r.clone()), None));
+                    variants.push((crate::intake::compare::racket_label(Some(r)), Some(r.clone()), None));
                 }
             }
             [t] => {
@@ -234,211 +234,5 @@ impl SpeedRequest {
             }
             None => Ok(()),
         }
-    }
-}
-
-impl SpeedComparison {
-    /// The reference's outgoing speed, m/s.
-    fn v_ref(&self) -> f64 {
-        self.rows[0].v_out
-    }
-
-    /// The comparison as a table (speeds in the request's unit).
-    pub fn table(&self) -> Result<Table> {
-        let unit = self.request.unit;
-        let mut cols = vec![
-            "variant",
-            "x_m",
-            "r_m",
-            "ks_n_per_m",
-            "e_a",
-            "tau_s",
-            "theta_end_deg",
-            "ball_speed_out",
-            "change_pct",
-            "unit",
-        ];
-        if self.request.is_stroke() {
-            cols.extend(["launch_deg", "launch_spin_rpm"]);
-        }
-        let mut t = Table::new("speed", &cols);
-        for SpeedRow { label, params: p, result: r, v_out, launch } in &self.rows {
-            let mut row = vec![
-                Value::Text(label.clone()),
-                p.impact.x.into(),
-                p.impact.r.into(),
-                p.strings.ks.into(),
-                r.e_a.into(),
-                r.tau_s.into(),
-                r.theta_end_deg.into(),
-                (v_out / unit.si).into(),
-                gain_pct(self.v_ref(), *v_out).into(),
-                Value::Text(unit.label.into()),
-            ];
-            if let Some((launch_deg, spin_rpm)) = launch {
-                row.extend([Value::from(*launch_deg), Value::from(*spin_rpm)]);
-            }
-            t.push(row)?;
-        }
-        Ok(t)
-    }
-
-    /// The comparison as pretty JSON (one object per variant) with a final newline.
-    pub fn json(&self) -> Result<String> {
-        let unit = self.request.unit;
-        let v: Vec<serde_json::Value> = self
-            .rows
-            .iter()
-            .map(|row| {
-                let SpeedRow { label, params: p, result: r, v_out, launch } = row;
-                let mut v = serde_json::json!({
-                    "variant": label, "params": p, "result": crate::render::impact::result_json(p, r),
-                    "ball_speed_out": v_out / unit.si, "change_pct": gain_pct(self.v_ref(), *v_out), "unit": unit.label,
-                    "diagnostics": self.diagnostics_of(&[row]),
-                });
-                if let (Some((launch_deg, spin_rpm)), Some(o)) = (launch, v.as_object_mut()) {
-                    o.insert("launch_deg".into(), (*launch_deg).into());
-                    o.insert("spin_rpm".into(), (*spin_rpm).into());
-                    o.insert("incoming_spin_rpm".into(), self.request.incoming_spin_rpm.into());
-                    o.insert("spin_convention".into(), SPEED_SPIN_CONVENTION.into());
-                }
-                v
-            })
-            .collect();
-        crate::render::json::pretty(&v)
-    }
-
-    /// The comparison's diagnostics, once each: the notes about what no variant uses, the
-    /// variants' parameters but those the stroke sets (said in its own terms: the impact speed,
-    /// the incoming spin, the incidence), the largest twist. Each variant's own are in its JSON
-    /// row (with the notes, which hold for every variant).
-    pub fn diagnostics(&self) -> Vec<Diagnostic> {
-        self.diagnostics_of(&self.rows.iter().collect::<Vec<_>>())
-    }
-
-    fn diagnostics_of(&self, rows: &[&SpeedRow]) -> Vec<Diagnostic> {
-        let (req, u) = (&self.request, self.request.unit);
-        let mut out = self.noted.clone();
-        out.extend(diagnose::parameters(rows.iter().map(|r| &r.params), &SPEED_SETS.map(|(s, _)| s.key)));
-        if let Some((lo, hi)) = keys::V1.usual {
-            let v = (req.swing + req.incoming) * u.si;
-            if !(lo..=hi).contains(&v) {
-                out.push(Diagnostic::new(
-                    Kind::Unusual,
-                    "v1",
-                    format!(
-                        "swing + incoming = {} {} (the impact speed) is outside the usual {}..{} {} (computed anyway)",
-                        sig(req.swing + req.incoming, 4),
-                        u.label,
-                        sig(lo / u.si, 3),
-                        sig(hi / u.si, 3),
-                        u.label
-                    ),
-                ));
-            }
-        }
-        if let Some(line) = keys::SPIN_RPM.unusual(req.incoming_spin_rpm) {
-            out.push(Diagnostic::new(
-                Kind::Unusual,
-                "incoming-spin-rpm",
-                line.replacen(keys::SPIN_RPM.key, "incoming-spin-rpm", 1),
-            ));
-        }
-        if let Some(angle) =
-            rows.iter().map(|r| r.params.oblique.angle_deg).find(|&d| keys::ANGLE_DEG.unusual(d).is_some())
-        {
-            out.push(Diagnostic::new(
-                Kind::Unusual,
-                "angle-deg",
-                format!(
-                    "the swing path of {} deg meets the face at {} deg from its normal, beyond the usual incidences (computed anyway)",
-                    req.path_deg,
-                    sig(angle, 3)
-                ),
-            ));
-        }
-        let theta = rows.iter().map(|r| r.result.theta_end_deg).max_by(|a, b| a.abs().total_cmp(&b.abs()));
-        out.extend(theta.and_then(diagnose::twist));
-        out
-    }
-
-    /// The comparison as text: the swing, then one line per variant.
-    pub fn text(&self) -> String {
-        if self.request.is_stroke() {
-            return self.stroke_text();
-        }
-        let (req, unit) = (&self.request, self.request.unit);
-        let mut s = format!(
-            "swing {} {u} at the impact point, incoming ball {} {u}: v_out = e_A v_in + (1 + e_A) v_racket\n",
-            req.swing,
-            req.incoming,
-            u = unit.label
-        );
-        s.push_str(&format!(
-            "{:<22} {:>7} {:>6} {:>9} {:>8} {:>8} {:>9} {:>12} {:>9}\n",
-            "variant", "x cm", "r cm", "ks N/m", "e_A", "tau ms", "theta deg", "ball out", "change"
-        ));
-        for SpeedRow { label, params: p, result: r, v_out, .. } in &self.rows {
-            s.push_str(&format!(
-                "{:<22} {:>7.1} {:>6.1} {:>9.0} {:>8.4} {:>8.3} {:>9.2} {:>7.1} {:<4} {:>+8.2} %\n",
-                label,
-                100.0 * p.impact.x,
-                100.0 * p.impact.r,
-                p.strings.ks,
-                r.e_a,
-                1e3 * r.tau_s,
-                r.theta_end_deg,
-                v_out / unit.si,
-                unit.label,
-                gain_pct(self.v_ref(), *v_out)
-            ));
-        }
-        s
-    }
-
-    /// The text of a stroke along a tilted path or with a spinning ball: speed, launch angle and
-    /// spin in the court's frame.
-    fn stroke_text(&self) -> String {
-        let (req, unit) = (&self.request, self.request.unit);
-        let mut s = format!(
-            "swing {} {u} along a path {} deg above the horizontal, incoming ball {} {u} with {} rpm of topspin \
-             (court frame; the impact computed in the racket's frame)\n",
-            req.swing,
-            req.path_deg,
-            req.incoming,
-            req.incoming_spin_rpm,
-            u = unit.label
-        );
-        s.push_str(
-            "spin: > 0 is topspin in the court's frame (the ball's top moving forward in its flight), \
-             for the incoming ball and the spin column alike\n",
-        );
-        // a tangential law other than the default one is named (it changes every spin)
-        if let Some(p) = self.rows.first().map(|r| &r.params) {
-            if p.oblique.tangential != crate::params::TangentialLaw::default() {
-                s.push_str(&format!("tangential contact law: {}\n", p.oblique.tangential.name()));
-            }
-        }
-        s.push_str(&format!(
-            "{:<22} {:>7} {:>9} {:>8} {:>10} {:>12} {:>9} {:>10} {:>9}\n",
-            "variant", "x cm", "ks N/m", "e_A", "incidence", "ball out", "change", "launch", "spin rpm"
-        ));
-        for SpeedRow { label, params: p, result: r, v_out, launch } in &self.rows {
-            let (launch_deg, spin_rpm) = launch.unwrap_or((0.0, 0.0));
-            s.push_str(&format!(
-                "{:<22} {:>7.1} {:>9.0} {:>8.4} {:>6.1} deg {:>7.1} {:<4} {:>+8.2} % {:>6.1} deg {:>9.0}\n",
-                label,
-                100.0 * p.impact.x,
-                p.strings.ks,
-                r.e_a,
-                p.oblique.angle_deg,
-                v_out / unit.si,
-                unit.label,
-                gain_pct(self.v_ref(), *v_out),
-                launch_deg,
-                spin_rpm
-            ));
-        }
-        s
     }
 }
