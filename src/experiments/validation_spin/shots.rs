@@ -131,6 +131,7 @@ mod tests {
             let mine = table_shot(&ctx, TangentialLaw::Loss, &row, TWU_ANGLE_DEG).unwrap();
             let mut base = ctx.paper_params(CENTRE_X, ks_from_tension_lb(60.0));
             base.oblique.azimuth_deg = AZIMUTH_DEG;
+            base.oblique.tangential = TangentialLaw::Loss;
             let theirs = shot::shot(&base, &row).unwrap();
             assert_eq!(mine, theirs, "{}", row.id);
         }
