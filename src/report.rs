@@ -38,14 +38,14 @@ pub struct Row {
     pub between: Option<f64>,
     /// Where the paper's scheme moved an impact: (nominal, used), m.
     pub moved: Vec<(f64, f64)>,
-    /// (ours - paper) / |paper|; for absolute claims, ours - paper.
-    pub error: f64,
-    /// The tolerance applied.
-    pub tolerance: f64,
-    /// Relative or absolute.
-    pub kind: ToleranceKind,
-    /// The values within which the claim counts as reproduced.
-    pub band: (f64, f64),
+    /// (ours - paper) / |paper|; for absolute claims, ours - paper (`None`: the paper states no
+    /// number).
+    pub error: Option<f64>,
+    /// The tolerance applied, relative or absolute (`None`: the paper states no number, and the
+    /// claim is judged by its conclusion at the paper's inputs).
+    pub tolerance: Option<(ToleranceKind, f64)>,
+    /// The values within which the claim counts as reproduced (`None` as for the tolerance).
+    pub band: Option<(f64, f64)>,
     /// The verdict.
     pub verdict: Verdict,
     /// The verdict on the converged value, where there is one.
@@ -69,6 +69,15 @@ fn verdict_of(v: f64, (lo, hi): (f64, f64)) -> Verdict {
     }
 }
 
+/// The verdict of a claim the paper states no number for: its conclusion.
+fn verdict_of_conclusion(holds: bool) -> Verdict {
+    if holds {
+        Verdict::Reproduced
+    } else {
+        Verdict::Differs
+    }
+}
+
 /// Compute every claim (in parallel; the order of the claims file is kept).
 pub fn evaluate() -> Result<Vec<Row>> {
     let claims = claims()?;
@@ -76,20 +85,33 @@ pub fn evaluate() -> Result<Vec<Row>> {
     rows(claims, ours)
 }
 
-/// The report's rows from the claims and their numbers ([`evaluate_all`]).
+/// The report's rows from the claims and their numbers ([`evaluate_all`]). A claim the paper
+/// states no number for is judged by its conclusion, on the other claims' values at the same
+/// numerics (converged with converged).
 pub fn rows(claims: Vec<Claim>, ours: Vec<Ours>) -> Result<Vec<Row>> {
+    let ids: Vec<String> = claims.iter().map(|c| c.id.clone()).collect();
+    let values: Vec<f64> = ours.iter().map(|o| o.value).collect();
+    let fine: Vec<f64> = ours.iter().map(|o| o.converged.unwrap_or(o.value)).collect();
+    let lookup = |all: &[f64], id: &str| ids.iter().position(|i| i == id).map(|j| all[j]);
     claims
         .into_iter()
         .zip(ours)
         .map(|(claim, Ours { value, converged, between, moved })| {
-            let paper = claim.paper_value()?;
-            let (kind, tolerance) = claim.tolerance()?;
-            let band = experiments::robustness::band(&claim)?;
-            let error = match kind {
-                ToleranceKind::Relative => (value - paper) / paper.abs(),
-                ToleranceKind::Absolute => value - paper,
+            let tolerance = claim.tolerance()?;
+            let band = claim.band()?;
+            let check = claim.check()?;
+            let judge = |v: f64, all: &[f64]| match band {
+                Some(b) => verdict_of(v, b),
+                None => verdict_of_conclusion(check.holds(v, |id| lookup(all, id))),
+            };
+            let error = match tolerance {
+                Some((ToleranceKind::Relative, _)) => Some((value - claim.paper_value()?) / claim.paper_value()?.abs()),
+                Some((ToleranceKind::Absolute, _)) => Some(value - claim.paper_value()?),
+                None => None,
             };
             Ok(Row {
+                verdict: judge(value, &values),
+                converged_verdict: converged.map(|c| judge(c, &fine)),
                 claim,
                 ours: value,
                 converged,
@@ -97,24 +119,34 @@ pub fn rows(claims: Vec<Claim>, ours: Vec<Ours>) -> Result<Vec<Row>> {
                 moved,
                 error,
                 tolerance,
-                kind,
                 band,
-                verdict: verdict_of(value, band),
-                converged_verdict: converged.map(|c| verdict_of(c, band)),
             })
         })
         .collect()
 }
 
-/// A value of a row as the report prints it: to the digit that places it against the band.
+/// A value of a row as the report prints it: to the digit that places it against the band (or
+/// its conclusion's thresholds, for a claim without a number).
 fn shown(r: &Row, v: f64) -> String {
-    decisive(v, &[r.band.0, r.band.1], 4)
+    let edges: Vec<f64> = match r.band {
+        Some((lo, hi)) => vec![lo, hi],
+        None => r
+            .claim
+            .check()
+            .map_or_else(|_| vec![], |c| c.thresholds(|_| None).into_iter().flatten().map(|t| t.1).collect()),
+    };
+    decisive(v, &edges, 4)
 }
 
-/// The band's edges, each to the digit that tells it from the values printed beside it.
-fn band_text(r: &Row) -> String {
+/// The tolerance column: the tolerance and the band of values it allows, each edge to the digit
+/// that tells it from the values printed beside it; for a claim without a number, its
+/// conclusion's form.
+fn tolerance_text(r: &Row) -> String {
+    let (Some((kind, tol)), Some((lo, hi))) = (r.tolerance, r.band) else {
+        return format!("its conclusion, `{}`", r.claim.conclusion_check);
+    };
     let values: Vec<f64> = std::iter::once(r.ours).chain(r.converged).chain(r.between).collect();
-    format!("{} to {}", decisive(r.band.0, &values, 4), decisive(r.band.1, &values, 4))
+    format!("{} ({} to {})", fmt_rel_or_abs(kind, tol), decisive(lo, &values, 4), decisive(hi, &values, 4))
 }
 
 fn fmt_rel_or_abs(kind: ToleranceKind, v: f64) -> String {
@@ -134,11 +166,13 @@ fn moved_text(r: &Row) -> String {
     format!(" [N = 39: {}]", pairs.join(", "))
 }
 
-/// How many of `rows` are of each kind: (reproductions, consistency checks).
-fn kinds<'a>(rows: impl Iterator<Item = &'a Row>) -> (usize, usize) {
-    rows.fold((0, 0), |(r, c), row| match row.claim.kind {
-        Kind::Reproduction => (r + 1, c),
-        Kind::Consistency => (r, c + 1),
+/// How many of `rows` are of each kind: (reproductions, consistency checks, the paper's
+/// statements judged against each other).
+fn kinds<'a>(rows: impl Iterator<Item = &'a Row>) -> (usize, usize, usize) {
+    rows.fold((0, 0, 0), |(r, c, s), row| match row.claim.kind {
+        Kind::Reproduction => (r + 1, c, s),
+        Kind::Consistency => (r, c + 1, s),
+        Kind::Statements => (r, c, s + 1),
     })
 }
 
@@ -148,10 +182,24 @@ fn both_text(r: &Row) -> String {
     format!(
         "`{}` (paper {}{unit}, ours {}{unit} at N = 39, converged {}{unit})",
         r.claim.id,
-        r.claim.paper,
+        paper_text(&r.claim),
         shown(r, r.ours),
         r.converged.map_or(String::new(), |c| shown(r, c))
     )
+}
+
+/// Text for a Markdown table cell: a `|` in it (`|e_A|`) escaped so it does not end the cell.
+pub(crate) fn cell(text: &str) -> String {
+    text.replace('|', "\\|")
+}
+
+/// The paper's value as printed, or that it states none.
+fn paper_text(c: &Claim) -> String {
+    if c.qualitative() {
+        "(no number)".to_string()
+    } else {
+        c.paper.clone()
+    }
 }
 
 fn list_or_none(items: Vec<String>) -> String {
@@ -164,17 +212,27 @@ fn list_or_none(items: Vec<String>) -> String {
 
 /// The report as Markdown.
 pub fn markdown(rows: &[Row]) -> String {
-    let reproduced = rows.iter().filter(|r| r.verdict == Verdict::Reproduced).count();
-    let converged = rows.iter().filter(|r| r.also_converged()).count();
+    let model: Vec<&Row> = rows.iter().filter(|r| r.claim.kind != Kind::Statements).collect();
+    let reproduced = model.iter().filter(|r| r.verdict == Verdict::Reproduced).count();
+    let converged = model.iter().filter(|r| r.also_converged()).count();
     let beam = rows.iter().filter(|r| r.converged.is_some()).count();
-    let (all_r, all_c) = kinds(rows.iter());
-    let (rep_r, rep_c) = kinds(rows.iter().filter(|r| r.verdict == Verdict::Reproduced));
-    let only_paper: Vec<String> =
-        rows.iter().filter(|r| r.verdict == Verdict::Reproduced && !r.also_converged()).map(both_text).collect();
-    let only_converged: Vec<String> = rows
+    let qualitative = model.iter().filter(|r| r.claim.qualitative()).count();
+    let (all_r, all_c, all_s) = kinds(rows.iter());
+    let (rep_r, rep_c, _) = kinds(model.iter().copied().filter(|r| r.verdict == Verdict::Reproduced));
+    let only_paper: Vec<String> = model
+        .iter()
+        .filter(|r| r.verdict == Verdict::Reproduced && !r.also_converged())
+        .map(|r| both_text(r))
+        .collect();
+    let only_converged: Vec<String> = model
         .iter()
         .filter(|r| r.verdict == Verdict::Differs && r.converged_verdict == Some(Verdict::Reproduced))
-        .map(both_text)
+        .map(|r| both_text(r))
+        .collect();
+    let statements: Vec<String> = rows
+        .iter()
+        .filter(|r| r.claim.kind == Kind::Statements)
+        .map(|r| format!("`{}` ({})", r.claim.id, r.verdict.name()))
         .collect();
     let mut s = String::new();
     s.push_str(REPORT_HEAD);
@@ -183,23 +241,27 @@ pub fn markdown(rows: &[Row]) -> String {
     s.push_str(&format!(
         "\n*Kind*: a *reproduction* runs the model on something no other claim already checks; a *consistency* \
          check is arithmetic on the paper's inputs or on other claims' values (Eq 12 on p, 1/f1, a ratio of two \
-         claimed e_A values, 30 rad/s times a claimed duration, the tension calibration): agreement there \
-         confirms the paper's arithmetic, not its model. Of the {} claims, {all_r} are reproductions and \
-         {all_c} consistency checks.\n",
+         claimed e_A values, 30 rad/s times a claimed duration): agreement there confirms the paper's \
+         arithmetic, not its model; a *statements* row is not a number the model computes but two statements \
+         of the paper judged against each other, and is counted apart. Of the {} claims, {all_r} are \
+         reproductions, {all_c} consistency checks and {all_s} statements.\n",
         rows.len()
     ));
     s.push_str(&format!(
-        "\n**{reproduced} of {} claims reproduced with the paper's N = 39 scheme ({rep_r} reproductions, {rep_c} \
-         consistency checks), {converged} of them also converged; {} differ** (each difference is explained \
-         below). {beam} of the {} claims are computed, directly or through arithmetic on other values, from a beam \
-         run: each has a converged value, its own computation run again on the converged beam (`hat` load, N = \
-         320, the force at the nominal position; a consistency check takes its inputs' converged values). The \
-         other {} run no beam (the closed forms of the two drops, Eq 12, the tension calibration) and do not \
+        "\n**{reproduced} of the {} claims on the model reproduced with the paper's N = 39 scheme ({rep_r} \
+         reproductions, {rep_c} consistency checks), {converged} of them also converged; {} differ** (each \
+         difference is explained below; {qualitative} of the claims state no number and are judged by their \
+         conclusion at the paper's inputs). Counted apart, the paper's two statements about k_s against each \
+         other: {}. {beam} of the {} claims are computed, directly or through arithmetic on other values, from a \
+         beam run: each has a converged value, its own computation run again on the converged beam (`hat` load, \
+         N = 320, the force at the nominal position; a consistency check takes its inputs' converged values). \
+         The other {} run no beam (the closed forms of the two drops, Eq 12, the tension calibration) and do not \
          depend on the discretisation. *Also converged*: reproduced, and the converged value (where there is \
          one) within the same tolerance. Reproduced only with the paper's unconverged scheme: {}. Differ with \
          the paper's scheme but reproduced converged: {}.\n\n",
-        rows.len(),
-        rows.len() - reproduced,
+        model.len(),
+        model.len() - reproduced,
+        list_or_none(statements),
         rows.len(),
         rows.len() - beam,
         list_or_none(only_paper),
@@ -216,19 +278,21 @@ pub fn markdown(rows: &[Row]) -> String {
             format!("{}{outside}", shown(r, v))
         });
         s.push_str(&format!(
-            "| `{}` | {} | {} | {} | {} | {} | {} ({}) | {} | {} | {} | {} | {} |\n",
+            "| `{}` | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
             c.id,
             c.kind.name(),
-            c.claim,
+            cell(&c.claim),
             c.source,
             c.unit,
-            c.paper,
-            fmt_rel_or_abs(r.kind, r.tolerance),
-            band_text(r),
+            paper_text(c),
+            tolerance_text(r),
             shown(r, r.ours),
             r.between.map_or(String::new(), |v| shown(r, v)),
             converged,
-            fmt_rel_or_abs(r.kind, r.error),
+            match (r.tolerance, r.error) {
+                (Some((kind, _)), Some(e)) => fmt_rel_or_abs(kind, e),
+                _ => String::new(),
+            },
             if r.verdict == Verdict::Reproduced { "reproduced" } else { "**differs**" }
         ));
     }
@@ -238,7 +302,7 @@ pub fn markdown(rows: &[Row]) -> String {
         s.push_str(&format!(
             "- `{}` (paper {}{unit}, ours {}{unit}{}): {}\n",
             r.claim.id,
-            r.claim.paper,
+            paper_text(&r.claim),
             shown(r, r.ours),
             moved_text(r),
             r.claim.note
@@ -248,6 +312,7 @@ pub fn markdown(rows: &[Row]) -> String {
     for r in rows.iter().filter(|r| r.verdict == Verdict::Reproduced) {
         s.push_str(&format!("- `{}`: {}{}\n", r.claim.id, r.claim.note, moved_text(r)));
     }
+    s.push_str(UNCLAIMED);
     s.push_str(REPORT_TAIL);
     s
 }
@@ -260,7 +325,58 @@ pub fn document(rows: &[Row]) -> Result<String> {
         .iter()
         .map(|r| Ours { value: r.ours, converged: r.converged, between: r.between, moved: r.moved.clone() })
         .collect();
-    Ok(markdown(rows) + &robustness::section(&ours)? + &beyond::section()?)
+    Ok(markdown(rows) + &calibration_table(rows)? + &robustness::section(&ours)? + &beyond::section()?)
+}
+
+/// The claims that move with the tension calibration, under both of the paper's readings:
+/// ours (k_s proportional to the tension, 60 lb = 4e4 N/m) and the straight line through its
+/// 2e4 N/m at 40 lb and 6e4 at 80 lb (`Context::tension_shape` 0 and 1), each with its verdict
+/// (N = 39). A claim is listed when its value differs between the two, decided by running it.
+pub fn calibration_table(rows: &[Row]) -> Result<String> {
+    let claims: Vec<Claim> = rows.iter().map(|r| r.claim.clone()).collect();
+    let line = Context { tension_shape: 1.0, ..Context::paper() }.remembering();
+    let values: Vec<f64> = computations(&claims)?.iter().map(|pc| (pc.ours)(&line)).collect::<Result<_>>()?;
+    let mut s = String::from(
+        "\nUnder the paper's other reading of the calibration, the straight line through 2e4 N/m at 40 lb and 6e4 \
+         at 80 lb (50 lb = 3e4 N/m; the two readings agree at 60 lb), the tension claims move as follows (N = 39; \
+         the `robustness` experiment draws the reading's shape between the two, input `tension_shape`).\n\n\
+         | id | paper | tolerance | ks proportional (ours) | verdict | 2e4-6e4 N/m line | verdict |\n\
+         |---|---|---|---|---|---|---|\n",
+    );
+    let (mut neither, mut ours_only, mut line_only) = (Vec::new(), Vec::new(), Vec::new());
+    for (r, &v) in rows.iter().zip(&values) {
+        if (v - r.ours).abs() <= 1e-12 * v.abs().max(1.0) {
+            continue;
+        }
+        let judge = |x: f64| r.band.map_or(r.verdict, |b| verdict_of(x, b));
+        let id = format!("`{}`", r.claim.id);
+        match (judge(r.ours), judge(v)) {
+            (Verdict::Differs, Verdict::Differs) => neither.push(id),
+            (Verdict::Reproduced, Verdict::Differs) => ours_only.push(id),
+            (Verdict::Differs, Verdict::Reproduced) => line_only.push(id),
+            _ => {}
+        }
+        let verdict = |x: f64| if judge(x) == Verdict::Reproduced { "reproduced" } else { "**differs**" };
+        s.push_str(&format!(
+            "| `{}` | {} {} | {} | {} | {} | {} | {} |\n",
+            r.claim.id,
+            paper_text(&r.claim),
+            r.claim.unit,
+            tolerance_text(r),
+            shown(r, r.ours),
+            verdict(r.ours),
+            shown(r, v),
+            verdict(v),
+        ));
+    }
+    s.push_str(&format!(
+        "\nDiffer under both readings, on either side of the paper's values (the calibration, not the model, \
+         decides how far): {}. Reproduced only with ours: {}. Reproduced only with the 2e4-6e4 line: {}.\n",
+        list_or_none(neither),
+        list_or_none(ours_only),
+        list_or_none(line_only)
+    ));
+    Ok(s)
 }
 
 /// Check the claims file: unique ids, positive tolerances, a computation for each claim and a
@@ -274,7 +390,7 @@ pub fn check_claims_file() -> Result<Vec<Claim>> {
         return Err(Error::invalid("claim id", w[0], "ids in golden/paper_claims.csv must be unique"));
     }
     for c in &claims {
-        let (_, tol) = c.tolerance()?;
+        let tol = c.tolerance()?.map_or(1.0, |t| t.1);
         if !(tol.is_finite() && tol > 0.0) {
             return Err(Error::invalid("tolerance", tol, format!("claim {} needs a tolerance > 0", c.id)));
         }
@@ -321,6 +437,29 @@ printed with one significant digit gets a wide tolerance (\"2 %\" covers 1.5 to 
 1.5e4 to 2.5e4): that is what the paper's precision allows us to check. The claims, their kinds, \
 conclusions, tolerances and pinned verdicts are in `golden/paper_claims.csv`.\n\n";
 
+/// The paper's conclusion sentences that carry no claim, and why (the others are claims above).
+const UNCLAIMED: &str = "\n## The paper's sentences without a claim\n\n\
+Every conclusion the paper draws from its model is a claim above, with a checkable form; these \
+sentences are not, and why:\n\n\
+- \"The results show that the only vibration mode of any significance is the fundamental mode at \
+125 Hz\" (p. 4): an impact's result gives its vibration energy, not its share in each mode.\n\
+- \"e_A ... increases to a broad maximum near the throat of the racket\" (p. 5): the paper does not \
+place the throat; our uniform beam's curve peaks at its middle (Fig 5), beyond the string face.\n\
+- \"the ball usually leaves the strings before the impulse is reflected off the hand\" (p. 2): a \
+result the paper cites (Brody 1997; Cross 1999a) for its free racket, not one it computes; \
+`variant_grip` sets a hand-held racket beside the free one.\n\
+- \"any effect due to the nonlinear nature of the strings is clearly of little consequence\" (p. 3): \
+an inference from the factor-two result, with no nonlinear calculation in the paper; \
+`variant_strings` sets stiffening strings beside the linear ones.\n\
+- \"If the racket head moves in a straight line path, any change in impact duration has no effect at \
+all on the initial rebound path of the ball\" (p. 7): kinematics, true whatever the model.\n\
+- The paper's reasons why wide-body rackets lost favour and what players report (p. 6-7), and its \
+conjecture that tension acts through the ball's friction on the strings (p. 7): not results of its \
+model (the conjecture is taken up beyond the paper, `oblique_tension`).\n\
+\n\
+The paper's figures are not in its text we hold (only their captions), so no curve of ours is \
+overlaid on one of the paper's: each figure marks the values the paper states in words.\n";
+
 const REPORT_TAIL: &str = "\n## Parameters the paper did not state, and what we chose\n\n\
 - **Ball mass**: the paper gives 56.7 g (rules) and 57 g (force estimate); we use 57 g, which \
 reproduces its concrete-drop duration (4.64 ms) and Fig 4.\n\
@@ -346,7 +485,11 @@ serve and forehand gains (its factor-two gains divided by 3) read 4e4 N/m as 60 
 lb. We adopt that reading: k_s proportional to tension, 60 lb = 4e4 N/m (ours, inferred from \
 the paper's arithmetic), and compute 50 lb = 3.33e4 N/m directly. Its 2e4-6e4 N/m for 40-80 lb \
 fits no proportional calibration (a factor 3 in k_s for a factor 2 in tension): rows \
-`strings_ks_40lb` and `strings_ks_80lb`.\n\
+`strings_ks_40lb` and `strings_ks_80lb` judge those two statements against each other (kind \
+*statements*, not a number the model computes, counted apart). Read as a straight line through \
+2e4 at 40 lb and 6e4 at 80 lb, 50 lb is 3e4 N/m; both readings are shown below (\"The 60 -> 50 \
+lb rule\") and in `speeds` (the lower panel), and the robustness study draws the calibration's \
+shape between them.\n\
 \n## The 60 -> 50 lb rule\n\n\
 The paper derives its tension claims by scaling its factor-two results, and not consistently: \
 the serve (+2 % -> +0.7 %) and forehand (+3.3 % -> +1.1 %) gains are divided by 3, while the \

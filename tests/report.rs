@@ -6,7 +6,7 @@ use racket_impact::report::{check_claims_file, document, evaluate, Verdict};
 #[test]
 fn claims_file_is_well_formed() {
     let claims = check_claims_file().unwrap();
-    assert!(claims.len() >= 30, "only {} claims", claims.len());
+    assert!(claims.len() >= 50, "only {} claims", claims.len());
     for c in &claims {
         assert!(!c.note.trim().is_empty() && c.note != "TBD", "{}: empty note", c.id);
     }
@@ -19,11 +19,11 @@ fn every_verdict_is_pinned_and_reproduced_claims_are_within_tolerance() {
         assert!(r.ours.is_finite(), "{}: ours is not finite", r.claim.id);
         assert_eq!(
             r.verdict, r.claim.expected,
-            "{}: verdict flipped (paper {}, ours {}, error {}, tolerance {})",
+            "{}: verdict flipped (paper {}, ours {}, error {:?}, tolerance {:?})",
             r.claim.id, r.claim.paper, r.ours, r.error, r.tolerance
         );
-        if r.verdict == Verdict::Reproduced {
-            assert!(r.error.abs() <= r.tolerance, "{}", r.claim.id);
+        if let (Verdict::Reproduced, Some(e), Some((_, tol))) = (r.verdict, r.error, r.tolerance) {
+            assert!(e.abs() <= tol, "{}", r.claim.id);
         }
         assert_eq!(
             r.converged_verdict, r.claim.expected_converged,
@@ -141,9 +141,10 @@ fn the_headline_conclusions_stand_where_their_numbers_do_not() {
     for (id, share, number) in [
         ("speeds_ks_half_e_a_gain", "1", "part"),
         ("speeds_ks_half_serve_gain", "1", "holds"),
-        ("speeds_60_50_serve_gain", "1", "not at all"),
-        ("speeds_60_50_forehand_gain", "1", "not at all"),
-        ("fig8_theta_r4_50lb", "1", "part"),
+        // the tension calibration's shape, drawn between the paper's two readings, spans the
+        // paper's 0.7 and 1.1 % (ours 0.54 / 0.83 %, the 2e4-6e4 line 0.85 / 1.3 %)
+        ("speeds_60_50_serve_gain", "1", "part"),
+        ("speeds_60_50_forehand_gain", "1", "part"),
         ("fig9_serve_gain", "1", "part"),
     ] {
         let r = row(id);
@@ -153,6 +154,19 @@ fn the_headline_conclusions_stand_where_their_numbers_do_not() {
     // where the conclusion is contested, pinned as computed
     assert_eq!(row("fig4_e_a")["conclusion_verdict"], "contested");
     assert_eq!(row("fig6_vibration_gone_at_10ms")["conclusion_verdict"], "contested");
+    // "about 10 deg", read as every "about" is (within 10 %): about half the samples
+    assert_eq!(row("fig8_theta_r4_50lb")["conclusion_verdict"], "contested");
+    // the paper's arithmetic (a 19 % rise is a 16 % cut, not "about 20 %") and ours bending
+    // below proportional to r fail in every sample, with a negative margin
+    for id in ["conclusions_theta_cut_ks_double", "fig8_theta_r_proportional"] {
+        assert_eq!(row(id)["conclusion_verdict"], "fails", "{id}");
+        assert!(row(id)["conclusion_margin"].parse::<f64>().unwrap() < 0.0, "{id}");
+    }
+    // a conclusion that holds by construction is labelled so
+    for id in ["modes_f1", "modes_f2", "concrete_e", "intro_swing_angle", "fig8_theta_v1_proportional"] {
+        assert_eq!(row(id)["by_construction"], "yes", "{id}");
+    }
+    assert_eq!(row("serve_peak_force")["by_construction"], "no");
 }
 
 #[test]

@@ -86,10 +86,10 @@ fn claims_give_every_claim_a_verdict() {
         "{head}"
     );
     let rows: Vec<&str> = lines.collect();
-    assert_eq!(rows.len(), 44);
-    assert!(rows
+    assert_eq!(rows.len(), 54);
+    assert!(rows.iter().all(|r| ["holds", "part", "not at all", "independent", "no number"]
         .iter()
-        .all(|r| ["holds", "part", "not at all", "independent"].iter().any(|v| r.contains(&format!(",{v},")))));
+        .any(|v| r.contains(&format!(",{v},")))));
 }
 
 #[test]
@@ -100,27 +100,39 @@ fn claims_that_no_sampled_input_moves_are_independent_not_holding_or_failing() {
         let row = csv.lines().find(|l| l.starts_with(&format!("{id},"))).unwrap();
         row.split(',').nth(10).unwrap().to_string()
     };
-    for id in ["ball_p_for_e_0_762", "strings_ks_40lb", "strings_ks_80lb"] {
+    for id in ["ball_p_for_e_0_762", "fig8_theta_v1_proportional"] {
         assert_eq!(verdict(id), "independent", "{id}");
     }
     let independent = csv.lines().skip(1).filter(|l| l.split(',').nth(10) == Some("independent")).count();
-    assert_eq!(independent, 3, "{csv}");
+    assert_eq!(independent, 2, "{csv}");
     assert_ne!(verdict("serve_peak_force"), "independent");
+    // the tension calibration's shape is drawn: the paper's two statements about ks move with it
+    for id in ["strings_ks_40lb", "strings_ks_80lb"] {
+        assert_ne!(verdict(id), "independent", "{id}");
+    }
     // the text output counts the verdicts, the independent ones apart
     let out = common::run(&["uncertainty", "--claims", "--samples", "2"]);
     let text = String::from_utf8(out.stdout).unwrap();
-    assert!(text.contains("not at all; 3 do not depend on the sampled inputs (independent)"), "{text}");
+    assert!(text.contains("not at all; 2 do not depend on the sampled inputs (independent)"), "{text}");
+    assert!(text.contains("hold by construction (not counted)"), "{text}");
     let json = common::run(&["uncertainty", "--claims", "--samples", "2", "--format", "json"]);
     let v: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
-    assert_eq!(v["outputs"]["strings_ks_40lb"]["verdict"], "independent");
-    // so are their conclusions: no share
-    assert_eq!(v["outputs"]["strings_ks_40lb"]["conclusion_verdict"], "independent");
-    assert!(v["outputs"]["strings_ks_40lb"]["conclusion_share"].is_null());
+    let v1 = &v["outputs"]["fig8_theta_v1_proportional"];
+    assert_eq!(v1["verdict"], "independent");
+    // so is its conclusion: no share, no margin; and it holds by construction
+    assert_eq!(v1["conclusion_verdict"], "independent");
+    assert!(v1["conclusion_share"].is_null() && v1["conclusion_margin"].is_null());
+    assert_eq!(v1["by_construction"], true);
     assert!(v["outputs"]["serve_peak_force"]["conclusion_share"].is_number());
-    assert_eq!(v["verdicts"]["independent"], 3);
-    let total: u64 =
-        ["holds", "part", "not at all", "independent"].iter().map(|k| v["verdicts"][k].as_u64().unwrap()).sum();
-    assert_eq!(total, 44);
+    assert!(v["outputs"]["serve_peak_force"]["conclusion_margin"].is_number());
+    assert_eq!(v["outputs"]["serve_peak_force"]["conclusion_check"], "> 1000");
+    assert!(v["conclusion_verdicts"]["by_construction"].as_u64().unwrap() > 0);
+    assert_eq!(v["verdicts"]["independent"], 2);
+    let total: u64 = ["holds", "part", "not at all", "independent", "no number"]
+        .iter()
+        .map(|k| v["verdicts"][k].as_u64().unwrap())
+        .sum();
+    assert_eq!(total, 54);
 }
 
 #[test]

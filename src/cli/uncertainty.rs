@@ -40,12 +40,13 @@ pub struct UncertaintyArgs {
 
 /// The long help: what is computed and the declared uncertainties `--claims` uses.
 pub fn long_about() -> String {
-    let line = |s: &racket_impact::params::spec::ParamSpec| {
-        s.uncertainty.map(|u| format!("{} ~ {} ({})", s.key, u.dist.text(), u.source))
+    let line = |key: &str, u: Option<racket_impact::params::uncertainty::Uncertainty>| {
+        u.map(|u| format!("{key} ~ {} ({})", u.dist.text(), u.source))
     };
-    let declared: Vec<String> = robustness::inputs().into_iter().filter_map(line).collect();
+    let declared: Vec<String> = robustness::inputs().into_iter().filter_map(|s| line(s.key, s.uncertainty)).collect();
     let claims: Vec<&str> = robustness::inputs().iter().map(|s| s.key).collect();
-    let oblique: Vec<String> = keys::uncertain().filter(|s| !claims.contains(&s.key)).filter_map(line).collect();
+    let oblique: Vec<String> =
+        keys::uncertain().filter(|s| !claims.contains(&s.key)).filter_map(|s| line(s.key, s.uncertainty)).collect();
     format!(
         "An impact's result fields under uncertain inputs, or every paper claim under the declared uncertainty\n\n\
          Example: racket-impact uncertainty --x 0.06 --vary ks=uniform:2e4:6e4 --vary mb=normal:0.057:0.0005\n\n\

@@ -44,11 +44,9 @@ impl Verdict {
     }
 }
 
-/// Smallest relative tolerance: the paper's unstated numerics (time step, rounding of g and of
-/// the drop height) are worth this much.
-pub const MIN_REL_TOLERANCE: f64 = 0.005;
-/// Smallest relative tolerance for values the paper itself calls approximate ("about", "~").
-pub const APPROXIMATE_REL_TOLERANCE: f64 = 0.10;
+pub use super::tolerance::{
+    about_band, is_approximate, last_digit_unit, APPROXIMATE_REL_TOLERANCE, APPROXIMATE_WORDS, MIN_REL_TOLERANCE,
+};
 
 /// What agreement on a claim shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -61,6 +59,10 @@ pub enum Kind {
     /// 1/f1, a ratio of two claimed e_A, 30 rad/s times a claimed duration): agreement checks
     /// the paper's arithmetic, not its model.
     Consistency,
+    /// Not a number the model computes: two statements of the paper judged against each other
+    /// (its 2e4-6e4 N/m for 40-80 lb against its "directly proportional" and its 60 -> 50 lb
+    /// arithmetic); counted apart from the claims on the model.
+    Statements,
 }
 
 impl Kind {
@@ -69,6 +71,7 @@ impl Kind {
         match self {
             Kind::Reproduction => "reproduction",
             Kind::Consistency => "consistency",
+            Kind::Statements => "statements",
         }
     }
 }
@@ -87,11 +90,14 @@ pub struct Claim {
     pub source: String,
     /// Unit of `paper` and of ours.
     pub unit: String,
-    /// The paper's value exactly as printed (its last digit sets the tolerance).
+    /// The paper's words stating the value (its sentences, joined by " / " where it states it
+    /// twice): whether the value is approximate is read from them ([`Claim::approximate`]).
+    pub quote: String,
+    /// The paper's value exactly as printed (its last digit sets the tolerance); empty where
+    /// the paper states no number and the claim is its conclusion alone ([`Claim::qualitative`]).
     pub paper: String,
-    /// True where the paper calls the value approximate ("about", "~", "typically").
-    pub approximate: bool,
-    /// For claims of "about zero": the absolute tolerance; otherwise empty.
+    /// For claims of "about zero" (and of a law's deviation, 0 %): the absolute tolerance;
+    /// otherwise empty.
     pub abs_tolerance: Option<f64>,
     /// The verdict we expect (pinned).
     pub expected: Verdict,
@@ -102,14 +108,37 @@ pub struct Claim {
     pub kind: Kind,
     /// What the paper concludes from the number, in words.
     pub conclusion: String,
-    /// The same in a form [`Check`] evaluates (`> 0 and < 1`, `< other_id`, `> 1.5 * other_id`).
+    /// The same in a form [`Check`] evaluates (`> 0 and < 2`, `< other_id`, `> 1.5 * other_id`,
+    /// `about 20`).
     pub conclusion_check: String,
+    /// Where the conclusion's thresholds come from: the paper's words, or ours with the reason.
+    pub threshold_source: String,
+    /// Why the model makes the conclusion true by construction, where it does (empty otherwise):
+    /// true whatever the inputs, or set by an input chosen to give it (EI chosen for the paper's
+    /// 125 and 200 Hz). Such a conclusion is labelled so and not counted as support.
+    pub by_construction: String,
     /// Why it differs, or how it is computed (one line; shown in the report).
     pub note: String,
 }
 
 impl Claim {
-    /// The paper's value as a number.
+    /// The paper states no number: the claim is judged by its conclusion alone.
+    pub fn qualitative(&self) -> bool {
+        self.paper.trim().is_empty()
+    }
+
+    /// Whether the paper calls the value approximate: its words ([`Claim::quote`]) use one of
+    /// [`APPROXIMATE_WORDS`].
+    pub fn approximate(&self) -> bool {
+        is_approximate(&self.quote)
+    }
+
+    /// The conclusion holds by construction of the model ([`Claim::by_construction`]).
+    pub fn by_construction(&self) -> bool {
+        !self.by_construction.trim().is_empty()
+    }
+
+    /// The paper's value as a number (an error for a qualitative claim).
     pub fn paper_value(&self) -> Result<f64> {
         self.paper.parse().map_err(|_| Error::invalid("paper", &self.paper, format!("claim {}: not a number", self.id)))
     }
@@ -117,15 +146,33 @@ impl Claim {
     /// The tolerance within which we call the claim reproduced ([`tolerance_rule`] in words):
     /// an absolute bound for claims of "about zero"; otherwise half a unit of the last printed
     /// digit ([`last_digit_unit`]) relative to the value, at least [`MIN_REL_TOLERANCE`], or
-    /// [`APPROXIMATE_REL_TOLERANCE`] for approximate values.
-    pub fn tolerance(&self) -> Result<(ToleranceKind, f64)> {
-        if let Some(a) = self.abs_tolerance {
-            return Ok((ToleranceKind::Absolute, a));
+    /// [`APPROXIMATE_REL_TOLERANCE`] for approximate values; `None` for a qualitative claim.
+    pub fn tolerance(&self) -> Result<Option<(ToleranceKind, f64)>> {
+        if self.qualitative() {
+            return Ok(None);
         }
-        let v = self.paper_value()?;
-        let half_unit = 0.5 * last_digit_unit(&self.paper) / v.abs();
-        let floor = if self.approximate { APPROXIMATE_REL_TOLERANCE } else { MIN_REL_TOLERANCE };
-        Ok((ToleranceKind::Relative, half_unit.max(floor)))
+        if let Some(a) = self.abs_tolerance {
+            return Ok(Some((ToleranceKind::Absolute, a)));
+        }
+        let t = super::tolerance::relative_tolerance(&self.paper, self.approximate()).ok_or_else(|| {
+            Error::invalid(
+                "paper",
+                &self.paper,
+                format!("claim {}: a non-zero number, or 0 with abs_tolerance", self.id),
+            )
+        })?;
+        Ok(Some((ToleranceKind::Relative, t)))
+    }
+
+    /// The values within which the claim counts as reproduced (`None` for a qualitative claim).
+    pub fn band(&self) -> Result<Option<(f64, f64)>> {
+        let Some((kind, tol)) = self.tolerance()? else { return Ok(None) };
+        let paper = self.paper_value()?;
+        let half = match kind {
+            ToleranceKind::Relative => tol * paper.abs(),
+            ToleranceKind::Absolute => tol,
+        };
+        Ok(Some((paper - half, paper + half)))
     }
 
     /// The conclusion's checkable form, parsed.
@@ -134,28 +181,18 @@ impl Claim {
     }
 }
 
-/// The place value of the last digit of a number as printed: 0.01 for "0.44", 1 for "16",
-/// 1e4 for "2e4" (the mantissa's last digit, scaled by the exponent), so "2e4" gets the same
-/// relative half unit as "2".
-pub fn last_digit_unit(printed: &str) -> f64 {
-    let (mantissa, exponent) = match printed.split_once(['e', 'E']) {
-        Some((m, e)) => (m, e.parse::<i32>().unwrap_or(0)),
-        None => (printed, 0),
-    };
-    let decimals = mantissa.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
-    10f64.powi(exponent - decimals)
-}
-
 /// The tolerance rule in words, stated once: the report's head gives it, the robustness
 /// section refers to it.
 pub fn tolerance_rule() -> String {
     format!(
         "a claim is reproduced when ours is within half a unit of the last digit the paper prints (in \
          scientific notation, of the mantissa's last digit: \"2e4\" is 2 +- 0.5 e4, as \"2\" is 2 +- 0.5), relative \
-         to the paper's value and at least {} %; for a value the paper calls approximate (\"about\", \"~\", \
-         \"typically\") at least {} %; and for a claim of \"about zero\" within the absolute bound the claims \
-         file states with it",
+         to the paper's value and at least {} %; for a value the paper calls approximate (its sentence stating \
+         the value says {}) at least {} %, the one reading of \"about\" that the conclusions' `about X` forms \
+         apply too; for a claim of \"about zero\" within the absolute bound the claims file states with it; and a \
+         claim for which the paper states no number is judged by its conclusion alone",
         100.0 * MIN_REL_TOLERANCE,
+        APPROXIMATE_WORDS.iter().map(|w| format!("\"{w}\"")).collect::<Vec<_>>().join(", "),
         100.0 * APPROXIMATE_REL_TOLERANCE
     )
 }
@@ -272,36 +309,20 @@ mod tests {
     use super::*;
 
     #[test]
-    fn one_tolerance_rule_for_every_way_of_printing_a_digit() {
-        assert_eq!(last_digit_unit("0.44"), 0.01);
-        assert_eq!(last_digit_unit("16"), 1.0);
-        assert_eq!(last_digit_unit("5.90"), 0.01);
-        assert_eq!(last_digit_unit("2e4"), 1e4);
-        assert!((last_digit_unit("3.33e4") - 100.0).abs() < 1e-9);
-        let claim = |paper: &str, approximate: bool| Claim {
-            id: "c".into(),
-            experiment: "speeds".into(),
-            claim: String::new(),
-            source: String::new(),
-            unit: String::new(),
-            paper: paper.into(),
-            approximate,
-            abs_tolerance: None,
-            expected: Verdict::Reproduced,
-            expected_converged: None,
-            kind: Kind::Reproduction,
-            conclusion: String::new(),
-            conclusion_check: "> 0".into(),
-            note: String::new(),
-        };
-        // "2 %" and "2e4" are both one significant digit: the same 25 %
-        let (_, two) = claim("2", false).tolerance().unwrap();
-        let (_, two_e4) = claim("2e4", true).tolerance().unwrap();
-        assert_eq!(two, 0.25);
-        assert_eq!(two_e4, two);
-        // the floors
-        assert_eq!(claim("125", false).tolerance().unwrap().1, MIN_REL_TOLERANCE);
-        assert_eq!(claim("19", true).tolerance().unwrap().1, APPROXIMATE_REL_TOLERANCE);
+    fn approximate_is_read_from_the_papers_words() {
+        let claims = claims().unwrap();
+        let get = |id: &str| claims.iter().find(|c| c.id == id).unwrap();
+        // one sentence, "typically about 125 Hz (period T = 8 ms)": both approximate
+        assert!(get("modes_f1").approximate() && get("modes_period").approximate());
+        // the Conclusions say "about 0.7 %"
+        assert!(get("speeds_60_50_serve_gain").approximate());
+        assert!(!get("fig5_centre_e_a_soft").approximate() && !get("fig8_theta_r4_60lb").approximate());
+        assert_eq!(get("modes_f1").tolerance().unwrap(), Some((ToleranceKind::Relative, APPROXIMATE_REL_TOLERANCE)));
+        for c in &claims {
+            assert!(!c.quote.trim().is_empty(), "{}: no quote", c.id);
+            assert!(!c.threshold_source.trim().is_empty(), "{}: no threshold source", c.id);
+            assert_eq!(c.qualitative(), c.tolerance().unwrap().is_none(), "{}", c.id);
+        }
     }
 
     /// A claim computed from a beam gets its converged value by the same computation on a

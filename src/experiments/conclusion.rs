@@ -4,11 +4,15 @@
 //! or a ratio, on the values of the other claims computed at the same inputs.
 //!
 //! The form is one or more terms joined by ` and `, each a comparison of the claim's own value
-//! with a number, a claim or a multiple of a claim: `> 0 and < 1` (a sign and a "well under
-//! 1 %"), `< clamped_tau_ks4e4` (an order), `> 1.5 * fig9_e_a_ei150` (a ratio),
-//! `< 0.25 * fig5_centre_tau_stiff` ("small compared with", the threshold stated). The
-//! comparisons are strict: a value at a threshold does not carry the conclusion.
+//! with a number, a claim or a multiple of a claim: `> 0 and < 2` (a sign and an "almost
+//! negligible"), `< clamped_tau_ks4e4` (an order), `> 1.5 * fig9_e_a_ei150` (a ratio),
+//! `< 0.25 * fig5_centre_tau_stiff` ("small compared with", the threshold stated), or the
+//! paper's own magnitude `about 20`, read by the one reading of "about"
+//! ([`super::tolerance::about_band`]: `> 18 and < 22`). The comparisons are strict: a value at a
+//! threshold does not carry the conclusion. Where each threshold comes from is the claims
+//! file's `threshold_source`.
 
+use super::tolerance::about_band;
 use crate::error::{Error, Result};
 
 /// What the claim's value is compared with.
@@ -51,10 +55,16 @@ impl Check {
                 format!("claim {id}: {why} (e.g. '> 0 and < 1', '< 0.5 * other_id')"),
             )
         };
-        let terms = form
-            .split(" and ")
-            .map(|term| {
-                let term = term.trim();
+        let mut terms = Vec::new();
+        for term in form.split(" and ") {
+            let term = term.trim();
+            if let Some(value) = term.strip_prefix("about ") {
+                let (lo, hi) = about_band(value).ok_or_else(|| bad("'about' takes a non-zero number"))?;
+                terms.push(Term { greater: true, operand: Operand::Number(lo) });
+                terms.push(Term { greater: false, operand: Operand::Number(hi) });
+                continue;
+            }
+            terms.push({
                 let greater = match term.chars().next() {
                     Some('>') => true,
                     Some('<') => false,
@@ -74,9 +84,9 @@ impl Check {
                         },
                     },
                 };
-                Ok(Term { greater, operand })
-            })
-            .collect::<Result<Vec<_>>>()?;
+                Term { greater, operand }
+            });
+        }
         Ok(Check { terms })
     }
 
@@ -92,14 +102,31 @@ impl Check {
     /// given by `value_of` (a missing or non-finite value fails the term, as a non-finite
     /// `own` does).
     pub fn holds(&self, own: f64, value_of: impl Fn(&str) -> Option<f64>) -> bool {
-        own.is_finite()
-            && self.terms.iter().all(|t| {
+        own.is_finite() && self.slacks(own, value_of).iter().all(|s| s.is_some_and(|s| s > 0.0))
+    }
+
+    /// Each term's threshold, the other claims' values given by `value_of`: `(greater,
+    /// threshold)`, `None` where a compared value is missing or not finite.
+    pub fn thresholds(&self, value_of: impl Fn(&str) -> Option<f64>) -> Vec<Option<(bool, f64)>> {
+        self.terms
+            .iter()
+            .map(|t| {
                 let other = match &t.operand {
                     Operand::Number(v) => Some(*v),
                     Operand::Claim { factor, id } => value_of(id).map(|v| factor * v),
                 };
-                other.is_some_and(|o| o.is_finite() && if t.greater { own > o } else { own < o })
+                other.filter(|o| o.is_finite()).map(|o| (t.greater, o))
             })
+            .collect()
+    }
+
+    /// How far the claim's value `own` is inside each term (positive: the term holds; in the
+    /// claim's unit): `own - threshold` for `>`, `threshold - own` for `<`.
+    pub fn slacks(&self, own: f64, value_of: impl Fn(&str) -> Option<f64>) -> Vec<Option<f64>> {
+        self.thresholds(value_of)
+            .into_iter()
+            .map(|t| t.map(|(greater, o)| if greater { own - o } else { o - own }))
+            .collect()
     }
 }
 
@@ -202,8 +229,56 @@ mod tests {
     }
 
     #[test]
+    fn about_is_read_as_every_approximate_value_is() {
+        let c = Check::parse("conclusions_theta_cut_ks_double", "about 20").unwrap();
+        assert!(c.holds(19.0, none) && c.holds(21.9, none));
+        assert!(!c.holds(15.4, none), "a 15.4 % cut is not 'about 20 %'");
+        assert!(!c.holds(22.1, none));
+        let mixed = Check::parse("c", "about 5.0 and < other").unwrap();
+        assert_eq!(mixed.terms.len(), 3);
+        assert!(mixed.holds(5.0, |_| Some(6.0)) && !mixed.holds(5.0, |_| Some(4.9)));
+    }
+
+    /// Every conclusion of the claims file fails just past each of its thresholds (the other
+    /// claims it compares with at any positive value), and its single-term forms hold just
+    /// inside: no form is a check that cannot fail.
+    #[test]
+    fn every_conclusion_fails_just_past_its_threshold() {
+        let claims = super::super::claims::claims().unwrap();
+        assert!(claims.len() >= 50);
+        for c in &claims {
+            let check = c.check().unwrap();
+            let refs = |_: &str| Some(1.0);
+            for (k, t) in check.thresholds(refs).into_iter().enumerate() {
+                let (greater, at) = t.unwrap_or_else(|| panic!("{}: term {k} has no threshold", c.id));
+                let step = 1e-6 * at.abs().max(1.0);
+                let past = if greater { at - step } else { at + step };
+                assert!(!check.holds(past, refs), "{}: '{}' still holds at {past}", c.id, c.conclusion_check);
+                assert!(!check.holds(at, refs), "{}: holds at its threshold {at}", c.id);
+                if check.terms.len() == 1 {
+                    let inside = if greater { at + step } else { at - step };
+                    assert!(check.holds(inside, refs), "{}: fails just inside at {inside}", c.id);
+                }
+            }
+        }
+    }
+
+    #[test]
     fn malformed_forms_are_refused() {
-        for bad in ["", "0 < 1", "> ", "> x y", "> 2 * ", "> two * fig", "= 3", "> 1 and", "> Fig"] {
+        for bad in [
+            "",
+            "0 < 1",
+            "> ",
+            "> x y",
+            "> 2 * ",
+            "> two * fig",
+            "= 3",
+            "> 1 and",
+            "> Fig",
+            "about",
+            "about x",
+            "about 0",
+        ] {
             assert!(Check::parse("c", bad).is_err(), "{bad:?} should be refused");
         }
     }

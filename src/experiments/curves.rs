@@ -53,6 +53,12 @@ pub fn paper_value(id: &str) -> f64 {
     paper_text(id).and_then(|v| v.parse().ok()).unwrap_or(f64::NAN)
 }
 
+/// The band of values within which the claim `id` counts as reproduced (`None` for an unknown
+/// id or a claim without a number).
+pub fn paper_band(id: &str) -> Option<(f64, f64)> {
+    super::claims::claims().ok()?.into_iter().find(|c| c.id == id)?.band().ok().flatten()
+}
+
 /// The paper's values of `ids` as printed, joined by ", " (for legend labels).
 pub fn paper_list(ids: &[&str]) -> String {
     ids.iter().map(|id| paper_text(id).unwrap_or_else(|| "?".into())).collect::<Vec<_>>().join(", ")

@@ -15,7 +15,7 @@ pub const EXPERIMENT: Experiment = Experiment {
     id: "fig7_off_axis_x10",
     title: "Rotation angle and e_A against off-axis distance r at x 10 cm, v1 30 m/s",
     paper_ref: "Fig 7 and p. 6: theta +19 % when ks is halved",
-    run: |ctx| run(ctx, EXPERIMENT.id, 0.10),
+    run: |ctx| run(ctx, EXPERIMENT.id, 0.10, &[]),
     chart: |ctx, t| {
         let paper = vec![paper_gain_point(t, "fig7_theta_gain_ks_half")];
         let title = format!("Fig 7: off-axis impact at x = 10 cm{}, v1 = 30 m/s", used_position(0.10, &ctx.racket));

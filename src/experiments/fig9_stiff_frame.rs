@@ -8,7 +8,7 @@
 
 use super::fig6_string_stiffness::{stiffness_chart, stiffness_sweep, X_TIP};
 use super::speeds::tip_setup;
-use super::{paper_label, paper_list, paper_points, used_position, Context, Experiment, PaperClaim};
+use super::{paper_label, paper_list, paper_points, used_position, Context, Experiment, PaperClaim, CENTRE_X};
 use crate::error::Result;
 use crate::solve::swing::gain_pct;
 
@@ -36,12 +36,38 @@ pub const EXPERIMENT: Experiment = Experiment {
         PaperClaim { id: "fig9_e_a_ei150", ours: |ctx| e_a_at_tip(ctx, ctx.frame_ei(150.0)) },
         PaperClaim { id: "fig9_e_a_ei384", ours: |ctx| e_a_at_tip(ctx, ctx.frame_ei(384.0)) },
         PaperClaim { id: "fig9_serve_gain", ours: serve_gain },
+        PaperClaim { id: "fig9_node_serve_gain", ours: node_serve_gain },
+        PaperClaim { id: "fig9_f_vib_cut", ours: f_vib_cut },
+        PaperClaim { id: "fig9_tau_ei384", ours: |ctx| Ok(tip_setup(ctx, ctx.frame_ei(384.0))?.tau_s * 1e3) },
     ],
 };
 
 /// e_A at 6 cm, k_s 4e4, for a frame of bending stiffness `ei` (N m^2).
 fn e_a_at_tip(ctx: &Context, ei: f64) -> Result<f64> {
     Ok(tip_setup(ctx, ei)?.e_a)
+}
+
+/// The serve speed gain of the EI 384 frame over the EI 150 one at the centre of the strings
+/// (the vibration node), k_s 4e4, %.
+fn node_serve_gain(ctx: &Context) -> Result<f64> {
+    let e_a = |ei: f64| -> Result<f64> {
+        let mut p = ctx.paper_params(CENTRE_X, 4.0e4);
+        p.racket.ei = ei;
+        Ok(ctx.impact(&p)?.e_a)
+    };
+    let (a, b) = (e_a(ctx.frame_ei(150.0))?, e_a(ctx.frame_ei(384.0))?);
+    Ok(gain_pct(1.0 + a, 1.0 + b))
+}
+
+/// How much less the EI 384 frame vibrates than the EI 150 one at 6 cm, k_s 4e4 (the paper's
+/// measure, peak bending PE), %.
+fn f_vib_cut(ctx: &Context) -> Result<f64> {
+    let f_vib = |ei: f64| -> Result<f64> {
+        let mut p = ctx.paper_params(X_TIP, 4.0e4);
+        p.racket.ei = ei;
+        Ok(ctx.impact(&p)?.f_vib_peak_pe)
+    };
+    Ok(100.0 * (1.0 - f_vib(ctx.frame_ei(384.0))? / f_vib(ctx.frame_ei(150.0))?))
 }
 
 /// The serve speed gain of the EI 384 frame over the EI 150 one at 6 cm, %.

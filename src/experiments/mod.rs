@@ -44,6 +44,7 @@ pub mod claims;
 pub mod conclusion;
 pub mod curves;
 pub mod setup;
+pub mod tolerance;
 
 pub mod clamped_drop;
 pub mod concrete_drop;
@@ -73,7 +74,8 @@ pub mod variants;
 
 pub use claims::{Ours, PaperClaim};
 pub use curves::{
-    col, fit_range, line, on_right, paper_label, paper_list, paper_points, paper_text, paper_value, scaled, styled,
+    col, fit_range, line, on_right, paper_band, paper_label, paper_list, paper_points, paper_text, paper_value, scaled,
+    styled,
 };
 pub use setup::{
     checked, converged, impact, log_space, node_positions, paper_node, sweep, used_position, Context, Scheme, CENTRE_X,

@@ -96,6 +96,9 @@ fn spin_about_zero(t: &Table, law: TangentialLaw) -> Option<(Vec<f64>, Vec<f64>,
         .skip_while(|&k| a[k] <= 0.0)
         .take_while(|&k| stiff_spin.get(k).is_some_and(|s| spin[k].abs() < ABOUT_ZERO * s.abs()))
         .collect();
+    if run.is_empty() {
+        return None;
+    }
     let kept: Vec<f64> = run.iter().map(|&k| vt[k] / (V1_OFF_AXIS * a[k].to_radians().sin())).collect();
     let ratio = kept.iter().sum::<f64>() / kept.len() as f64;
     let note = if (ratio - 1.0).abs() <= ABOUT_ZERO && law == TangentialLaw::Elastic {
@@ -157,5 +160,36 @@ fn chart(ctx: &Context, t: &Table) -> Chart {
         bands: vec![],
         vlines: vec![],
         ..Chart::default()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::table::Value;
+
+    /// A table of the two beds' spins at 0, 2.5 and 5 deg (`soft`, `stiff` in rpm) with the
+    /// soft bed keeping its incoming tangential speed.
+    fn table(soft: [f64; 3], stiff: [f64; 3]) -> Table {
+        let mut t = Table::new("oblique_angle", &["ks_n_per_m", "angle_deg", "spin_out_rpm", "v2_t_m_per_s"]);
+        for (ks, spins) in [(KS[0], soft), (KS[1], stiff)] {
+            for (k, spin) in spins.into_iter().enumerate() {
+                let a = 2.5 * k as f64;
+                let vt = V1_OFF_AXIS * a.to_radians().sin();
+                t.push(vec![Value::Num(ks), Value::Num(a), Value::Num(spin), Value::Num(vt)]).unwrap();
+            }
+        }
+        t
+    }
+
+    #[test]
+    fn spin_about_zero_is_none_without_a_run_of_small_angles() {
+        // the soft bed spins the ball as much as the stiff one from the first oblique angle
+        assert_eq!(spin_about_zero(&table([0.0, 300.0, 600.0], [0.0, 310.0, 620.0]), TangentialLaw::Loss), None);
+        // about no spin at 2.5 deg on the soft bed: a run of one point, named
+        let (a, spin, note) =
+            spin_about_zero(&table([0.0, 5.0, 600.0], [0.0, 310.0, 620.0]), TangentialLaw::Elastic).unwrap();
+        assert_eq!((a, spin), (vec![2.5], vec![5.0]));
+        assert!(note.starts_with("spin ~0 (ks 2e4)"), "{note}");
     }
 }

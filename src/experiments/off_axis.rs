@@ -8,14 +8,16 @@ use crate::error::Result;
 use crate::numfmt::fmt_sig;
 use crate::render::plot::{Chart, Curve, LineStyle};
 use crate::render::table::Table;
+use crate::solve::ImpactResult;
 
 /// The two string stiffnesses of Figs 7-8, N/m.
 pub const KS_VALUES: [f64; 2] = [2.0e4, 4.0e4];
 
-/// Theta, e_A, tau and f(spin) against r at `x` for both string stiffnesses.
-pub fn run(ctx: &Context, id: &str, x: f64) -> Result<Table> {
+/// Theta, e_A, tau and f(spin) against r at `x` for both string stiffnesses and any `more`
+/// (N/m).
+pub fn run(ctx: &Context, id: &str, x: f64, more: &[f64]) -> Result<Table> {
     let mut t = Table::new(id, &["ks_n_per_m", "r_m", "theta_end_deg", "e_a", "tau_s", "f_spin"]);
-    for ks in KS_VALUES {
+    for ks in KS_VALUES.iter().chain(more).copied() {
         let params: Vec<_> = (0..=20)
             .map(|i| {
                 let mut p = ctx.paper_params(x, ks);
@@ -99,6 +101,50 @@ pub fn chart(t: &Table, title: &str, paper: Vec<Curve>) -> Chart {
         vlines: vec![],
         ..Chart::default()
     }
+}
+
+/// One impact point on both string beds of Figs 5, 7 and 8 (k_s 2e4 and 4e4).
+#[derive(Debug, Clone, Copy)]
+pub struct BothBeds {
+    /// Off-axis distance, m (0 on the axis).
+    pub r: f64,
+    /// The impact on the softer strings (2e4 N/m).
+    pub soft: ImpactResult,
+    /// The same on the stiffer strings (4e4 N/m).
+    pub stiff: ImpactResult,
+}
+
+/// The impact points of the paper's "regardless of the impact location" (p. 5-6), each on both
+/// string beds: Fig 5's axis at every fourth node of the paper's beam from node 1 (r 0, the
+/// drop speed), and Figs 7 and 8's x (10 and 15.8 cm) at r 2 to 10 cm in steps of 2 (30 m/s).
+/// The positions are the paper's nodes on any context, so that a converged context computes the
+/// same points.
+pub fn both_beds(ctx: &Context) -> Result<Vec<BothBeds>> {
+    let paper = Context { scheme: super::Scheme::Paper, ..ctx.clone() };
+    let nodes = super::node_positions(&paper.paper_params(0.0, KS_VALUES[0]));
+    let mut points: Vec<(f64, f64, f64)> = nodes.iter().skip(1).step_by(4).map(|&x| (x, 0.0, 0.0)).collect();
+    for x in [0.10, super::CENTRE_X] {
+        points.extend((1..=5).map(|k| (x, 0.02 * k as f64, ctx.v1_off_axis())));
+    }
+    let params: Vec<_> = points
+        .iter()
+        .flat_map(|&(x, r, v1)| {
+            KS_VALUES.map(|ks| {
+                let mut p = ctx.paper_params(x, ks);
+                p.impact.r = r;
+                if v1 > 0.0 {
+                    p.impact.v1 = v1;
+                }
+                p
+            })
+        })
+        .collect();
+    let results = ctx.sweep(&params)?;
+    Ok(points
+        .iter()
+        .zip(results.chunks(2))
+        .map(|(&(_, r, _), pair)| BothBeds { r, soft: pair[0], stiff: pair[1] })
+        .collect())
 }
 
 /// Theta (deg) at (x, r 4 cm, 30 m/s) for a string stiffness, N = 39 node scheme.

@@ -6,7 +6,7 @@
 //! per input with 95 % bootstrap intervals (modal solver, [`SAMPLES`] base samples).
 
 use super::fig6_string_stiffness::X_TIP;
-use super::robustness::{context_at, inputs};
+use super::robustness::{context_at, param_inputs};
 use super::speeds::{centre_setup, tip_setup};
 use super::{Context, Experiment};
 use crate::error::Result;
@@ -53,12 +53,12 @@ fn outputs(ctx: &Context) -> Result<Vec<f64>> {
 }
 
 fn run(ctx: &Context) -> Result<Table> {
-    let specs = inputs();
+    let specs = param_inputs();
     let design = Design::new(SAMPLES, specs.len(), SEED)?;
     let dists: Vec<Dist> = specs.iter().filter_map(|s| s.uncertainty.map(|u| u.dist)).collect();
     let mut sampled = ctx.clone();
     sampled.solver = SolverKind::Modal;
-    let rows = sensitivity::run(&design, &dists, |x| outputs(&context_at(&sampled, x)?.remembering()), |_| {})?;
+    let rows = sensitivity::run(&design, &dists, |x| outputs(&context_at(&sampled, &specs, x)?.remembering()), |_| {})?;
     let summaries = sensitivity::summarise_all(&design, &rows);
     let mut t = Table::new(
         EXPERIMENT.id,
@@ -95,7 +95,7 @@ const COLOURS: [(usize, LineStyle); 6] = [
 ];
 
 fn chart(_: &Context, t: &Table) -> Chart {
-    let names = inputs().iter().map(|s| s.key).collect::<Vec<_>>();
+    let names = param_inputs().iter().map(|s| s.key).collect::<Vec<_>>();
     let outputs = t.column_text("output").unwrap_or_default();
     let inputs_col = t.column_text("input").unwrap_or_default();
     let (total, lo, hi) = (super::col(t, "total"), super::col(t, "total_lo"), super::col(t, "total_hi"));

@@ -16,8 +16,9 @@
 
 use super::{fig6_string_stiffness::X_TIP, line, Context, Experiment, PaperClaim, CENTRE_X};
 use crate::error::Result;
-use crate::params::{ks_from_tension_lb, Params};
-use crate::render::plot::{Chart, LineStyle, VLine};
+use crate::numfmt::fmt_sig;
+use crate::params::Params;
+use crate::render::plot::{Chart, Curve, LineStyle, VLine};
 use crate::render::table::Table;
 use crate::solve::swing::gain_pct;
 
@@ -32,32 +33,32 @@ pub const EXPERIMENT: Experiment = Experiment {
         PaperClaim { id: "speeds_ks_half_e_a_gain", ours: |c| compare(c, 4.0e4, 2.0e4, |a, b| gain_pct(a.e_a, b.e_a)) },
         PaperClaim { id: "speeds_ks_half_serve_gain", ours: |c| compare(c, 4.0e4, 2.0e4, serve_gain) },
         PaperClaim { id: "speeds_ks_half_forehand_gain", ours: |c| compare(c, 4.0e4, 2.0e4, forehand_gain) },
-        PaperClaim { id: "speeds_60_50_serve_gain", ours: |c| compare(c, 4.0e4, lb(50.0), serve_gain) },
-        PaperClaim { id: "speeds_60_50_forehand_gain", ours: |c| compare(c, 4.0e4, lb(50.0), forehand_gain) },
-        PaperClaim { id: "speeds_60_50_tau_change", ours: |c| compare(c, 4.0e4, lb(50.0), tau_change_ms) },
+        PaperClaim { id: "speeds_60_50_serve_gain", ours: |c| compare(c, lb(c, 60.0), lb(c, 50.0), serve_gain) },
+        PaperClaim { id: "speeds_60_50_forehand_gain", ours: |c| compare(c, lb(c, 60.0), lb(c, 50.0), forehand_gain) },
+        PaperClaim { id: "speeds_60_50_tau_change", ours: |c| compare(c, lb(c, 60.0), lb(c, 50.0), tau_change_ms) },
         PaperClaim {
             id: "speeds_50_60_theta_change",
-            ours: |c| compare(c, lb(50.0), 4.0e4, |a, b| gain_pct(a.theta_deg, b.theta_deg)),
+            ours: |c| compare(c, lb(c, 50.0), lb(c, 60.0), |a, b| gain_pct(a.theta_deg, b.theta_deg)),
         },
         PaperClaim {
             id: "speeds_50_60_tau_change",
-            ours: |c| compare(c, lb(50.0), 4.0e4, |a, b| gain_pct(a.tau_s, b.tau_s)),
+            ours: |c| compare(c, lb(c, 50.0), lb(c, 60.0), |a, b| gain_pct(a.tau_s, b.tau_s)),
         },
         PaperClaim { id: "discussion_tau_ks_half", ours: |c| compare(c, 4.0e4, 2.0e4, tau_change_ms) },
         PaperClaim {
             id: "discussion_angle_30_rad_s",
-            ours: |c| compare(c, 4.0e4, lb(50.0), |a, b| (30.0 * (b.tau_s - a.tau_s)).to_degrees()),
+            ours: |c| compare(c, lb(c, 60.0), lb(c, 50.0), |a, b| (30.0 * (b.tau_s - a.tau_s)).to_degrees()),
         },
         PaperClaim { id: "intro_swing_angle", ours: |c| Ok((30.0 * centre_setup(c, 4.0e4)?.tau_s).to_degrees()) },
         PaperClaim { id: "serve_peak_force", ours: serve_peak_force },
-        PaperClaim { id: "strings_ks_40lb", ours: |_| Ok(lb(40.0)) },
-        PaperClaim { id: "strings_ks_80lb", ours: |_| Ok(lb(80.0)) },
+        PaperClaim { id: "strings_ks_40lb", ours: |c| Ok(lb(c, 40.0)) },
+        PaperClaim { id: "strings_ks_80lb", ours: |c| Ok(lb(c, 80.0)) },
     ],
 };
 
-/// k_s for a string tension in lb.
-fn lb(tension_lb: f64) -> f64 {
-    ks_from_tension_lb(tension_lb)
+/// k_s for a string tension in lb, by the context's tension calibration.
+fn lb(ctx: &Context, tension_lb: f64) -> f64 {
+    ctx.ks_at_tension_lb(tension_lb)
 }
 
 /// A comparison of the centre setups of two string stiffnesses (N/m): `f(a, b)`.
@@ -128,6 +129,20 @@ pub fn tip_setup(ctx: &Context, ei: f64) -> Result<Setup> {
     Ok(Setup { e_a: r.e_a, tau_s: r.tau_s, theta_deg: ctx.impact(&p)?.theta_end_deg })
 }
 
+/// Tensions of the curve read by the paper's 2e4-6e4 N/m range, lb: the range it states.
+pub const RANGE_TENSIONS_LB: [f64; 9] = [40.0, 45.0, 50.0, 55.0, 60.0, 65.0, 70.0, 75.0, 80.0];
+
+/// One row of the table: setup `b` against the reference `a`.
+struct Row<'a> {
+    group: &'a str,
+    tension_lb: f64,
+    ks: f64,
+    ei: f64,
+    x: f64,
+    a: &'a Setup,
+    b: &'a Setup,
+}
+
 fn run(ctx: &Context) -> Result<Table> {
     let mut t = Table::new(
         EXPERIMENT.id,
@@ -147,43 +162,35 @@ fn run(ctx: &Context) -> Result<Table> {
             "theta_change_pct",
         ],
     );
-    let reference = centre_setup(ctx, ks_from_tension_lb(REF_TENSION_LB))?;
-    for lb in TENSIONS_LB {
-        let ks = ks_from_tension_lb(lb);
-        let s = centre_setup(ctx, ks)?;
-        let racket = Racket { tension_lb: lb, ks, ei: ctx.frame_ei(150.0), x: CENTRE_X };
-        push(&mut t, "tension", racket, &reference, &s)?;
+    let ei = ctx.frame_ei(150.0);
+    // the two readings of the paper's tension calibration, each against its own 60 lb (the same
+    // 4e4 N/m)
+    for (group, shape, tensions) in [("tension", 0.0, &TENSIONS_LB[..]), ("tension_range", 1.0, &RANGE_TENSIONS_LB[..])]
+    {
+        let reading = Context { tension_shape: shape, ..ctx.clone() };
+        let reference = centre_setup(ctx, reading.ks_at_tension_lb(REF_TENSION_LB))?;
+        for &tension_lb in tensions {
+            let ks = reading.ks_at_tension_lb(tension_lb);
+            let s = centre_setup(ctx, ks)?;
+            push(&mut t, Row { group, tension_lb, ks, ei, x: CENTRE_X, a: &reference, b: &s })?;
+        }
     }
     let flexible = tip_setup(ctx, ctx.frame_ei(150.0))?;
     for ei in [150.0, 384.0].map(|e| ctx.frame_ei(e)) {
         let s = tip_setup(ctx, ei)?;
-        let racket = Racket { tension_lb: REF_TENSION_LB, ks: 4.0e4, ei, x: X_TIP };
-        push(&mut t, "frame", racket, &flexible, &s)?;
+        push(&mut t, Row { group: "frame", tension_lb: REF_TENSION_LB, ks: 4.0e4, ei, x: X_TIP, a: &flexible, b: &s })?;
     }
     Ok(t)
 }
 
-/// The racket and impact point of a row of the table.
-#[derive(Debug, Clone, Copy)]
-struct Racket {
-    /// String tension, lb.
-    tension_lb: f64,
-    /// String stiffness, N/m.
-    ks: f64,
-    /// Frame stiffness, N m^2.
-    ei: f64,
-    /// Impact point, m from the tip.
-    x: f64,
-}
-
-/// A row of the table: the setup `b` of `racket` in `group`, its gains over the setup `a`.
-fn push(t: &mut Table, group: &str, racket: Racket, a: &Setup, b: &Setup) -> Result<()> {
+fn push(t: &mut Table, r: Row) -> Result<()> {
+    let (a, b) = (r.a, r.b);
     t.push(vec![
-        group.into(),
-        racket.tension_lb.into(),
-        racket.ks.into(),
-        racket.ei.into(),
-        racket.x.into(),
+        r.group.into(),
+        r.tension_lb.into(),
+        r.ks.into(),
+        r.ei.into(),
+        r.x.into(),
         b.e_a.into(),
         b.tau_s.into(),
         b.theta_deg.into(),
@@ -195,6 +202,75 @@ fn push(t: &mut Table, group: &str, racket: Racket, a: &Setup, b: &Setup) -> Res
     ])
 }
 
+/// The value of `column` at `tension_lb` in `rows` (NaN if absent).
+fn at(rows: &Table, tension_lb: f64, column: &str) -> f64 {
+    let (lb, v) = (super::col(rows, "tension_lb"), super::col(rows, column));
+    lb.iter().zip(v).find(|(l, _)| (**l - tension_lb).abs() < 1e-9).map_or(f64::NAN, |(_, v)| v)
+}
+
+/// The lower panel: the 60 -> 50 lb serve and forehand gains (percentage points) and the
+/// duration change (ms, right), under both readings of the tension calibration (solid: ours,
+/// proportional; dashed: the paper's 2e4-6e4 N/m line), beside the paper's 0.7 %, 1.1 % and
+/// 0.2 ms with their tolerances: the gaps behind the "differs" verdicts, and what the
+/// calibration does to them.
+fn gaps_panel(t: &Table) -> Chart {
+    let near = |rows: &Table| {
+        let lb = super::col(rows, "tension_lb");
+        let kept = rows.rows.iter().zip(lb).filter(|(_, lb)| (40.0..=60.0).contains(lb)).map(|(r, _)| r.clone());
+        Table { rows: kept.collect(), ..rows.clone() }
+    };
+    let (prop, range) = (near(&t.filter("group", "tension")), near(&t.filter("group", "tension_range")));
+    let mut curves = Vec::new();
+    let mut title = Vec::new();
+    let quantities = [
+        ("serve", "serve_gain_pct", "speeds_60_50_serve_gain", 1, 1.0, false),
+        ("forehand", "forehand_gain_pct", "speeds_60_50_forehand_gain", 2, 1.0, false),
+        ("tau", "tau_change_s", "speeds_60_50_tau_change", 6, 1e3, true),
+    ];
+    for (what, column, id, colour, scale, right) in quantities {
+        let place = |c: Curve| if right { super::on_right(c) } else { c };
+        let label = if right { "tau change".to_string() } else { format!("{what} speed") };
+        let lb = |rows: &Table| super::col(rows, "tension_lb");
+        let v = |rows: &Table| super::scaled(super::col(rows, column), scale);
+        curves.push(place(line(label, lb(&prop), v(&prop), colour)));
+        curves.push(place(super::styled(line("", lb(&range), v(&range), colour), LineStyle::Dashed)));
+        if let Some((lo, hi)) = super::paper_band(id) {
+            curves.push(place(super::styled(line("", vec![50.0, 50.0], vec![lo, hi], colour), LineStyle::Faint)));
+        }
+        let unit = if right { "ms" } else { "%" };
+        let (p, r) = (at(&prop, 50.0, column) * scale, at(&range, 50.0, column) * scale);
+        title.push(format!("{what} {} vs {} / {} {unit}", super::paper_list(&[id]), fmt_sig(p, 2), fmt_sig(r, 2)));
+    }
+    curves.push(super::paper_points(
+        super::paper_label("serve, forehand +0.7, +1.1 % at 50 lb (bars: tolerance)"),
+        vec![50.0, 50.0],
+        &["speeds_60_50_serve_gain", "speeds_60_50_forehand_gain"],
+        0,
+    ));
+    curves.push(super::on_right(super::paper_points(
+        super::paper_label("tau +0.2 ms at 50 lb"),
+        vec![50.0],
+        &["speeds_60_50_tau_change"],
+        6,
+    )));
+    let left: Vec<f64> =
+        curves.iter().filter(|c| c.axis == crate::render::plot::Axis::Left).flat_map(|c| c.y.clone()).collect();
+    let right: Vec<f64> =
+        curves.iter().filter(|c| c.axis == crate::render::plot::Axis::Right).flat_map(|c| c.y.clone()).collect();
+    Chart {
+        title: format!("60 -> 50 lb, paper vs ours (proportional / 2e4-6e4 line): {}", title.join("; ")),
+        x_label: "string tension (lb); solid: ks proportional to it, dashed: the 2e4-6e4 N/m line".into(),
+        y_label: "gain on 60 lb (%)".into(),
+        y2_label: Some("tau change (ms)".into()),
+        // room right of the curves for the legend
+        x_range: Some((39.0, 74.0)),
+        y_range: super::fit_range(left, true),
+        y2_range: super::fit_range(right, true),
+        curves,
+        ..Chart::default()
+    }
+}
+
 fn chart(ctx: &Context, t: &Table) -> Chart {
     let tension = t.filter("group", "tension");
     let lb = super::col(&tension, "tension_lb");
@@ -203,36 +279,44 @@ fn chart(ctx: &Context, t: &Table) -> Chart {
         let values = ids.iter().map(|id| format!("+{}", super::paper_list(&[id]))).collect::<Vec<_>>().join(", ");
         let at = if ids.len() == 2 { "30, 50 lb" } else { "30 lb" };
         let x = if ids.len() == 2 { vec![30.0, 50.0] } else { vec![30.0] };
-        super::paper_points(super::paper_label(&format!("{what} {values} {unit} at {at}")), x, ids, color)
+        super::paper_points(super::paper_label(&format!("{what} {values} {unit}, {at}")), x, ids, color)
     };
     Chart {
         title: format!(
             "Speed gains against string tension, relative to 60 lb, at the centre of the strings{}",
             super::used_position(CENTRE_X, &ctx.racket)
         ),
-        x_label: "string tension (lb), ks = 4e4 N/m x tension / 60 lb".into(),
-        y_label: "change relative to 60 lb (%)".into(),
-        y2_label: Some("impact duration change (ms)".into()),
+        x_label: "string tension (lb), ks = 4e4 N/m x tension / 60 lb (30 lb: ks 2e4)".into(),
+        y_label: "change on 60 lb (%)".into(),
+        y2_label: None,
         x_log: false,
-        x_range: Some((28.0, 82.0)),
+        // room right of the curves for the legend
+        x_range: Some((28.0, 112.0)),
         y_range: Some((-6.0, 22.0)),
-        y2_range: Some((-1.5, 5.5)),
+        y2_range: None,
         curves: vec![
             line("e_A", lb.clone(), super::col(&tension, "e_a_gain_pct"), 0),
             line("serve speed (1+e_A) v1", lb.clone(), super::col(&tension, "serve_gain_pct"), 1),
             line("forehand speed (1+2e_A) v1", lb.clone(), super::col(&tension, "forehand_gain_pct"), 2),
             line("rotation, r 4 cm", lb.clone(), super::col(&tension, "theta_change_pct"), 3),
-            super::on_right(super::styled(
-                line("tau change", lb.clone(), super::scaled(super::col(&tension, "tau_change_s"), 1e3), 6),
-                LineStyle::Dashed,
-            )),
             pp("e_A", "%", &["speeds_ks_half_e_a_gain"], 0),
             pp("serve", "%", &["speeds_ks_half_serve_gain", "speeds_60_50_serve_gain"], 1),
             pp("forehand", "%", &["speeds_ks_half_forehand_gain", "speeds_60_50_forehand_gain"], 2),
-            super::on_right(pp("tau", "ms", &["discussion_tau_ks_half", "speeds_60_50_tau_change"], 6)),
+            paper_rotation(),
         ],
         bands: vec![],
-        vlines: vec![VLine { x: 30.0, label: "30 lb = ks 2e4 N/m".into() }],
+        vlines: vec![VLine { x: 30.0, label: String::new() }],
+        panel: Some(Box::new(gaps_panel(t))),
         ..Chart::default()
     }
+}
+
+/// The paper's rotation changes as changes relative to 60 lb: +19 % for ks halved (30 lb,
+/// `fig8_theta_gain_ks_half`) and -4 % for 50 -> 60 lb (`speeds_50_60_theta_change`), which is
+/// +4.2 % at 50 lb against 60.
+fn paper_rotation() -> Curve {
+    let (halved, up) = (super::paper_value("fig8_theta_gain_ks_half"), super::paper_value("speeds_50_60_theta_change"));
+    let at_50 = 100.0 * (1.0 / (1.0 + up / 100.0) - 1.0);
+    let label = format!("rotation +{}, {} % 50->60 lb", fmt_sig(halved, 2), fmt_sig(up, 2));
+    super::styled(line(super::paper_label(&label), vec![30.0, 50.0], vec![halved, at_50], 3), LineStyle::Paper)
 }

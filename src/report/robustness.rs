@@ -81,10 +81,18 @@ pub fn markdown(rows: &[ClaimRobustness]) -> String {
     s
 }
 
+/// A conclusion's margin in words: "+5.6", "-0.42", or "" where nothing moves it.
+fn margin_text(m: Option<f64>) -> String {
+    m.map_or(String::new(), |m| format!("{}{}", if m >= 0.0 { "+" } else { "" }, fmt_sig(m, 2)))
+}
+
 /// The conclusions: counts, the table, where ours and the paper's part.
 fn conclusions(rows: &[ClaimRobustness]) -> String {
-    let ([(_, holds), (_, mostly), (_, contested), (_, fails), (_, independent)], borderline) =
-        robustness::conclusion_tally(rows);
+    let robustness::ConclusionTally {
+        counts: [(_, holds), (_, mostly), (_, contested), (_, fails), (_, independent)],
+        borderline,
+        by_construction,
+    } = robustness::conclusion_tally(rows);
     let mut s = String::from("\n### Does the paper's conclusion stand?\n\n");
     s.push_str(&format!(
         "Every claim carries the conclusion the paper draws from it, in words and in a checkable form (a \
@@ -92,37 +100,51 @@ fn conclusions(rows: &[ClaimRobustness]) -> String {
          stated; columns `conclusion` and `conclusion_check` of `golden/paper_claims.csv`, evaluated by \
          code on every sample, the other claims of an order or ratio computed at the same inputs). *Share*: \
          the fraction of the {} independent samples (the design's A and B blocks) in which it holds. \
-         *Verdict*: {}.\n\n**Conclusions: {holds} hold in every sample, {mostly} mostly, {contested} \
+         *Verdict*: {}. *Margin*: how far the sampled 5-95 % range of what the conclusion compares (the claim's \
+         value less the threshold, at the same inputs) stays from the threshold, in units of that range's \
+         width, at the nearest threshold: +1 clears it by a whole width, a negative margin crosses it. *Threshold \
+         from*: the paper's words, or ours with the reason (`threshold_source` of the claims file). A conclusion \
+         the model makes true whatever the inputs, or that an input was chosen to give (EI for the paper's 125 \
+         and 200 Hz), is *by construction*: labelled so, with the reason, and not \
+         counted as support.\n\n**Conclusions: {holds} hold in every sample, {mostly} mostly, {contested} \
          contested, {fails} fail; {independent} do not depend on the sampled inputs; borderline, counted \
-         apart: {borderline}.**\n\n",
+         apart: {borderline}; by construction, not counted: {by_construction}.**\n\n",
         2 * robustness::SAMPLES,
         conclusion::rule_text(),
     ));
     s.push_str(
-        "| id | kind | the paper concludes | checked as | share | verdict | at the paper's inputs |\n\
-         |---|---|---|---|---|---|---|\n",
+        "| id | kind | the paper concludes | checked as | threshold from | share | margin | verdict | at the paper's inputs |\n\
+         |---|---|---|---|---|---|---|---|---|\n",
     );
     for r in rows {
-        let verdict = match &r.doubled {
+        let mut verdict = match &r.doubled {
             Some(d) if r.conclusion_borderline() => {
                 format!("{} (borderline: {} at 2x)", r.conclusion.name(), d.conclusion.name())
             }
             _ => r.conclusion.name().to_string(),
         };
+        if r.claim.by_construction() {
+            verdict = format!("{verdict}; by construction, not counted: {}", r.claim.by_construction);
+        }
         s.push_str(&format!(
-            "| `{}` | {} | {} | `{}` | {} | {} | {} |\n",
+            "| `{}` | {} | {} | `{}` | {} | {} | {} | {} | {} |\n",
             r.claim.id,
             r.claim.kind.name(),
-            r.claim.conclusion,
+            super::cell(&r.claim.conclusion),
             r.claim.conclusion_check,
+            super::cell(&r.claim.threshold_source),
             share_text(r.conclusion_share),
+            margin_text(r.conclusion_margin),
             verdict,
             if r.conclusion_nominal { "holds" } else { "fails" }
         ));
     }
     let parted: Vec<String> = rows
         .iter()
-        .filter(|r| matches!(r.conclusion, Standing::Contested | Standing::Fails) || !r.conclusion_nominal)
+        .filter(|r| {
+            !r.claim.by_construction()
+                && (matches!(r.conclusion, Standing::Contested | Standing::Fails) || !r.conclusion_nominal)
+        })
         .map(|r| {
             format!(
                 "- `{}` ({}, {}; at the paper's inputs it {}): decided by {}.\n",
@@ -147,7 +169,7 @@ fn conclusions(rows: &[ClaimRobustness]) -> String {
 
 /// The numbers: counts, the table, the lists.
 fn numbers(rows: &[ClaimRobustness]) -> String {
-    let ([(_, whole), (_, part), (_, none), (_, independent)], borderline) = robustness::tally(rows);
+    let ([(_, whole), (_, part), (_, none), (_, independent), (_, no_number)], borderline) = robustness::tally(rows);
     // a verdict that twice the samples changes is listed under neither: borderline
     let ids = |v: Robust| -> String {
         id_list(
@@ -162,7 +184,8 @@ fn numbers(rows: &[ClaimRobustness]) -> String {
          robustness; the verdict is that of the report above). *Numerical*: the converged value (`hat`, \
          N = 320) less the N = 39 node-scheme value, where the claim has one.\n\n\
          **Numbers: {whole} hold over the whole interval, {part} over part of it, {none} not at all; \
-         {independent} do not depend on the sampled inputs; borderline, counted apart: {borderline}.** A tolerance of \
+         {independent} do not depend on the sampled inputs; {no_number} state no number (judged by their \
+         conclusion above); borderline, counted apart: {borderline}.** A tolerance of \
          half a unit of the paper's last digit is far tighter than a +-10 to 20 % uncertainty of an input, \
          so most numbers hold over part of the range; that is why the conclusions above are judged \
          too.\n\n"
@@ -202,8 +225,8 @@ fn numbers(rows: &[ClaimRobustness]) -> String {
     s.push_str(&format!("- **Hold for part of the range only**: {}.\n", ids(Robust::Part)));
     s.push_str(&format!("- **Do not hold anywhere in it**: {}.\n", ids(Robust::NotAtAll)));
     s.push_str(&format!(
-        "- **Do not depend on the sampled inputs** (a closed form of the ball's e, or the fixed tension \
-         calibration 60 lb = 4e4 N/m; their verdict is that of the report above): {}.\n",
+        "- **Do not depend on the sampled inputs** (arithmetic on the rules' e, or a law the model obeys \
+         exactly whatever the inputs; their verdict is that of the report above): {}.\n",
         ids(Robust::Independent)
     ));
     let flagged: Vec<String> = rows
@@ -290,6 +313,7 @@ fn headlines(rows: &[ClaimRobustness]) -> String {
                     Robust::Part => "the paper's value holds over part of it",
                     Robust::NotAtAll => "the paper's value holds nowhere in it",
                     Robust::Independent => "it does not depend on the sampled inputs",
+                    Robust::NoNumber => "the paper states no number",
                 },
                 hinges(r)
             ));

@@ -2,7 +2,8 @@
 //! the parameters with an uncertainty declared beside them in
 //! [`keys`] (ball mass, p through the rules' e, k1, k_s, EI through f1,
 //! racket mass, length, I_x, the 30 m/s of Figs 7-8), each drawn as a factor `drawn / nominal`
-//! on the context's value; a Saltelli design of [`SAMPLES`] base samples runs every claim's own
+//! on the context's value, and the shape of the tension calibration between the paper's two
+//! statements of it ([`TENSION_SHAPE`]); a Saltelli design of [`SAMPLES`] base samples runs every claim's own
 //! computation at each point with the modal solver (within 1e-4 of the explicit one), and
 //! each claim gets q05-q95, its Sobol' indices and a verdict: the paper's value holds (is
 //! within the claim's tolerance) over the whole 5-95 % interval, over part of it, or not at
@@ -13,21 +14,21 @@
 mod chart;
 mod write;
 
-use super::claims::{computations, evaluate_all, Check, Claim, Ours, ToleranceKind};
+use super::claims::{computations, evaluate_all, Check, Claim, Ours};
 use super::conclusion::Standing;
 use super::{Context, Experiment, Scheme};
 use crate::error::{Error, Result};
 use crate::params::spec::ParamSpec;
-use crate::params::uncertainty::Dist;
+use crate::params::uncertainty::{Dist, Uncertainty};
 use crate::params::{keys, Overrides, SolverKind};
 use crate::render::table::Table;
-use crate::study::sensitivity::{self, Design, Summary};
+use crate::study::sensitivity::{self, quantile_sorted, Design, Summary};
 pub use write::{json, table, text, COLUMNS};
 
-/// Base samples of the design: 128 x (9 inputs + 2) = 1408 evaluations of every claim, about
-/// 6 s of CPU; the experiment also runs twice as many (the `_2x` columns, whose first half are
-/// the same runs) to show how the intervals move when it doubles, about 12 s of CPU in all
-/// (the `make figures` budget is 30 s on two cores).
+/// Base samples of the design: 128 x (10 inputs + 2) = 1536 evaluations of every claim; the
+/// experiment also runs twice as many (the `_2x` columns, whose first half are the same runs)
+/// to show how the intervals move when it doubles (the `make figures` budget is 30 s on two
+/// cores).
 pub const SAMPLES: u64 = 128;
 /// The seed of the design.
 pub const SEED: u32 = 2000;
@@ -55,6 +56,8 @@ pub enum Robust {
     /// calibration): the interval is a point and says nothing of its robustness; the claim's
     /// verdict is the report's one at the paper's inputs.
     Independent,
+    /// The paper states no number: the claim is judged by its conclusion alone.
+    NoNumber,
 }
 
 impl Robust {
@@ -65,15 +68,18 @@ impl Robust {
             Robust::Part => "part",
             Robust::NotAtAll => "not at all",
             Robust::Independent => "independent",
+            Robust::NoNumber => "no number",
         }
     }
 
     /// Every verdict, in the order the counts are told.
-    pub const ALL: [Robust; 4] = [Robust::Holds, Robust::Part, Robust::NotAtAll, Robust::Independent];
+    pub const ALL: [Robust; 5] = [Robust::Holds, Robust::Part, Robust::NotAtAll, Robust::Independent, Robust::NoNumber];
 
     /// Compare the interval `[q05, q95]` with the band `[lo, hi]`; an interval that is one
-    /// point (no sampled input moves the value) is [`Robust::Independent`].
-    pub fn of(q05: f64, q95: f64, (lo, hi): (f64, f64)) -> Robust {
+    /// point (no sampled input moves the value) is [`Robust::Independent`]; no band (the paper
+    /// states no number) is [`Robust::NoNumber`].
+    pub fn of(q05: f64, q95: f64, band: Option<(f64, f64)>) -> Robust {
+        let Some((lo, hi)) = band else { return Robust::NoNumber };
         if q05 == q95 {
             Robust::Independent
         } else if q05 >= lo && q95 <= hi {
@@ -97,8 +103,9 @@ pub struct ClaimRobustness {
     pub numerical: Option<f64>,
     /// The spread and indices under the declared uncertainty.
     pub summary: Summary,
-    /// The band within which the paper's value counts as reproduced.
-    pub band: (f64, f64),
+    /// The band within which the paper's value counts as reproduced (`None`: the paper states no
+    /// number).
+    pub band: Option<(f64, f64)>,
     /// The verdict on the number.
     pub verdict: Robust,
     /// The share of the samples in which the paper's conclusion holds (`None`: no sampled
@@ -106,6 +113,10 @@ pub struct ClaimRobustness {
     pub conclusion_share: Option<f64>,
     /// The verdict on the conclusion.
     pub conclusion: Standing,
+    /// How far the sampled 5-95 % range of what the conclusion compares stays from its
+    /// threshold, in units of that range's width (negative where it crosses); the nearest of its
+    /// thresholds; `None` where no sampled input moves it ([`margins`]).
+    pub conclusion_margin: Option<f64>,
     /// Whether the conclusion holds at the paper's inputs (the report's values).
     pub conclusion_nominal: bool,
     /// The same at twice the base samples (same seed: the first half of its rows are these),
@@ -124,6 +135,8 @@ pub struct Doubled {
     pub conclusion_share: Option<f64>,
     /// The verdict on the conclusion.
     pub conclusion: Standing,
+    /// The conclusion's margin.
+    pub conclusion_margin: Option<f64>,
 }
 
 impl ClaimRobustness {
@@ -144,24 +157,63 @@ pub fn runs_per_sample() -> usize {
     inputs().len() + 2
 }
 
-/// The inputs: every parameter with a declared uncertainty that the paper's impacts use (the
-/// ball's tangential properties act only on an oblique or spinning ball, so they would add
-/// dimensions that move no claim).
-pub fn inputs() -> Vec<&'static ParamSpec> {
-    let paper = crate::params::Params::paper();
-    keys::uncertain().filter(|s| crate::params::used::unused(s, &paper).is_none()).collect()
+/// One uncertain input of the study: a declared parameter's key and uncertainty, or the shape
+/// of the tension calibration ([`TENSION_SHAPE`]).
+#[derive(Debug, Clone, Copy)]
+pub struct Input {
+    /// The parameter's key, or [`TENSION_SHAPE`].
+    pub key: &'static str,
+    /// Its distribution, nominal value and source.
+    pub uncertainty: Option<Uncertainty>,
 }
 
-/// The context at the drawn values `x` (one per [`inputs`]): each a factor `x / nominal` on
-/// `base`'s value (k_s and v1 on the context's factors, the others on its racket and ball).
-pub fn context_at(base: &Context, x: &[f64]) -> Result<Context> {
+/// The key of the tension calibration's shape ([`Context::tension_shape`]): 0 reads the
+/// paper's "k_s is approximately proportional to the string tension" (ours, 60 lb = 4e4 N/m),
+/// 1 its "typically between 2e4 and 6e4 N/m for string tensions in the range 40 lb to 80 lb" as
+/// a straight line; between, the mixture.
+pub const TENSION_SHAPE: &str = "tension_shape";
+
+/// The tension calibration's shape as an input: uniform between the paper's two statements.
+pub const TENSION_SHAPE_UNCERTAINTY: Uncertainty = Uncertainty {
+    dist: Dist::Uniform { lo: 0.0, hi: 1.0 },
+    nominal: 0.0,
+    source: "the paper's two statements of how k_s follows the tension (p. 3, String parameters: 'typically between \
+             2e4 and 6e4 N/m for string tensions in the range 40 lb to 80 lb'; p. 7, Discussion: 'approximately \
+             proportional to the string tension'), no proportional law fitting both: 0 is ours, proportional with \
+             60 lb = 4e4 N/m, 1 the straight line through 2e4 at 40 lb and 6e4 at 80 lb (50 lb = 3e4 N/m), \
+             uniform between; the two agree at 60 lb, so only the tension claims move",
+};
+
+/// The declared parameters the paper's impacts use (the ball's tangential properties act only
+/// on an oblique or spinning ball, so they would add dimensions that move no claim).
+pub fn param_inputs() -> Vec<Input> {
+    let paper = crate::params::Params::paper();
+    keys::uncertain()
+        .filter(|s| crate::params::used::unused(s, &paper).is_none())
+        .map(|s: &ParamSpec| Input { key: s.key, uncertainty: s.uncertainty })
+        .collect()
+}
+
+/// The inputs of the claims' study: [`param_inputs`] and the tension calibration's shape.
+pub fn inputs() -> Vec<Input> {
+    let mut all = param_inputs();
+    all.push(Input { key: TENSION_SHAPE, uncertainty: Some(TENSION_SHAPE_UNCERTAINTY) });
+    all
+}
+
+/// The context at the drawn values `x` (one per input of `inputs`): each parameter a factor
+/// `x / nominal` on `base`'s value (k_s and v1 on the context's factors, the others on its
+/// racket and ball), the calibration's shape as drawn.
+pub fn context_at(base: &Context, inputs: &[Input], x: &[f64]) -> Result<Context> {
     let mut ctx = base.clone();
     let mut p = base.base_params();
     let mut o = Overrides::default();
-    for (spec, &v) in inputs().iter().zip(x) {
+    for (spec, &v) in inputs.iter().zip(x) {
         let Some(u) = spec.uncertainty else { continue };
         let factor = v / u.nominal;
-        if spec.key == keys::KS.key {
+        if spec.key == TENSION_SHAPE {
+            ctx.tension_shape = v;
+        } else if spec.key == keys::KS.key {
             ctx.ks_factor *= factor;
         } else if spec.key == keys::V1.key {
             ctx.v1_factor *= factor;
@@ -177,16 +229,8 @@ pub fn context_at(base: &Context, x: &[f64]) -> Result<Context> {
     Ok(ctx)
 }
 
-/// The band of values within which the claim counts as reproduced.
-pub fn band(claim: &Claim) -> Result<(f64, f64)> {
-    let paper = claim.paper_value()?;
-    let (kind, tol) = claim.tolerance()?;
-    let half = match kind {
-        ToleranceKind::Relative => tol * paper.abs(),
-        ToleranceKind::Absolute => tol,
-    };
-    Ok((paper - half, paper + half))
-}
+/// A claim at twice the samples: its summary, conclusion share and conclusion margin.
+type Twice = (Summary, Option<f64>, Option<f64>);
 
 /// Every claim under the declared uncertainty, on `base` (the paper's context for the
 /// report): `samples` base samples from `seed`, and with `doubled` also twice as many (their
@@ -214,7 +258,7 @@ pub fn study(
         &dists,
         |x| {
             // the claims at one draw share their impacts
-            let ctx = context_at(&sampled, x)?.remembering();
+            let ctx = context_at(&sampled, &specs, x)?.remembering();
             fns.iter().map(|f| (f.ours)(&ctx)).collect()
         },
         progress,
@@ -224,11 +268,18 @@ pub fn study(
     let checks: Vec<Check> = claims.iter().map(Claim::check).collect::<Result<_>>()?;
     let owned_ids: Vec<String> = claims.iter().map(|c| c.id.clone()).collect();
     let ids: Vec<&str> = owned_ids.iter().map(String::as_str).collect();
-    let small_shares = shares(&ids, &checks, &small_rows[..2 * small.samples()]);
-    let mut twice: Vec<Option<(Summary, Option<f64>)>> = vec![None; claims.len()];
+    let small_ab = &small_rows[..2 * small.samples()];
+    let small_shares = shares(&ids, &checks, small_ab);
+    let small_margins = margins(&ids, &checks, small_ab);
+    let mut twice: Vec<Option<Twice>> = vec![None; claims.len()];
     if doubled {
-        let twice_shares = shares(&ids, &checks, &rows[..2 * design.samples()]);
-        twice = sensitivity::summarise_all(&design, &rows).into_iter().zip(twice_shares).map(Some).collect();
+        let ab = &rows[..2 * design.samples()];
+        let (twice_shares, twice_margins) = (shares(&ids, &checks, ab), margins(&ids, &checks, ab));
+        twice = sensitivity::summarise_all(&design, &rows)
+            .into_iter()
+            .zip(twice_shares.into_iter().zip(twice_margins))
+            .map(|(s, (share, margin))| Some((s, share, margin)))
+            .collect();
     }
     let ours: Vec<Ours> = match nominal {
         Some(o) if o.len() == claims.len() => o.to_vec(),
@@ -243,15 +294,16 @@ pub fn study(
         .into_iter()
         .zip(ours)
         .zip(checks)
-        .zip(summaries.into_iter().zip(small_shares).zip(twice))
-        .map(|(((claim, ours), check), ((summary, share), twice))| {
-            let band = band(&claim)?;
+        .zip(summaries.into_iter().zip(small_shares.into_iter().zip(small_margins)).zip(twice))
+        .map(|(((claim, ours), check), ((summary, (share, margin)), twice))| {
+            let band = claim.band()?;
             let verdict = Robust::of(summary.q05, summary.q95, band);
-            let doubled = twice.map(|(s, share)| Doubled {
+            let doubled = twice.map(|(s, share, margin)| Doubled {
                 verdict: Robust::of(s.q05, s.q95, band),
                 summary: s,
                 conclusion_share: share,
                 conclusion: Standing::of(share),
+                conclusion_margin: margin,
             });
             Ok(ClaimRobustness {
                 conclusion_nominal: check.holds(ours.value, nominal_of),
@@ -263,6 +315,7 @@ pub fn study(
                 verdict,
                 conclusion_share: share,
                 conclusion: Standing::of(share),
+                conclusion_margin: margin,
                 doubled,
             })
         })
@@ -290,34 +343,84 @@ pub fn shares(ids: &[&str], checks: &[Check], runs: &[Vec<f64>]) -> Vec<Option<f
         .collect()
 }
 
+/// How far the sampled range of what each claim's conclusion compares stays from its
+/// thresholds ([`ClaimRobustness::conclusion_margin`]): per term, the 5 % quantile of the
+/// term's slack over `runs` (its distance inside the threshold, the other claims at the same
+/// run) over the width of the slack's 5-95 % range; the smallest over the terms. `None` where
+/// a slack is missing or every term's slack is the same in every run.
+pub fn margins(ids: &[&str], checks: &[Check], runs: &[Vec<f64>]) -> Vec<Option<f64>> {
+    let column = |id: &str| ids.iter().position(|i| *i == id);
+    (0..ids.len())
+        .map(|k| {
+            let check = &checks[k];
+            let per_run: Vec<Vec<Option<f64>>> =
+                runs.iter().map(|r| check.slacks(r[k], |id| column(id).map(|j| r[j]))).collect();
+            let mut best: Option<f64> = None;
+            for term in 0..check.terms.len() {
+                let mut slack: Vec<f64> = per_run.iter().map(|s| s[term]).collect::<Option<Vec<f64>>>()?;
+                if slack.iter().any(|v| !v.is_finite()) {
+                    return None;
+                }
+                slack.sort_by(f64::total_cmp);
+                let (q05, q95) = (quantile_sorted(&slack, 0.05), quantile_sorted(&slack, 0.95));
+                if q95 > q05 {
+                    let m = q05 / (q95 - q05);
+                    best = Some(best.map_or(m, |b| b.min(m)));
+                }
+            }
+            best
+        })
+        .collect()
+}
+
 /// How many claims have each verdict on the number, in [`Robust::ALL`]'s order, and how many
 /// are borderline (a verdict that twice the samples changes; counted apart, not under their
 /// verdict).
-pub fn tally(rows: &[ClaimRobustness]) -> ([(Robust, usize); 4], usize) {
+pub fn tally(rows: &[ClaimRobustness]) -> ([(Robust, usize); 5], usize) {
     let counts = Robust::ALL.map(|v| (v, rows.iter().filter(|r| r.verdict == v && !r.borderline()).count()));
     (counts, rows.iter().filter(|r| r.borderline()).count())
 }
 
-/// How many claims have each verdict on the conclusion, in [`Standing::ALL`]'s order, and how
-/// many are borderline (counted apart).
-pub fn conclusion_tally(rows: &[ClaimRobustness]) -> ([(Standing, usize); 5], usize) {
-    let counts =
-        Standing::ALL.map(|v| (v, rows.iter().filter(|r| r.conclusion == v && !r.conclusion_borderline()).count()));
-    (counts, rows.iter().filter(|r| r.conclusion_borderline()).count())
+/// How many claims have each verdict on the conclusion, in [`Standing::ALL`]'s order, how many
+/// are borderline and how many hold by construction (both counted apart, not under their
+/// verdict: a conclusion the model makes true by construction is no support).
+pub fn conclusion_tally(rows: &[ClaimRobustness]) -> ConclusionTally {
+    let counted = |r: &&ClaimRobustness| !r.claim.by_construction() && !r.conclusion_borderline();
+    ConclusionTally {
+        counts: Standing::ALL.map(|v| (v, rows.iter().filter(counted).filter(|r| r.conclusion == v).count())),
+        borderline: rows.iter().filter(|r| !r.claim.by_construction() && r.conclusion_borderline()).count(),
+        by_construction: rows.iter().filter(|r| r.claim.by_construction()).count(),
+    }
+}
+
+/// The conclusions counted ([`conclusion_tally`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ConclusionTally {
+    /// Each verdict with its count, in [`Standing::ALL`]'s order (neither borderline nor by
+    /// construction).
+    pub counts: [(Standing, usize); 5],
+    /// Verdicts that twice the samples changes.
+    pub borderline: usize,
+    /// Conclusions that hold by construction of the model.
+    pub by_construction: usize,
 }
 
 /// The counts in words: "Conclusions: 30 hold, 5 mostly, ...; numbers: 8 hold over the whole
 /// interval, ...".
 pub fn tally_text(rows: &[ClaimRobustness]) -> String {
-    let ([(_, holds), (_, mostly), (_, contested), (_, fails), (_, c_independent)], c_borderline) =
-        conclusion_tally(rows);
-    let ([(_, whole), (_, part), (_, none), (_, independent)], borderline) = tally(rows);
+    let ConclusionTally {
+        counts: [(_, holds), (_, mostly), (_, contested), (_, fails), (_, c_independent)],
+        borderline: c_borderline,
+        by_construction,
+    } = conclusion_tally(rows);
+    let ([(_, whole), (_, part), (_, none), (_, independent), (_, no_number)], borderline) = tally(rows);
     format!(
         "Conclusions: {holds} hold in every sample, {mostly} mostly, {contested} contested, {fails} fail; \
-         {c_independent} independent; {c_borderline} borderline (the verdict changes at twice the samples).\n\
+         {c_independent} independent; {c_borderline} borderline (the verdict changes at twice the samples); \
+         {by_construction} hold by construction (not counted).\n\
          Numbers: {whole} hold over the whole interval, {part} over part of it, {none} not at all; {independent} \
          do not depend on the sampled inputs (independent); {borderline} borderline (the verdict changes at \
-         twice the samples)"
+         twice the samples); {no_number} state no number (judged by their conclusion)"
     )
 }
 
@@ -349,22 +452,46 @@ mod tests {
 
     #[test]
     fn verdicts_compare_the_interval_with_the_band() {
-        assert_eq!(Robust::of(1.0, 2.0, (0.0, 3.0)), Robust::Holds);
-        assert_eq!(Robust::of(1.0, 4.0, (0.0, 3.0)), Robust::Part);
-        assert_eq!(Robust::of(-1.0, 0.5, (0.0, 3.0)), Robust::Part);
-        assert_eq!(Robust::of(3.5, 4.0, (0.0, 3.0)), Robust::NotAtAll);
+        assert_eq!(Robust::of(1.0, 2.0, Some((0.0, 3.0))), Robust::Holds);
+        assert_eq!(Robust::of(1.0, 4.0, Some((0.0, 3.0))), Robust::Part);
+        assert_eq!(Robust::of(-1.0, 0.5, Some((0.0, 3.0))), Robust::Part);
+        assert_eq!(Robust::of(3.5, 4.0, Some((0.0, 3.0))), Robust::NotAtAll);
         // a point interval is no test of robustness, inside the band or out of it
-        assert_eq!(Robust::of(2.0, 2.0, (0.0, 3.0)), Robust::Independent);
-        assert_eq!(Robust::of(4.0, 4.0, (0.0, 3.0)), Robust::Independent);
+        assert_eq!(Robust::of(2.0, 2.0, Some((0.0, 3.0))), Robust::Independent);
+        assert_eq!(Robust::of(4.0, 4.0, Some((0.0, 3.0))), Robust::Independent);
+        assert_eq!(Robust::of(1.0, 2.0, None), Robust::NoNumber);
+    }
+
+    /// The margin is the distance of the sampled 5-95 % range from the threshold in units of its
+    /// width: positive inside, negative where the range crosses, the nearest threshold deciding.
+    #[test]
+    fn the_margin_is_the_distance_from_the_threshold_in_widths() {
+        let ids = ["a", "b"];
+        let checks = [Check::parse("a", "> 0 and < 10").unwrap(), Check::parse("b", "< a").unwrap()];
+        // a runs over 1..=101 (5-95 %: 6 to 96), b is a - 50 (slack 50)
+        let runs: Vec<Vec<f64>> = (1..=101).map(|k| vec![k as f64, k as f64 - 50.0]).collect();
+        let m = margins(&ids, &checks, &runs);
+        // "< 10": slack 10 - a has its 5 % quantile at 10 - 96 = -86, width 90
+        assert!((m[0].unwrap() - (-86.0 / 90.0)).abs() < 1e-12, "{m:?}");
+        // b's slack is 50 in every run: no width, no margin
+        assert_eq!(m[1], None);
+        let inside: Vec<Vec<f64>> = (1..=101).map(|k| vec![1.0 + k as f64 / 100.0, 0.0]).collect();
+        let m = margins(&ids, &checks, &inside);
+        // "> 0": 5 % quantile 1.06, width 0.9
+        assert!((m[0].unwrap() - 1.06 / 0.9).abs() < 1e-9, "{m:?}");
     }
 
     #[test]
     fn the_nominal_draw_is_the_paper_context() {
-        let x: Vec<f64> = inputs().iter().map(|s| s.uncertainty.unwrap().nominal).collect();
-        assert_eq!(context_at(&Context::paper(), &x).unwrap(), Context::paper());
+        let all = inputs();
+        let x: Vec<f64> = all.iter().map(|s| s.uncertainty.unwrap().nominal).collect();
+        assert_eq!(context_at(&Context::paper(), &all, &x).unwrap(), Context::paper());
         let mut y = x.clone();
         y[0] *= 1.1; // ks
-        let ctx = context_at(&Context::paper(), &y).unwrap();
+        *y.last_mut().unwrap() = 1.0; // the paper's 2e4-6e4 line
+        let ctx = context_at(&Context::paper(), &all, &y).unwrap();
         assert!((ctx.ks_factor - 1.1).abs() < 1e-12 && ctx.racket == Context::paper().racket);
+        assert_eq!(ctx.tension_shape, 1.0);
+        assert!((ctx.ks_at_tension_lb(50.0) - 3.0e4).abs() < 1e-9 && (ctx.ks_at_tension_lb(60.0) - 4.0e4).abs() < 1e-9);
     }
 }

@@ -10,7 +10,7 @@ use crate::render::table::{Table, Value};
 use crate::study::uncertainty::{not_meaningful, summary_json};
 
 /// The table columns.
-pub const COLUMNS: [&str; 24] = [
+pub const COLUMNS: [&str; 28] = [
     "id",
     "unit",
     "paper",
@@ -35,6 +35,10 @@ pub const COLUMNS: [&str; 24] = [
     "verdict_2x",
     "conclusion_share_2x",
     "conclusion_verdict_2x",
+    "conclusion_check",
+    "conclusion_margin",
+    "conclusion_margin_2x",
+    "by_construction",
 ];
 
 /// The claims as a table, one row each in the claims file's order.
@@ -49,9 +53,9 @@ pub fn table(rows: &[ClaimRobustness]) -> Result<Table> {
         t.push(vec![
             Value::Text(r.claim.id.clone()),
             Value::Text(r.claim.unit.clone()),
-            Value::Num(r.claim.paper_value()?),
-            Value::Num(r.band.0),
-            Value::Num(r.band.1),
+            num(r.claim.paper_value().ok()),
+            num(r.band.map(|b| b.0)),
+            num(r.band.map(|b| b.1)),
             Value::Num(r.nominal),
             num(r.numerical),
             Value::Num(s.q05),
@@ -71,6 +75,10 @@ pub fn table(rows: &[ClaimRobustness]) -> Result<Table> {
             Value::Text(r.doubled.as_ref().map_or(String::new(), |d| d.verdict.name().to_string())),
             num(r.doubled.as_ref().and_then(|d| d.conclusion_share)),
             Value::Text(r.doubled.as_ref().map_or(String::new(), |d| d.conclusion.name().to_string())),
+            Value::Text(r.claim.conclusion_check.clone()),
+            num(r.conclusion_margin),
+            num(r.doubled.as_ref().and_then(|d| d.conclusion_margin)),
+            Value::Text(if r.claim.by_construction() { "yes" } else { "no" }.to_string()),
         ])?;
     }
     Ok(t)
@@ -78,7 +86,9 @@ pub fn table(rows: &[ClaimRobustness]) -> Result<Table> {
 
 /// The JSON document of `uncertainty --claims`: `{"samples", "seed", "runs", "inputs": [...],
 /// "outputs": {claim: {summary, "unit", "paper", "band", "nominal", "numerical", "verdict",
-/// "conclusion", "conclusion_share", "conclusion_verdict"}}, "verdicts", "conclusion_verdicts"}`.
+/// "conclusion", "conclusion_share", "conclusion_verdict", "conclusion_check",
+/// "conclusion_margin", "by_construction"}}, "verdicts", "conclusion_verdicts"}` (`paper` and
+/// `band` null for a claim the paper states no number for).
 pub fn json(rows: &[ClaimRobustness], samples: u64, seed: u32) -> Result<Json> {
     let inputs = inputs();
     let keys: Vec<&str> = inputs.iter().map(|s| s.key).collect();
@@ -86,14 +96,17 @@ pub fn json(rows: &[ClaimRobustness], samples: u64, seed: u32) -> Result<Json> {
     for r in rows {
         let mut v = summary_json(&r.summary, &keys);
         v["unit"] = r.claim.unit.clone().into();
-        v["paper"] = r.claim.paper_value()?.into();
-        v["band"] = json!([r.band.0, r.band.1]);
+        v["paper"] = r.claim.paper_value().ok().into();
+        v["band"] = r.band.map_or(Json::Null, |b| json!([b.0, b.1]));
         v["nominal"] = r.nominal.into();
         v["numerical"] = r.numerical.into();
         v["verdict"] = r.verdict.name().into();
         v["conclusion"] = r.claim.conclusion.clone().into();
         v["conclusion_share"] = r.conclusion_share.into();
         v["conclusion_verdict"] = r.conclusion.name().into();
+        v["conclusion_check"] = r.claim.conclusion_check.clone().into();
+        v["conclusion_margin"] = r.conclusion_margin.into();
+        v["by_construction"] = r.claim.by_construction().into();
         outputs.insert(r.claim.id.clone(), v);
     }
     let inputs: Vec<Json> = inputs
@@ -106,10 +119,11 @@ pub fn json(rows: &[ClaimRobustness], samples: u64, seed: u32) -> Result<Json> {
     let (counts, borderline) = tally(rows);
     let mut verdicts: Map<String, Json> = counts.iter().map(|(v, n)| (v.name().to_string(), (*n).into())).collect();
     verdicts.insert("borderline".into(), borderline.into());
-    let (counts, borderline) = conclusion_tally(rows);
+    let c = conclusion_tally(rows);
     let mut conclusion_verdicts: Map<String, Json> =
-        counts.iter().map(|(v, n)| (v.name().to_string(), (*n).into())).collect();
-    conclusion_verdicts.insert("borderline".into(), borderline.into());
+        c.counts.iter().map(|(v, n)| (v.name().to_string(), (*n).into())).collect();
+    conclusion_verdicts.insert("borderline".into(), c.borderline.into());
+    conclusion_verdicts.insert("by_construction".into(), c.by_construction.into());
     Ok(json!({
         "samples": samples, "seed": seed, "runs": samples as usize * runs_per_sample(), "inputs": inputs,
         "outputs": outputs, "verdicts": verdicts, "conclusion_verdicts": conclusion_verdicts

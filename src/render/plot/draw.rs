@@ -117,8 +117,10 @@ where
 
     let left = Bounds::new(plan.x, plan.y, plan.x_log);
     let right = Bounds::new(plan.x, (s0, s1), plan.x_log);
+    // the plotting area in the pixels `root` draws in (a panel's root starts below the image's top)
     let (px, py) = cc.plotting_area().get_pixel_range();
-    let area: Rect = (px.start, py.start, px.end, py.end);
+    let (bx, by) = root.get_base_pixel();
+    let area: Rect = (px.start - bx, py.start - by, px.end - bx, py.end - by);
     let pix = |b: Bounds| ToPixel { bounds: b, area };
     draw_named_ticks(root, chart, pix(left), y_named)?;
     let mut entries = draw_bands(&mut cc, chart, left, (y0, y1))?;

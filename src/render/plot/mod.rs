@@ -220,12 +220,24 @@ pub struct Chart {
     /// Named y ticks, the same (the label area widens to the longest name; many names share
     /// the height in a smaller font).
     pub y_ticks: Vec<(f64, String)>,
+    /// A second chart drawn below this one in the same image (its own title, axes, curves and
+    /// legend), taking [`PANEL_SHARE`] of the height: a close-up of what the main chart shows
+    /// at another scale. A panel's own panel is not drawn.
+    pub panel: Option<Box<Chart>>,
 }
+
+/// The share of the image height a [`Chart::panel`] takes.
+pub const PANEL_SHARE: f64 = 0.45;
 
 impl Chart {
     /// A chart with the given title and axis labels and nothing else.
     pub fn new(title: impl Into<String>, x_label: impl Into<String>, y_label: impl Into<String>) -> Self {
         Chart { title: title.into(), x_label: x_label.into(), y_label: y_label.into(), ..Chart::default() }
+    }
+
+    /// This chart and its panel, if it has one: every plotting area the image draws.
+    pub fn panels(&self) -> Vec<&Chart> {
+        std::iter::once(self).chain(self.panel.as_deref()).collect()
     }
 }
 
@@ -248,7 +260,7 @@ pub fn stage_png(staged: &mut crate::render::io::Staged, id: &str, chart: &Chart
     if !fonts_registered() {
         return Err(fail("could not load the bundled DejaVu Sans font".to_string()));
     }
-    let plan = Plan::new(chart).map_err(&fail)?;
+    let plans = chart.panels().into_iter().map(Plan::new).collect::<std::result::Result<Vec<_>, _>>().map_err(&fail)?;
     staged
         .with(path, ".png", |tmp| {
             // `catch_unwind` is a last line of defence: plotters may panic on inputs we did not
@@ -256,11 +268,20 @@ pub fn stage_png(staged: &mut crate::render::io::Staged, id: &str, chart: &Chart
             let drawn = catch_unwind(AssertUnwindSafe(|| -> std::result::Result<(), String> {
                 let root = BitMapBackend::new(tmp, (WIDTH, HEIGHT)).into_drawing_area();
                 root.fill(&WHITE).map_err(msg)?;
-                let (x0, x1) = plan.x;
-                if plan.x_log {
-                    draw_chart(&root, chart, &plan, (x0..x1).log_scale())?;
+                let areas = if chart.panel.is_some() {
+                    let (upper, lower) =
+                        root.split_vertically((f64::from(HEIGHT) * (1.0 - PANEL_SHARE)).round() as u32);
+                    vec![upper, lower]
                 } else {
-                    draw_chart(&root, chart, &plan, x0..x1)?;
+                    vec![root.clone()]
+                };
+                for ((area, c), plan) in areas.iter().zip(chart.panels()).zip(&plans) {
+                    let (x0, x1) = plan.x;
+                    if plan.x_log {
+                        draw_chart(area, c, plan, (x0..x1).log_scale())?;
+                    } else {
+                        draw_chart(area, c, plan, x0..x1)?;
+                    }
                 }
                 root.present().map_err(|e| format!("cannot write {}: {e}", tmp.display()))
                 // `root` (and the backend) is dropped here, before the rename.

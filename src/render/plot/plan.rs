@@ -150,5 +150,5 @@ impl Plan {
 /// ranges the chart is drawn with and are cut off; an error for a chart [`super::render_png`]
 /// refuses.
 pub fn clipped_points(chart: &Chart) -> std::result::Result<usize, String> {
-    Ok(Plan::new(chart)?.clipped(chart))
+    chart.panels().into_iter().map(|c| Ok(Plan::new(c)?.clipped(c))).sum()
 }
