@@ -60,7 +60,7 @@ fn labels_agree_with_signs_across_points_angles_and_spins() {
                     assert_eq!(res.v2_n.signum(), res.e_a.signum(), "{case}: v2_n = e_A v_n");
                     // the convention of the spin is written where it is printed
                     assert!(line(&text, "spin_out").contains("topspin relative to the ball's incoming motion"));
-                    assert!(text.contains(&format!("azimuth {azimuth} deg")) && text.contains("mu 0.4"), "{text}");
+                    assert!(text.contains(&format!("azimuth-deg {azimuth} deg")) && text.contains("mu 0.4"), "{text}");
                     // the CSV names what the impact was run at, with these values
                     let csv = result_csv(&p, &res);
                     let mut rows = csv.lines();

@@ -26,7 +26,7 @@ use std::sync::Mutex;
 
 use clap::CommandFactory;
 use cli::overrides::KeySet;
-use racket_impact::params::spec::{UsedWhen, Values};
+use racket_impact::params::spec::{Heading, UsedWhen, Values};
 use racket_impact::params::{keys, used, Overrides, Params};
 
 /// What a run produced: its exit code and everything a user sees of it.
@@ -764,4 +764,34 @@ fn every_parameter_flag_is_under_its_declared_heading_and_says_when_it_is_used()
         }
     }
     assert!(checked > 100, "only {checked} parameter flags");
+}
+
+#[test]
+fn every_parameter_flag_is_printed_under_its_declared_heading() {
+    // the help as clap prints it: each `--KEY <KEY>` line in the section its row names, and the
+    // sections in the order of Heading::ALL
+    let mut cmd = cli::Cli::command();
+    cmd.build();
+    let mut checked = 0;
+    for command in cmd.get_subcommands_mut() {
+        let help = command.render_help().to_string();
+        let mut section = "";
+        let mut order: Vec<&str> = Vec::new();
+        for line in help.lines() {
+            if !line.starts_with(' ') && line.ends_with(':') {
+                section = line.trim_end_matches(':');
+                order.push(section);
+                continue;
+            }
+            let Some(flag) = line.trim_start().strip_prefix("--") else { continue };
+            let Some(spec) = keys::find(flag.split([' ', '=']).next().unwrap_or_default()) else { continue };
+            assert_eq!(section, spec.heading.title(), "{} --{}:\n{help}", command.get_name(), spec.key);
+            checked += 1;
+        }
+        let headings: Vec<&str> =
+            order.iter().copied().filter(|o| Heading::ALL.iter().any(|h| h.title() == *o)).collect();
+        let expected: Vec<&str> = Heading::ALL.iter().map(|h| h.title()).filter(|t| headings.contains(t)).collect();
+        assert_eq!(headings, expected, "{}", command.get_name());
+    }
+    assert!(checked > 100, "only {checked} parameter flags printed");
 }

@@ -338,7 +338,7 @@ fn push(column: &mut Column, cell: &Cell<'_>) {
     match (column, *cell) {
         (Column::Numbers(v), Cell::Number(x)) => v.push(x),
         (Column::Numbers(v), Cell::Given(t)) => {
-            v.push(racket_impact::params::spec::parse_number(t).unwrap_or(f64::NAN))
+            v.push(racket_impact::params::number::parse_number(t).unwrap_or(f64::NAN))
         }
         (Column::Counts(v), Cell::Given(t)) => v.push(t.trim().parse().unwrap_or(-1)),
         (Column::Flags(v), Cell::Flag(f)) => v.push(u8::from(f)),

@@ -139,7 +139,7 @@ pub fn run(a: CalibrateArgs) -> Result<()> {
         let bad = || Error::invalid("range", text, "give KEY=LO:HI, e.g. kt=1e4:1e6");
         let (key, span) = text.split_once('=').ok_or_else(bad)?;
         let (lo, hi) = span.split_once(':').ok_or_else(bad)?;
-        let number = |s: &str| racket_impact::params::spec::parse_number(s.trim()).map_err(|_| bad());
+        let number = |s: &str| racket_impact::params::number::parse_number(s.trim()).map_err(|_| bad());
         ranges.push((key.trim().to_string(), (number(lo)?, number(hi)?)));
     }
     let mut params = Vec::new();

@@ -112,7 +112,7 @@ pub fn diagnostics_json(diagnostics: &[Diagnostic]) -> Result<serde_json::Value>
 /// The clap value parser of every number option that is not a parameter flag (those read
 /// through the same function): a number as written, refused where it does not fit an f64.
 pub fn number(text: &str) -> std::result::Result<f64, String> {
-    racket_impact::params::spec::parse_number(text).map_err(str::to_string)
+    racket_impact::params::number::parse_number(text).map_err(str::to_string)
 }
 
 /// Output format.

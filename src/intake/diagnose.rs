@@ -25,7 +25,7 @@ pub fn impact(params: &Params, r: &ImpactResult) -> Vec<Diagnostic> {
     if r.tangential_chatter {
         out.push(Diagnostic::new(
             Kind::BeyondModel,
-            "tangential",
+            keys::TANGENTIAL.key,
             "the ball sat on the edge between gripping at the friction limit and sliding, and the switch chattered until \
              it was cut short: the spin and slip fraction hang on the solver's step there (fd, the reference, and modal \
              can part by about 1e-3; SPEC.md section 6, Known limit)",
@@ -59,7 +59,7 @@ pub fn parameters<'a>(params: impl IntoIterator<Item = &'a Params>, skip: &[&str
         });
         let density = crate::racket::density_warning(&p.racket).map(|s| Diagnostic::new(Kind::Unusual, "density", s));
         let string = crate::params::strings::missing_data_note(&p.oblique)
-            .map(|s| Diagnostic::new(Kind::MissingData, "string", s));
+            .map(|s| Diagnostic::new(Kind::MissingData, keys::STRING.key, s));
         for d in unusual.chain(frequency).chain(density).chain(string) {
             if !skip.contains(&d.field.as_str()) && !out.iter().any(|o| o.field == d.field) {
                 out.push(d);

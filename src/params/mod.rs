@@ -31,6 +31,7 @@ pub mod drop_test;
 pub mod inputs;
 pub mod keys;
 pub mod limits;
+pub mod number;
 pub mod numerics;
 pub mod oblique;
 pub mod overrides;

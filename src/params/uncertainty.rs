@@ -65,7 +65,7 @@ impl Dist {
         let number = |s: &str, what: &str| -> Result<f64> {
             // (as a flag's value: a number too small or too large for an f64 is refused as
             // written, not taken as 0 or inf)
-            match crate::params::spec::parse_number(s) {
+            match crate::params::number::parse_number(s) {
                 Ok(v) if v.is_finite() => Ok(v),
                 Err(why) if s.trim().parse::<f64>().is_ok() => {
                     Err(Error::invalid(field, text, format!("{what} {why} ({shape})")))

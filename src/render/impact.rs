@@ -4,66 +4,16 @@ use std::path::Path;
 
 use crate::error::Result;
 use crate::numfmt::fmt_sig;
+use crate::params::spec::{Heading, Values};
 use crate::params::{keys, Params};
 use crate::render::table::{Table, Value};
 use crate::solve::outcome::TEXT_ORDER;
 use crate::solve::{ImpactResult, SeriesRow};
 
-/// The result as `name value unit` lines, with the impact it describes on top.
+/// The result as `name value unit` lines, with the impact it describes on top ([`echo`]).
 pub fn result_text(params: &Params, r: &ImpactResult) -> String {
     let p = params;
-    let mut s = format!(
-        "impact: x = {} m (force at {:.4} m, {} load, N = {}), r = {} m, v1 = {} m/s\n\
-         racket: L = {} m, M = {} kg, EI = {} N m^2, Ix = {} kg m^2; strings ks = {} N/m; \
-         ball mb = {} kg, k1 = {} N/m, p = {}\n",
-        fmt_sig(p.impact.x, 6),
-        r.x_load_m,
-        p.numerics.load.name(),
-        p.numerics.segments,
-        fmt_sig(p.impact.r, 6),
-        fmt_sig(p.impact.v1, 6),
-        fmt_sig(p.racket.length, 6),
-        fmt_sig(p.racket.mass, 6),
-        fmt_sig(p.racket.ei, 6),
-        fmt_sig(p.racket.ix, 6),
-        fmt_sig(p.strings.ks, 6),
-        fmt_sig(p.ball.mass, 6),
-        fmt_sig(p.ball.k1, 6),
-        fmt_sig(p.ball.p, 6)
-    );
-    if p.variants != crate::params::Variants::default() {
-        s.push_str(&format!("model: {}\n", p.variants.label()));
-    }
-    if !p.oblique.is_normal() {
-        let o = &p.oblique;
-        s.push_str(&format!(
-            "oblique: angle {} deg from the normal, azimuth {} deg, spin {} rpm (> 0: topspin relative to the incoming motion along the strings), mu {}, kt {} N/m, ball R {} m, I = {} m_b R^2\n",
-            fmt_sig(o.angle_deg, 6),
-            fmt_sig(o.azimuth_deg, 6),
-            fmt_sig(o.spin_rpm, 6),
-            fmt_sig(o.mu, 6),
-            fmt_sig(o.kt, 6),
-            fmt_sig(o.ball_radius, 6),
-            fmt_sig(o.ball_inertia_factor, 6)
-        ));
-        // the law, with only the parameters it uses (those declared as used under some laws)
-        let mut used: Vec<String> = law_parameters()
-            .filter(|spec| crate::params::used::unused(spec, p).is_none())
-            .filter_map(|spec| {
-                let unit = if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) };
-                Some(format!("{} {}{unit}", spec.key, fmt_sig(keys::value_number(spec.key, p)?, 6)))
-            })
-            .collect();
-        if o.mu_scale != 1.0 {
-            let scaled = format!("sliding mu {}", fmt_sig(o.sliding_mu(), 6));
-            used.insert(0, format!("{} {}: {scaled}", keys::MU_SCALE.key, fmt_sig(o.mu_scale, 6)));
-        }
-        if let Some(e) = crate::params::strings::entry(o.string) {
-            used.push(format!("{} {}", keys::STRING.key, e.name));
-        }
-        let used = if used.is_empty() { String::new() } else { format!(" ({})", used.join(", ")) };
-        s.push_str(&format!("tangential: {}{used}\n", o.tangential.name()));
-    }
+    let mut s = echo(p, r);
     let held = p.variants.grip == crate::params::Grip::Hand;
     for field in TEXT_ORDER {
         let Some(text) = field.text else { continue };
@@ -92,13 +42,42 @@ pub fn result_text(params: &Params, r: &ImpactResult) -> String {
     s
 }
 
-/// The parameters only some tangential laws use (their declaration's `used_when` names the
-/// law), in the order of their declaration.
-fn law_parameters() -> impl Iterator<Item = &'static crate::params::spec::ParamSpec> {
-    use crate::params::spec::UsedWhen;
-    keys::ALL
-        .iter()
-        .filter(|s| matches!(s.used_when, UsedWhen::In(selector, _) if selector.key == keys::TANGENTIAL.key))
+/// The impact `params` describes, one line a help heading ([`Heading`], in the help's order):
+/// each parameter this impact uses ([`crate::params::used`]), as `key value unit`, in the order
+/// of the declaration (`racket: ei 150 N m^2, mass 0.34 kg, ...`); the impact line ends with
+/// where the force acts (`(force at 0.0910 m)`), an oblique line with a friction scale with
+/// the sliding ball's friction (`(sliding mu 0.3)`). A parameter the impact does not use is not
+/// echoed (a value given for it was noted or refused).
+pub fn echo(params: &Params, r: &ImpactResult) -> String {
+    let mut s = String::new();
+    for heading in Heading::ALL {
+        let used: Vec<String> = keys::ALL
+            .iter()
+            .filter(|spec| spec.heading == heading && crate::params::used::unused(spec, params).is_none())
+            .filter_map(|spec| {
+                let value = match keys::value_number(spec.key, params) {
+                    Some(v) if !matches!(spec.values, Values::Choice(_)) => fmt_sig(v, 6),
+                    _ => keys::value_text(spec.key, params)?,
+                };
+                let unit =
+                    if spec.unit.is_empty() || value == "auto" { String::new() } else { format!(" {}", spec.unit) };
+                Some(format!("{} {value}{unit}", spec.key))
+            })
+            .collect();
+        if used.is_empty() {
+            continue;
+        }
+        // what the line's values come to where that is not one of them: where the force acts, the
+        // friction of the sliding ball under a scale
+        let o = &params.oblique;
+        let remark = match heading {
+            Heading::Impact => format!(" (force at {:.4} m)", r.x_load_m),
+            Heading::Oblique if o.mu_scale != 1.0 => format!(" (sliding mu {})", fmt_sig(o.sliding_mu(), 6)),
+            _ => String::new(),
+        };
+        s.push_str(&format!("{}: {}{remark}\n", heading.title().to_lowercase(), used.join(", ")));
+    }
+    s
 }
 
 /// Why a field of an oblique or spinning impact is undefined (NaN), in its text line.

@@ -92,7 +92,7 @@ impl FdModel {
             Some(dt) => {
                 if dt >= dt_limit {
                     return Err(Error::invalid(
-                        "dt",
+                        crate::params::keys::DT.key,
                         dt,
                         format!("time step must be below the stability limit 2/omega_max = {dt_limit:.4e} s"),
                     ));
@@ -110,7 +110,7 @@ impl FdModel {
         if !(dt.is_finite() && dt > 0.0 && f1_hz.is_finite() && f1_hz > 0.0 && work <= MAX_NODE_STEPS) {
             if let Some(user_dt) = params.numerics.dt {
                 return Err(Error::invalid(
-                    "dt",
+                    crate::params::keys::DT.key,
                     user_dt,
                     format!(
                         "time step is so small that the run needs about {steps:.2e} steps on {} nodes \

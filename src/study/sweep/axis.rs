@@ -3,7 +3,8 @@
 //! `start:stop:count:log`, expanded into one [`Axis`] of values.
 
 use crate::error::{Error, Result};
-use crate::params::spec::{parse_number, Values};
+use crate::params::number::parse_number;
+use crate::params::spec::Values;
 use crate::params::{keys, limits, Overrides};
 
 /// One varied parameter and its values (as text, parsed like a flag).
