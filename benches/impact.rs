@@ -26,7 +26,7 @@ fn paper_impact(c: &mut Criterion) {
     let prepared = racket_impact::solve::modal::ModalModel::new(&modal).unwrap();
     c.bench_function("fig4_impact_n39_node_modal_prepared", |b| b.iter(|| prepared.run().unwrap()));
     // the same impact arriving at 30 deg with 2000 rpm of topspin: the tangential law (the
-    // default, `loss`) follows the normal force piece by piece
+    // default law with the calibrated kt) follows the normal force piece by piece
     let mut oblique = modal;
     oblique.oblique.angle_deg = 30.0;
     oblique.oblique.spin_rpm = 2000.0;

@@ -149,3 +149,28 @@ fn bad_input_is_one_line_with_exit_2() {
         assert!(!std::path::Path::new(&png).exists(), "{args:?} wrote the plot");
     }
 }
+
+/// The defaults are the calibration's choice: the law and `kt` of the row the committed
+/// `figures/spin_calibration.csv` marks chosen at the rows' 40 deg (`make figures` regenerates
+/// it, and leaves git clean only when it is current), `kt` to its three significant digits and
+/// inside its 95 % interval. A change of a law or of a measured input that moves the choice
+/// fails here until the defaults follow (SPEC.md section 7).
+#[test]
+fn the_defaults_are_the_calibration_s_choice() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/figures/spin_calibration.csv");
+    let mut rdr = csv::Reader::from_path(path).unwrap();
+    let headers = rdr.headers().unwrap().clone();
+    let at = |name: &str| headers.iter().position(|h| h == name).unwrap();
+    let chosen: Vec<csv::StringRecord> =
+        rdr.records().map(|r| r.unwrap()).filter(|r| &r[at("chosen")] == "1" && &r[at("angle_deg")] == "40").collect();
+    assert_eq!(chosen.len(), 1, "one choice at 40 deg");
+    let r = &chosen[0];
+    let defaults = racket_impact::params::Oblique::default();
+    assert_eq!(&r[at("law")], defaults.tangential.name());
+    assert_eq!(&r[at("fitted")], "kt", "the default fits kt alone: mu-scale stays 1");
+    assert_eq!(defaults.mu_scale, 1.0);
+    let kt: f64 = r[at("kt_n_per_m")].parse().unwrap();
+    let (lo, hi): (f64, f64) = (r[at("kt_lo_n_per_m")].parse().unwrap(), r[at("kt_hi_n_per_m")].parse().unwrap());
+    assert!((defaults.kt / kt - 1.0).abs() < 5e-3, "default kt {} against the fit {kt}", defaults.kt);
+    assert!(lo <= defaults.kt && defaults.kt <= hi, "[{lo}, {hi}]");
+}

@@ -108,6 +108,10 @@ fn sensitivity() {
 fn validation_spin() {
     check("validation_spin");
 }
+#[test]
+fn spin_calibration() {
+    check("spin_calibration");
+}
 
 #[test]
 fn every_registered_experiment_has_a_golden_test_and_committed_outputs() {

@@ -64,6 +64,7 @@ pub mod position;
 pub mod robustness;
 pub mod sensitivity;
 pub mod speeds;
+pub mod spin_calibration;
 pub mod topspin_forehand;
 pub mod validation_spin;
 pub mod variant_grip;
@@ -128,6 +129,7 @@ pub fn registry() -> Vec<Experiment> {
         topspin_forehand::EXPERIMENT,
         robustness::EXPERIMENT,
         sensitivity::EXPERIMENT,
+        spin_calibration::EXPERIMENT,
         validation_spin::EXPERIMENT,
     ]
 }

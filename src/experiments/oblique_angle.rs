@@ -3,7 +3,7 @@
 //! ball spin and rebound angle"). This answers it on the paper's racket: a ball without spin at
 //! 30 m/s on the centre of the strings (x 15.8 cm, r 0), its in-plane direction across the face
 //! (azimuth 90 deg), incidence angle 0-70 deg from the normal, at k_s 2e4 and 4e4 N/m, with the
-//! default friction `mu = 0.4` and tangential stiffness `k_t = 2e4 N/m` (SPEC.md section 6).
+//! default friction `mu = 0.4`, tangential stiffness `k_t` and tangential law (SPEC.md section 6).
 //!
 //! Model: the normal impact is the paper's at the normal speed `v1 cos(angle)`, so e_A does not
 //! change with the angle (the scale law); the tangential grip-slip law (model::tangential)
@@ -130,7 +130,10 @@ fn chart(ctx: &Context, t: &Table) -> Chart {
         line("angle of incidence (mirror rebound)", vec![0.0, 70.0], vec![0.0, 70.0], 0),
         LineStyle::Faint,
     ));
-    let law = ctx.paper_params(CENTRE_X, KS[0]).oblique.tangential;
+    let (law, kt) = {
+        let o = ctx.paper_params(CENTRE_X, KS[0]).oblique;
+        (o.tangential, o.kt)
+    };
     if let Some((a, spin, note)) = spin_about_zero(t, law) {
         curves.push(styled(on_right(line(note, a, spin, 3)), LineStyle::Points));
     }
@@ -142,7 +145,8 @@ fn chart(ctx: &Context, t: &Table) -> Chart {
     Chart {
         title: format!(
             "Oblique impact at the centre (x 15.8 cm): 30 m/s across the face (azimuth 90 deg), \
-             no incoming spin, mu 0.4, kt 2e4 N/m, {} law",
+             no incoming spin, mu 0.4, kt {} N/m, {} law",
+            crate::numfmt::sig(kt, 3),
             law.name()
         ),
         x_label: "incidence angle from the normal (deg)".into(),

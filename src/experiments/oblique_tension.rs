@@ -99,7 +99,7 @@ const SPIN_COLORS: [usize; 2] = [1, 6];
 /// See [`SPIN_COLORS`].
 const ANGLE_COLORS: [usize; 2] = [3, 5];
 
-fn chart(_: &Context, t: &Table) -> Chart {
+fn chart(ctx: &Context, t: &Table) -> Chart {
     // One colour per quantity and incidence angle (spin warm, rebound angle cool), one line
     // style per friction law (named in the title); the spin axis (left) puts its curves in the
     // upper half, the rebound-angle axis (right) in the lower half, so none covers another. The
@@ -131,7 +131,10 @@ fn chart(_: &Context, t: &Table) -> Chart {
         title: format!(
             "Spin and rebound angle vs tension, solid mu {MU_60}, dashed mu {MU_60} T / 60 lb: 30 m/s, centre, azimuth 90 deg, no spin in"
         ),
-        x_label: "string tension (lb); ks = 4e4 N/m x T / 60 lb; kt 2e4 N/m".into(),
+        x_label: format!(
+            "string tension (lb); ks = 4e4 N/m x T / 60 lb; kt {} N/m",
+            crate::numfmt::sig(ctx.paper_params(CENTRE_X, 4.0e4).oblique.kt, 3)
+        ),
         y_label: "outgoing spin (rpm)".into(),
         y2_label: Some("rebound angle from the normal (deg)".into()),
         x_log: false,

@@ -72,10 +72,10 @@ choice_enum! {
 macro_rules! tangential_mechanisms {
     ($then:ident) => {
         $then! {
-            Loss = "loss" loss::Loss: "Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex; the default)",
+            Loss = "loss" loss::Loss: "Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)",
             Offset = "offset" offset::Offset: "Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin",
             Bed = "bed" bed::Bed: "Elastic plus strings that slide sideways over each other against string-to-string friction and snap back",
-            Radius = "radius" radius::Radius: "Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)",
+            Radius = "radius" radius::Radius: "Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)",
         }
     };
 }
@@ -88,10 +88,10 @@ macro_rules! tangential_law {
         choice_enum! {
             /// The tangential contact law of an oblique or spinning impact (SPEC.md section 6): the
             /// elastic grip-slip law, one mechanism of [`crate::model::tangential`] on top of it, or all of them.
-            /// Default `loss`: of the laws compared with measurement (`validation_spin`) the one closer
-            /// than `elastic` on the spin table (both angle readings), the hand-held ratio and the
-            /// grip-stop angle, and a tie on the tour forehand (REPORT.md, "Against measurement").
-            TangentialLaw (default Loss) {
+            /// Default `radius`: of every law fitted on the calibration rows of data/measured (with
+            /// `kt`, and with `kt` and `mu-scale`), the one with the least leave-one-string-out error
+            /// (experiment `spin_calibration`; REPORT.md, "Calibrated where nobody measured").
+            TangentialLaw (default Radius) {
                 Elastic = "elastic": "The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)",
                 $($variant = $key: $help,)+
                 Physical = "physical": "All four mechanisms",

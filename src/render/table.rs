@@ -53,6 +53,18 @@ impl From<f64> for Value {
     }
 }
 
+impl Value {
+    /// A number where it is finite, else an empty field (an undefined value: a ratio over a
+    /// near-zero denominator, an interval not computed).
+    pub fn finite_or_empty(x: f64) -> Self {
+        if x.is_finite() {
+            Value::Num(x)
+        } else {
+            Value::Text(String::new())
+        }
+    }
+}
+
 impl From<i64> for Value {
     fn from(i: i64) -> Self {
         Value::Int(i)
