@@ -83,6 +83,11 @@ fn main() -> ExitCode {
     let outcome = cli::run(cli.command);
     match outcome {
         Ok(()) => ExitCode::SUCCESS,
+        Err(_) if racket_impact::render::temps::interrupted() => loop {
+            // the interrupt's handler exits with the signal's status (130, 143, 129) once it has
+            // cleaned up; an error its clean-up caused here is not the run's
+            std::thread::park();
+        },
         Err(e) => {
             cli::common::stderr_line(&format!("error: {e}"));
             ExitCode::from(2)

@@ -20,6 +20,17 @@ fn staged() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
     STAGED.lock().unwrap_or_else(|e| e.into_inner())
 }
 
+/// Set once an interrupt's clean-up has begun ([`remove_staged`]): the run is ending with the
+/// signal's status, and an error the clean-up causes in the run (a directory removed under it)
+/// is not reported ([`interrupted`]).
+static INTERRUPTED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Whether an interrupt is being handled: the command line then waits for the handler to exit
+/// with the signal's status instead of reporting an error of its own.
+pub fn interrupted() -> bool {
+    INTERRUPTED.load(std::sync::atomic::Ordering::SeqCst)
+}
+
 /// The directories a run has created for its outputs (`figures --out new/dir`), outermost first:
 /// an interrupted or failed run removes those it leaves empty.
 static CREATED_DIRS: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
@@ -55,6 +66,7 @@ pub(crate) fn unregister(path: &Path) {
 /// empty (for an interrupted run, which then exits: no directory is created after this), after
 /// any set of outputs being renamed into place is whole. Returns how many files were removed.
 pub fn remove_staged() -> usize {
+    INTERRUPTED.store(true, std::sync::atomic::Ordering::SeqCst);
     let _whole = PUBLISHING.lock().unwrap_or_else(|e| e.into_inner());
     let mut staged = staged();
     let removed = staged.iter().filter(|p| std::fs::remove_file(p).is_ok()).count();
