@@ -374,7 +374,7 @@ fn every_accepted_ball_passes_the_energy_check() {
 /// strings (measured about 3). Pinned as computed (fd), not as measured.
 #[test]
 fn the_dynamic_stiffness_at_the_drop_gives_what_the_model_computes() {
-    use racket_impact::model::tangential::radius::Compression;
+    use racket_impact::model::tangential::compression::Compression;
     use racket_impact::params::oblique::{kdyn_from_drop, BALL_KDYN};
     use racket_impact::params::{drop_speed, DROP_HEIGHT_100_IN};
     let v = drop_speed(DROP_HEIGHT_100_IN);

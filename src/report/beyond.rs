@@ -5,7 +5,7 @@
 
 use crate::error::Result;
 use crate::experiments::{spin_calibration, validation_spin, Context, CENTRE_X};
-use crate::model::tangential::radius::Compression;
+use crate::model::tangential::compression::Compression;
 use crate::numfmt::fmt_sig;
 use crate::params::{drop_speed, ks_from_tension_lb, TangentialLaw, DROP_HEIGHT_100_IN};
 use crate::render::table::{Table, Value};

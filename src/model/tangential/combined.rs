@@ -20,11 +20,11 @@
 //! mode) is located on the substep. The dissipated energies are integrated with the state, so
 //! the ledger `KE_in = KE_out + k_t s^2/2 + springs + losses` closes to the integration error.
 
+use super::compression::Compression;
 use super::elastic::GripSlip;
 use super::mechanism::{inv_red, At, Ball, Drive, Interface, LossField, Mechanism, Pace, Path, Sizes};
 use super::mechanism::{GRIP_SUBSTEP, SUBSTEP};
 use super::piece::ForcePiece;
-use super::radius::Compression;
 use super::stepper::{self, Switched};
 use crate::params::TangentialLaw;
 

@@ -25,8 +25,8 @@
 //! compliances in series with the ball's spring would make the path a chain to solve, which the
 //! combined law does not do.
 
+use super::compression::Compression;
 use super::elastic::GripSlip;
-use super::radius::Compression;
 use crate::params::Params;
 
 /// Substep length as a fraction of the time scale of a relaxation through the damper.

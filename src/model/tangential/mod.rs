@@ -45,6 +45,7 @@
 
 pub mod bed;
 pub mod combined;
+pub mod compression;
 pub mod elastic;
 pub mod loss;
 pub mod mechanism;

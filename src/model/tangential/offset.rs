@@ -15,9 +15,9 @@
 //! without friction the ball's spin is left alone.
 
 use super::combined::sign0;
+use super::compression::Compression;
 use super::elastic::GripSlip;
 use super::mechanism::{At, Ball, Drive, LossField, Mechanism, Sizes};
-use super::radius::Compression;
 
 /// Tabor's moment arm of the normal force, m, for a contact circle of radius `a` (m) and the
 /// hysteresis loss fraction `alpha_h`.

@@ -2,10 +2,10 @@
 //! progress ([`Contact`]), and what that contact leaves at separation ([`Separation`]).
 
 use super::combined::{Combined, CombinedLaw, Losses};
+use super::compression::Compression;
 use super::elastic::{Elastic, GripSlip};
 use super::mechanism::Sizes;
 use super::piece::ForcePiece;
-use super::radius::Compression;
 use crate::model::beam::Beam;
 use crate::params::{Params, TangentialLaw};
 
