@@ -131,8 +131,9 @@ pub fn compared(ctx: &Context) -> Result<Vec<Compared>> {
     let all = |_: &Measured| true;
     let validation = |m: &Measured| m.role == Some(Role::Validation);
     let m015 = &measured::rows(&["M015"])?[0];
-    rows.push(Compared {
-        quantity: "spin_ratio_polyester_over_nylon",
+    // the measured M015 ratio beside the model's, at 40 deg here and at 50 deg below
+    let m015_row = |quantity: &'static str, model: Vec<f64>| Compared {
+        quantity,
         string: "polyester (5) / nylon (2)".into(),
         tension: Value::Text("52 and 62".into()),
         measured: m015.value,
@@ -142,8 +143,9 @@ pub fn compared(ctx: &Context) -> Result<Vec<Compared>> {
         role: role(m015),
         held_out: f64::NAN,
         u: nan4,
-        model: (0..LAWS.len()).map(|l| ratio_of(&all, l)).collect(),
-    });
+        model,
+    };
+    rows.push(m015_row("spin_ratio_polyester_over_nylon", (0..LAWS.len()).map(|l| ratio_of(&all, l)).collect()));
     let held = measured_ratio(&validation);
     rows.push(Compared {
         quantity: "spin_ratio_polyester_over_nylon_validation",
@@ -162,21 +164,12 @@ pub fn compared(ctx: &Context) -> Result<Vec<Compared>> {
     // quantity of its own (the V&V budget takes the two readings as its u_angle)
     let at_50: Vec<Vec<f64>> =
         rows.iter().filter(|c| c.quantity == "spin_out_rpm_50deg").map(|c| c.model.clone()).collect();
-    rows.push(Compared {
-        quantity: "spin_ratio_polyester_over_nylon:at_50deg",
-        string: "polyester (5) / nylon (2)".into(),
-        tension: Value::Text("52 and 62".into()),
-        measured: m015.value,
-        unit: "ratio",
-        spread: (m015.value, m015.value),
-        source: m015.id.clone(),
-        role: role(m015),
-        held_out: f64::NAN,
-        u: nan4,
-        model: (0..LAWS.len())
+    rows.push(m015_row(
+        "spin_ratio_polyester_over_nylon:at_50deg",
+        (0..LAWS.len())
             .map(|l| vv::poly_over_nylon(&table, &at_50.iter().map(|m| m[l]).collect::<Vec<_>>(), all))
             .collect(),
-    });
+    ));
     // hand-held over head-clamped (M016)
     let m016 = &measured::rows(&["M016"])?[0];
     let mut model = Vec::new();
