@@ -56,7 +56,9 @@ python-stub: build
 	PYTHONPATH=$(CURDIR)/target/python $(PYTHON) -m racket_impact._stub > python/racket_impact/__init__.pyi
 
 # The string-face maps (CSV + PNG + JSON each; tests/map.rs checks the committed ones against
-# these lines).
+# these lines). The report of this build is kept in target/tmp/cache (src/cli/cache.rs), where
+# the tests' runs of the binary find it instead of computing it again.
+figures: export RACKET_IMPACT_CACHE := $(CURDIR)/target/tmp/cache
 figures: build
 	$(BIN) figures --out figures
 	$(BIN) map --racket paper-125hz --load node --quantity power --out figures/map_paper_power.csv
@@ -64,6 +66,7 @@ figures: build
 	$(BIN) map --racket tweener --quantity power --compare-tension-lb 50,60 --out figures/map_tweener_50_vs_60lb.csv
 	$(BIN) report --summary
 
+report: export RACKET_IMPACT_CACHE := $(CURDIR)/target/tmp/cache
 report: build
 	$(BIN) report --summary
 

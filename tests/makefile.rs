@@ -6,6 +6,8 @@
 //! subcommand; the commands are read as commands (their words), so a checkout whose path
 //! holds "nextest" or "--release" proves nothing either way.
 
+mod common;
+
 use std::path::Path;
 use std::process::Command;
 
@@ -131,11 +133,7 @@ fn make_figures_ends_with_one_line_for_the_report() {
     let last: Vec<&str> = plan.lines().last().unwrap_or_default().split_whitespace().collect();
     assert_eq!(last.get(1..), Some(&["report", "--summary"][..]), "{plan}");
     let dir = tempfile::tempdir().unwrap();
-    let o = Command::new(env!("CARGO_BIN_EXE_racket-impact"))
-        .args(["report", "--summary", "--out", "r.md"])
-        .current_dir(dir.path())
-        .output()
-        .unwrap();
+    let o = common::bin().args(["report", "--summary", "--out", "r.md"]).current_dir(dir.path()).output().unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let printed = String::from_utf8_lossy(&o.stdout);
     assert_eq!(printed.lines().count(), 1, "{printed}");
