@@ -253,7 +253,11 @@ pub fn computations(claims: &[Claim]) -> Result<Vec<PaperClaim>> {
 pub fn evaluate_all(claims: &[Claim], base: &Context) -> Result<Vec<Ours>> {
     use rayon::prelude::*;
     let base = base.clone().remembering();
-    computations(claims)?.into_par_iter().map(|pc| evaluate(pc, &base)).collect()
+    let watch = crate::control::current();
+    computations(claims)?
+        .into_par_iter()
+        .map(|pc| crate::control::within(watch.as_ref(), || evaluate(pc, &base)))
+        .collect()
 }
 
 /// A claim's numbers on `base` (its [`Scheme`] the paper's): the value, and where the
