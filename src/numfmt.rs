@@ -5,7 +5,8 @@
 //!   [`shown`] (a value given as text, as an error message shows it);
 //! - in tables, CSV files, plots and the report: [`fmt_sig`] (C's `%g` without trailing zeros);
 //! - in the exact columns of a sweep and of the uncertainty table: [`exact`] and
-//!   [`exact_finite`] (the shortest text that reads back as the same `f64`).
+//!   [`exact_finite`] (the shortest text that reads back as the same `f64`);
+//! - a count in prose: [`in_words`] ("four mechanisms", counted, never typed).
 
 /// The digits a value in an error message is shown to ([`shown`]): enough to tell a refused
 /// value from the bound beside it, not the binary noise of a computed one
@@ -165,9 +166,21 @@ pub fn exact_finite(v: f64) -> String {
     }
 }
 
+/// A count as prose writes it: in words up to twelve (`four`), in digits above.
+pub fn in_words(n: usize) -> String {
+    const WORDS: [&str; 13] =
+        ["no", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve"];
+    WORDS.get(n).map_or_else(|| n.to_string(), |w| w.to_string())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn counts_in_words_up_to_twelve_then_digits() {
+        assert_eq!([in_words(0), in_words(4), in_words(12), in_words(13)], ["no", "four", "twelve", "13"]);
+    }
 
     #[test]
     fn messages_round_then_write_the_shortest_form() {

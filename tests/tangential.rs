@@ -7,14 +7,7 @@ use racket_impact::solve::{simulate, ImpactResult};
 
 const RPM: f64 = std::f64::consts::PI / 30.0;
 const SOLVERS: [SolverKind; 2] = [SolverKind::Fd, SolverKind::Modal];
-const LAWS: [TangentialLaw; 6] = [
-    TangentialLaw::Elastic,
-    TangentialLaw::Loss,
-    TangentialLaw::Offset,
-    TangentialLaw::Bed,
-    TangentialLaw::Radius,
-    TangentialLaw::Physical,
-];
+const LAWS: [TangentialLaw; TangentialLaw::ALL.len()] = TangentialLaw::ALL;
 
 /// The TWU "String Movement and Spin" shot on a frame too heavy to move: 25.03 m/s at 40 deg
 /// across the face with 3820 rpm of backspin, 52 lb (ks = 4e4 x 52/60 N/m), at the centre,

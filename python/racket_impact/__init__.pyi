@@ -401,8 +401,8 @@ def simulate(
         Default: 39.
     load : str [Numerics]
         Load rule: node (the paper's) or hat.
-        ``node``
-        ``hat``
+        ``node``: The paper's scheme: the whole force on the node nearest x (ties go to the higher index)
+        ``hat``: Linear (hat) sharing between the two nodes around x; converges as O(N^-2)
         Default: hat.
     dt : float, s [Numerics]
         Time step, s (must be below the stability limit).
@@ -411,8 +411,8 @@ def simulate(
         Used only with frame = beam and solver = fd.
     solver : str [Numerics]
         Solver: fd (explicit time stepping, the reference) or modal (modal superposition).
-        ``fd``
-        ``modal``
+        ``fd``: Explicit finite differences in time (velocity Verlet), the reference
+        ``modal``: Modal superposition with exact modal propagation and a contact-sized step
         Default: fd.
         Used only with frame = beam.
     frame : str [Racket]
@@ -489,13 +489,13 @@ def simulate(
         Default: 118000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]
-        Tangential contact law: elastic, loss, offset, bed, radius or physical (all four).
+        Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism).
         ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)
         ``offset``: Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin
         ``bed``: Elastic plus strings that slide sideways over each other against string-to-string friction and snap back
         ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)
-        ``physical``: All four mechanisms
+        ``physical``: Every mechanism above at once
         Default: radius.
         Used only for an oblique or spinning ball.
     mu_ss : float [Strings]
@@ -693,8 +693,8 @@ def sweep(
         Default: 39.
     load : str [Numerics]
         Load rule: node (the paper's) or hat.
-        ``node``
-        ``hat``
+        ``node``: The paper's scheme: the whole force on the node nearest x (ties go to the higher index)
+        ``hat``: Linear (hat) sharing between the two nodes around x; converges as O(N^-2)
         Default: hat.
     dt : float, s [Numerics]
         Time step, s (must be below the stability limit).
@@ -703,8 +703,8 @@ def sweep(
         Used only with frame = beam and solver = fd.
     solver : str [Numerics]
         Solver: fd (explicit time stepping, the reference) or modal (modal superposition).
-        ``fd``
-        ``modal``
+        ``fd``: Explicit finite differences in time (velocity Verlet), the reference
+        ``modal``: Modal superposition with exact modal propagation and a contact-sized step
         Default: fd.
         Used only with frame = beam.
     frame : str [Racket]
@@ -781,13 +781,13 @@ def sweep(
         Default: 118000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]
-        Tangential contact law: elastic, loss, offset, bed, radius or physical (all four).
+        Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism).
         ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)
         ``offset``: Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin
         ``bed``: Elastic plus strings that slide sideways over each other against string-to-string friction and snap back
         ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)
-        ``physical``: All four mechanisms
+        ``physical``: Every mechanism above at once
         Default: radius.
         Used only for an oblique or spinning ball.
     mu_ss : float [Strings]
@@ -988,8 +988,8 @@ def face_map(
         Default: 39.
     load : str [Numerics]
         Load rule: node (the paper's) or hat.
-        ``node``
-        ``hat``
+        ``node``: The paper's scheme: the whole force on the node nearest x (ties go to the higher index)
+        ``hat``: Linear (hat) sharing between the two nodes around x; converges as O(N^-2)
         Default: hat.
     frame : str [Racket]
         Frame model: beam (the paper's flexible beam) or rigid (closed-form rigid racket).
@@ -1065,13 +1065,13 @@ def face_map(
         Default: 118000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]
-        Tangential contact law: elastic, loss, offset, bed, radius or physical (all four).
+        Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism).
         ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)
         ``offset``: Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin
         ``bed``: Elastic plus strings that slide sideways over each other against string-to-string friction and snap back
         ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)
-        ``physical``: All four mechanisms
+        ``physical``: Every mechanism above at once
         Default: radius.
         Used only for an oblique or spinning ball.
     mu_ss : float [Strings]
@@ -1292,8 +1292,8 @@ def uncertainty(
         Default: 39.
     load : str [Numerics]
         Load rule: node (the paper's) or hat.
-        ``node``
-        ``hat``
+        ``node``: The paper's scheme: the whole force on the node nearest x (ties go to the higher index)
+        ``hat``: Linear (hat) sharing between the two nodes around x; converges as O(N^-2)
         Default: hat.
     dt : float, s [Numerics]
         Time step, s (must be below the stability limit).
@@ -1302,8 +1302,8 @@ def uncertainty(
         Used only with frame = beam and solver = fd.
     solver : str [Numerics]
         Solver: fd (explicit time stepping, the reference) or modal (modal superposition).
-        ``fd``
-        ``modal``
+        ``fd``: Explicit finite differences in time (velocity Verlet), the reference
+        ``modal``: Modal superposition with exact modal propagation and a contact-sized step
         Default: fd.
         Used only with frame = beam.
     frame : str [Racket]
@@ -1380,13 +1380,13 @@ def uncertainty(
         Default: 118000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]
-        Tangential contact law: elastic, loss, offset, bed, radius or physical (all four).
+        Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism).
         ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)
         ``offset``: Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin
         ``bed``: Elastic plus strings that slide sideways over each other against string-to-string friction and snap back
         ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)
-        ``physical``: All four mechanisms
+        ``physical``: Every mechanism above at once
         Default: radius.
         Used only for an oblique or spinning ball.
     mu_ss : float [Strings]

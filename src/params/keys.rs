@@ -154,7 +154,7 @@ declare_params! {
     KT kt: f64 = "kt" at oblique.kt,
         what "tangential stiffness", unit "N/m", column "kt_n_per_m", within(1.0, 1.0e9),
         under Oblique, Property, used Oblique, usual(5.0e3, 1.0e6);
-    /// Tangential contact law: elastic, loss, offset, bed, radius or physical (all four)
+    /// Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism)
     TANGENTIAL tangential: TangentialLaw = "tangential" at oblique.tangential,
         what "tangential contact law", unit "", column "tangential", choice,
         under Oblique, MethodOption, used Oblique;

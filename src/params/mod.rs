@@ -15,7 +15,8 @@
 //! - [`oblique`]: incidence angle, azimuth, incoming spin, friction (beyond the paper).
 //! - [`drop_test`]: the drop test the ball's values are read from (gravity, the 100-inch height, the
 //!   stiffness a drop's compression implies).
-//! - [`spec`] and [`keys`]: what a declaration is, and the declarations.
+//! - [`spec`] and [`keys`]: what a declaration is, and the declarations; [`choice`]: a parameter
+//!   that takes one of a list of names, declared from that one list.
 //! - [`overrides`]: the `--config` file.
 //! - [`inputs`]: the input files a run has read (no output may replace one).
 //! - [`limits`]: the most work a command accepts (sweep sizes, series rows, comparisons).
@@ -27,6 +28,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::Result;
 
+pub mod choice;
 pub mod drop_test;
 pub mod inputs;
 pub mod keys;

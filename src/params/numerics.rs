@@ -3,87 +3,25 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::choice::choice_enum;
 use super::keys;
-use super::spec::{Choice, FlagValue, Values};
 use crate::error::{Error, Result};
 
 pub use super::spec::{MAX_SEGMENTS, MIN_SEGMENTS};
 
-/// How the contact force is applied to the discrete beam (SPEC.md section 1, Contact).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]
-#[serde(rename_all = "lowercase")]
-pub enum LoadRule {
-    /// The paper's scheme: the whole force on the node nearest `x` (ties go to the higher index).
-    Node,
-    /// Linear (hat) sharing between the two nodes around `x`; converges as O(N^-2).
-    #[default]
-    Hat,
-}
-
-impl LoadRule {
-    /// The name used on the command line and in configs.
-    pub fn name(self) -> &'static str {
-        match self {
-            LoadRule::Node => "node",
-            LoadRule::Hat => "hat",
-        }
+choice_enum! {
+    /// How the contact force is applied to the discrete beam (SPEC.md section 1, Contact).
+    LoadRule (default Hat) {
+        Node = "node": "The paper's scheme: the whole force on the node nearest x (ties go to the higher index)",
+        Hat = "hat": "Linear (hat) sharing between the two nodes around x; converges as O(N^-2)",
     }
 }
 
-impl std::str::FromStr for LoadRule {
-    type Err = Error;
-    fn from_str(s: &str) -> Result<Self> {
-        match s {
-            "node" => Ok(LoadRule::Node),
-            "hat" => Ok(LoadRule::Hat),
-            other => Err(Error::invalid(keys::LOAD.key, other, "must be 'node' or 'hat'")),
-        }
-    }
-}
-
-impl FlagValue for LoadRule {
-    const VALUES: Values = Values::Choice(&[Choice { name: "node", help: None }, Choice { name: "hat", help: None }]);
-    fn parse_flag(_key: &'static str, text: &str) -> Result<Self> {
-        text.trim().parse()
-    }
-}
-
-/// Which solver integrates the impact.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, Default)]
-#[serde(rename_all = "lowercase")]
-pub enum SolverKind {
-    /// Explicit finite differences in time (velocity Verlet), the reference.
-    #[default]
-    Fd,
-    /// Modal superposition with exact modal propagation and a contact-sized step.
-    Modal,
-}
-
-impl SolverKind {
-    /// The name used on the command line and in configs.
-    pub fn name(self) -> &'static str {
-        match self {
-            SolverKind::Fd => "fd",
-            SolverKind::Modal => "modal",
-        }
-    }
-}
-
-impl std::str::FromStr for SolverKind {
-    type Err = Error;
-    fn from_str(s: &str) -> Result<Self> {
-        match s {
-            "fd" => Ok(SolverKind::Fd),
-            "modal" => Ok(SolverKind::Modal),
-            other => Err(Error::invalid(keys::SOLVER.key, other, "must be 'fd' or 'modal'")),
-        }
-    }
-}
-
-impl FlagValue for SolverKind {
-    const VALUES: Values = Values::Choice(&[Choice { name: "fd", help: None }, Choice { name: "modal", help: None }]);
-    fn parse_flag(_key: &'static str, text: &str) -> Result<Self> {
-        text.trim().parse()
+choice_enum! {
+    /// Which solver integrates the impact.
+    SolverKind (default Fd) {
+        Fd = "fd": "Explicit finite differences in time (velocity Verlet), the reference",
+        Modal = "modal": "Modal superposition with exact modal propagation and a contact-sized step",
     }
 }
 

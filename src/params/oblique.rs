@@ -48,7 +48,7 @@ pub struct Oblique {
     /// 2/3).
     pub ball_inertia_factor: f64,
     /// The tangential contact law: `elastic` (the grip-slip law of `model::tangential` alone),
-    /// one mechanism of `model::tangential` on top of it, or `physical` (all four). Default
+    /// one mechanism of `model::tangential` on top of it, or `physical` (every mechanism). Default
     /// `radius` ([`TangentialLaw`]), chosen with [`KT`] on the calibration rows by its
     /// leave-one-string-out error (experiment `spin_calibration`).
     pub tangential: TangentialLaw,

@@ -8,7 +8,7 @@ use std::sync::OnceLock;
 use serde::{Deserialize, Serialize};
 
 use super::spec::FlagValue;
-use super::{Oblique, StringName, TangentialLaw};
+use super::{Oblique, StringName};
 use crate::error::{Error, Result};
 
 /// The table as shipped.
@@ -93,8 +93,8 @@ pub fn all() -> &'static [StringEntry] {
 pub fn missing_data_note(o: &Oblique) -> Option<String> {
     let e = entry(o.string)?;
     (!o.is_normal() && e.friction_from != FrictionFrom::Entry).then(|| {
-        // mu-ss only where the law uses it (bed, physical)
-        let mu_ss = if o.tangential.has(TangentialLaw::Bed) {
+        // mu-ss only where the law uses it (its declaration says which)
+        let mu_ss = if super::used::law_uses(&super::keys::MU_SS, o.tangential) {
             format!(" and mu-ss {} (string/string)", e.mu_ss)
         } else {
             String::new()
@@ -150,6 +150,7 @@ pub fn refuse_if_set(name: StringName, key: &'static str) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::params::TangentialLaw;
 
     #[test]
     fn every_name_has_its_row_and_every_row_its_name() {

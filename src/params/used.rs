@@ -99,6 +99,15 @@ fn selects(selector: &ParamSpec, names: &[&str], current: &str) -> bool {
         && law(current).is_some_and(|l| names.iter().filter_map(|n| law(n)).any(|m| l.has(m)))
 }
 
+/// Whether the tangential law `law` uses the parameter `spec`, by its declaration (`mu-ss`:
+/// a law with a mechanism that names it); a parameter no law selects is used by every law.
+pub(crate) fn law_uses(spec: &ParamSpec, law: TangentialLaw) -> bool {
+    match spec.used_when {
+        UsedWhen::In(selector, names) if selector.key == keys::TANGENTIAL.key => selects(selector, names, law.name()),
+        _ => true,
+    }
+}
+
 /// The first of `specs` that none of the impacts `params` uses, with why the first impact does
 /// not use it (for the impacts of one command: a parameter is used if any of them uses it).
 pub fn first_unused<'a>(specs: &[&'a ParamSpec], params: &[Params]) -> Option<(&'a ParamSpec, Unused)> {

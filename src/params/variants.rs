@@ -2,49 +2,11 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::choice::choice_enum;
 use super::keys;
-use super::spec::{one_of, within, Choice, FlagValue, Values};
+use super::spec::within;
 use super::{Racket, SolverKind};
 use crate::error::{Error, Result};
-
-/// Declares a choice enum from one list: each variant with its config name and what it means
-/// (its doc and its help line), the default; and from that its `ALL`, `CHOICES`, `name` and
-/// flag parsing.
-macro_rules! choice_enum {
-    ($(#[doc = $doc:literal])+ $name:ident (default $default:ident) { $($variant:ident = $key:literal: $help:literal,)+ }) => {
-        $(#[doc = $doc])+
-        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
-        pub enum $name {
-            $(#[doc = $help] #[serde(rename = $key)] $variant,)+
-        }
-
-        impl Default for $name {
-            fn default() -> Self {
-                $name::$default
-            }
-        }
-
-        impl $name {
-            /// Every value, in the order of [`Self::CHOICES`].
-            pub const ALL: [$name; [$($key),+].len()] = [$($name::$variant),+];
-            /// The names on the command line and in configs, with what they mean.
-            pub const CHOICES: &'static [Choice] = &[$(Choice { name: $key, help: Some($help) }),+];
-
-            /// The name used on the command line and in configs.
-            pub fn name(self) -> &'static str {
-                Self::CHOICES[self as usize].name
-            }
-        }
-
-        impl FlagValue for $name {
-            const VALUES: Values = Values::Choice($name::CHOICES);
-            fn parse_flag(key: &'static str, text: &str) -> Result<Self> {
-                let names: Vec<($name, &str)> = $name::ALL.into_iter().map(|v| (v, v.name())).collect();
-                one_of(key, text, &names)
-            }
-        }
-    };
-}
 
 choice_enum! {
     /// How the frame is modelled.
@@ -62,20 +24,23 @@ choice_enum! {
     }
 }
 
-/// The registry of the tangential mechanisms (`crate::model::tangential`), one line each, in
-/// the order of their `--tangential` choices:
-/// `Variant = "name" module::Type: "help",` (the type in its own file of `model/tangential/`;
-/// the parameters that size it say so in their declarations, `used In(&TANGENTIAL, ..)` in
-/// [`keys`]). It hands the list to the macro
-/// `$then`: the law's choices here ([`TangentialLaw`]), the composition of the combined law in
-/// `model/tangential/combined.rs`.
+/// The registry of the tangential mechanisms, one line each, in the order of their
+/// `--tangential` choices: `Variant = name: "help",`. Here are only the names: the choice
+/// `name` on the command line and in configs, its [`TangentialLaw`] variant and its help line.
+/// What each name stands for is `model/tangential`'s: the mechanism `name` is the file
+/// `model/tangential/name.rs`, whose type carries the variant's name (`bed` is `bed::Bed`),
+/// declared and composed there from this list. A parameter that sizes a mechanism says so in its
+/// own declaration (`used In(&TANGENTIAL, ..)` in [`keys`]).
+///
+/// The list goes to the macro `$then`: the law's choices here ([`TangentialLaw`]), the
+/// mechanisms' files and the composition of the combined law in `model/tangential`.
 macro_rules! tangential_mechanisms {
     ($then:ident) => {
         $then! {
-            Loss = "loss" loss::Loss: "Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)",
-            Offset = "offset" offset::Offset: "Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin",
-            Bed = "bed" bed::Bed: "Elastic plus strings that slide sideways over each other against string-to-string friction and snap back",
-            Radius = "radius" radius::Radius: "Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)",
+            Loss = loss: "Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)",
+            Offset = offset: "Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin",
+            Bed = bed: "Elastic plus strings that slide sideways over each other against string-to-string friction and snap back",
+            Radius = radius: "Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)",
         }
     };
 }
@@ -84,7 +49,7 @@ pub(crate) use tangential_mechanisms;
 /// The tangential laws from the registry of mechanisms ([`tangential_mechanisms`]):
 /// the elastic law, each mechanism alone on top of it, and all of them.
 macro_rules! tangential_law {
-    ($($variant:ident = $key:literal $module:ident::$ty:ident: $help:literal,)+) => {
+    ($($variant:ident = $name:ident: $help:literal,)+) => {
         choice_enum! {
             /// The tangential contact law of an oblique or spinning impact (SPEC.md section 6): the
             /// elastic grip-slip law, one mechanism of [`crate::model::tangential`] on top of it, or all of them.
@@ -93,11 +58,16 @@ macro_rules! tangential_law {
             /// (experiment `spin_calibration`; REPORT.md, "Calibrated where nobody measured").
             TangentialLaw (default Radius) {
                 Elastic = "elastic": "The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)",
-                $($variant = $key: $help,)+
-                Physical = "physical": "All four mechanisms",
+                $($variant = (stringify!($name)): $help,)+
+                Physical = "physical": "Every mechanism above at once",
             }
         }
 
+        impl TangentialLaw {
+            /// Each mechanism of the registry, as the law of it alone on the elastic law, in the
+            /// registry's order.
+            pub const MECHANISMS: [TangentialLaw; [$(stringify!($name)),+].len()] = [$(TangentialLaw::$variant),+];
+        }
     };
 }
 

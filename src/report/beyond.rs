@@ -122,7 +122,7 @@ fn against_measurement() -> Result<String> {
         "\n### Calibrated where nobody measured, judged where held out\n\n\
          Experiments `spin_calibration` and `validation_spin` (figures/*.{{csv,png}}) put the model beside \
          the spin measurements of `data/measured`, under the tangential laws of SPEC.md section 6 \
-         (`--tangential`: the elastic grip-slip law, each mechanism alone on top of it, and all four as \
+         (`--tangential`: the elastic grip-slip law, each mechanism alone on top of it, and all {all} as \
          `physical`). Every input is measured, derived or calibrated (SPEC.md section 7). Measured: each \
          string's ball/string and string/string friction (the TWU string database, `data/strings`; the gut's \
          a median of the database's gut strings), the tangential restitution of a gripping ball e_x = {ex} \
@@ -152,6 +152,7 @@ fn against_measurement() -> Result<String> {
         ds = fmt_sig(1e3 * ds, 2),
         cal = c.rows.first().map_or_else(String::new, |r| word(&c, r, "calibration_rows")),
         tie = spin_calibration::TIE_RPM,
+        all = crate::numfmt::in_words(TangentialLaw::MECHANISMS.len()),
     );
     // the candidates
     s.push_str(
@@ -389,12 +390,13 @@ fn vv_section(t: &Table) -> Result<String> {
 
 /// The section, as Markdown.
 pub fn section() -> Result<String> {
-    let mut s = String::from(
+    let mut s = format!(
         "\n## Beyond the paper: oblique impacts, friction and spin\n\n\
          The paper leaves oblique impacts to further work. `racket-impact` adds the tangential \
          grip-slip contact of SPEC.md section 6 on the same beam, strings and ball (experiments \
-         `oblique_angle`, `oblique_tension`, `topspin_forehand`, `validation_spin`), with four \
+         `oblique_angle`, `oblique_tension`, `topspin_forehand`, `validation_spin`), with {} \
          switchable mechanisms on top of the elastic law (`--tangential`, `model::tangential`).\n",
+        crate::numfmt::in_words(TangentialLaw::MECHANISMS.len())
     );
     s.push_str(&against_measurement()?);
     s.push_str(&conjecture()?);

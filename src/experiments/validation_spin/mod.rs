@@ -51,7 +51,7 @@ pub const EXPERIMENT: Experiment = Experiment {
 };
 
 /// The laws compared, in the order of their columns.
-pub const LAWS: [TangentialLaw; 6] = TangentialLaw::ALL;
+pub const LAWS: [TangentialLaw; TangentialLaw::ALL.len()] = TangentialLaw::ALL;
 
 /// The index of the default law among [`LAWS`].
 pub fn default_law() -> usize {

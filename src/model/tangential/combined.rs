@@ -1,7 +1,7 @@
 //! The combined law (`--tangential physical` and each mechanism alone; SPEC.md section 6,
 //! "Mechanisms"): the grip-slip law of [`super::elastic`] with the mechanisms of the registry
-//! (`tangential_mechanisms!` in `params/variants.rs`), each in its own file behind the one trait [`Mechanism`], composed
-//! here. The law owns what every mechanism shares:
+//! (`tangential_mechanisms!` in `params/variants.rs`: the choice `name` is the type
+//! `name::Variant`), each in its own file behind the one trait [`Mechanism`], composed here. The law owns what every mechanism shares:
 //!
 //! ```text
 //! ball     m_b dv/dt = -P,   I_b domega/dt = R_c P + sum of the mechanisms' torques
@@ -94,7 +94,7 @@ trait Remode {
 /// Declares, from the registry (`tangential_mechanisms!`), the mechanisms of a law, their modes
 /// and drives, where each sits, and the two ways to go over them.
 macro_rules! compose {
-    ($($variant:ident = $key:literal $module:ident::$ty:ident: $help:literal,)+) => {
+    ($($ty:ident = $module:ident: $help:literal,)+) => {
         /// The mechanisms of a law, each `None` while it is off.
         #[derive(Debug, Clone, Copy)]
         pub struct Mechanisms {
@@ -130,7 +130,7 @@ macro_rules! compose {
             /// The mechanisms of the law `law`, sized for an impact.
             pub fn of(law: TangentialLaw, sizes: &Sizes) -> Mechanisms {
                 Mechanisms {
-                    $($module: law.has(TangentialLaw::$variant).then(|| <super::$module::$ty as Mechanism>::of(sizes)),)+
+                    $($module: law.has(TangentialLaw::$ty).then(|| <super::$module::$ty as Mechanism>::of(sizes)),)+
                 }
             }
 
