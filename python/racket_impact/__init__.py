@@ -252,11 +252,8 @@ def _call(command: str, racket, config, pairs, options, progress) -> Any:
     """Run the library's ``command`` with the parameters ``pairs`` (for a sweep its axes) and
     its ``options``, its progress drawn and its notes warned of as it runs
     (:mod:`racket_impact._progress`); Ctrl-C stops it within a second with KeyboardInterrupt."""
-    level = _caller_level()
-
     def note(text: str) -> None:
-        # (one frame deeper than this function: the note's own)
-        warnings.warn(LongRunWarning(text, "long_run", ""), stacklevel=level + 1)
+        warnings.warn(LongRunWarning(text, "long_run", ""), stacklevel=_caller_level())
 
     reporter = _progress.Reporter(progress, note)
     try:
