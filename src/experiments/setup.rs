@@ -310,7 +310,8 @@ impl Context {
     /// [`Context::impact`] for each parameter set, in parallel, results in the order given.
     pub fn sweep(&self, params: &[Params]) -> Result<Vec<ImpactResult>> {
         use rayon::prelude::*;
-        params.par_iter().map(|p| self.impact(p)).collect()
+        let watch = crate::control::current();
+        params.par_iter().map(|p| crate::control::within(watch.as_ref(), || self.impact(p))).collect()
     }
 
     /// The free-free modes of `racket` on this context's beam (N of its [`Scheme`]).
@@ -470,7 +471,8 @@ pub fn used_position(x: f64, racket: &Racket) -> String {
 /// Run [`impact`] for each parameter set, in parallel, results in the order given.
 pub fn sweep(params: &[Params]) -> Result<Vec<ImpactResult>> {
     use rayon::prelude::*;
-    params.par_iter().map(impact).collect()
+    let watch = crate::control::current();
+    params.par_iter().map(|p| crate::control::within(watch.as_ref(), || impact(p))).collect()
 }
 
 /// `n` log-spaced values from `a` to `b` inclusive.
