@@ -158,6 +158,10 @@ pub struct Claim {
     pub kind: Kind,
     /// What the paper concludes from the number, in words.
     pub conclusion: String,
+    /// The paper's words stating the conclusion (pieces as in [`Claim::quote`]); empty where the
+    /// conclusion is ours, not the paper's ([`Claim::conclusion_is_ours`]), which is said in
+    /// `conclusion` and `threshold_source` and not counted among the paper's conclusions.
+    pub conclusion_quote: String,
     /// The same in a form [`Check`] evaluates (`> 0 and < 2`, `< other_id`, `> 1.5 * other_id`,
     /// `about 20`).
     pub conclusion_check: String,
@@ -181,6 +185,12 @@ impl Claim {
     /// [`APPROXIMATE_WORDS`].
     pub fn approximate(&self) -> bool {
         is_approximate(&self.quote)
+    }
+
+    /// The conclusion is ours: no sentence of the paper states it ([`Claim::conclusion_quote`]
+    /// is empty).
+    pub fn conclusion_is_ours(&self) -> bool {
+        self.conclusion_quote.trim().is_empty()
     }
 
     /// The conclusion holds by construction of the model ([`Claim::by_construction`]).

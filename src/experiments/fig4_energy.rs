@@ -27,6 +27,10 @@ pub const EXPERIMENT: Experiment = Experiment {
         PaperClaim { id: "fig4_tau", ours: |ctx| fig4_claim(ctx, |r| r.tau_s * 1e3) },
         PaperClaim { id: "fig4_e_a", ours: |ctx| fig4_claim(ctx, |r| r.e_a) },
         PaperClaim { id: "fig4_ke_ball", ours: |ctx| fig4_claim(ctx, |r| r.f_ke_ball) },
+        PaperClaim {
+            id: "fig4_pe_ball_strings",
+            ours: |ctx| Ok(ctx.impact_detail(&params(ctx))?.pe_ball_strings_peak),
+        },
     ],
 };
 

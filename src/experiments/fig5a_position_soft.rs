@@ -7,14 +7,10 @@
 //! both smaller on soft strings than on the stiff strings of Fig 5(b); at the centre
 //! e_A = 0.44 and tau ~6.0 ms; tau shorter near the tip.
 
-use super::off_axis::both_beds;
+use super::off_axis::{both_beds, ESSENTIALLY_ZERO};
 use super::position::{centre, chart, run, PaperCentre};
 use super::{Context, Experiment, PaperClaim};
 use crate::error::Result;
-
-/// The vibration below which the paper calls it "essentially zero", a fraction of the ball's
-/// energy (as at the node, `fig5_node_f_vib`).
-const ESSENTIALLY_ZERO: f64 = 0.01;
 
 /// The smallest cut of the ball loss and of the vibration loss (the paper's measure) when k_s is
 /// halved, over the Fig 5 points of [`both_beds`] where the vibration is not essentially zero

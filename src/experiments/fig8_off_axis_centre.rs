@@ -55,10 +55,7 @@ pub const EXPERIMENT: Experiment = Experiment {
                 Ok(100.0 * (at(2.0 * ctx.v1_off_axis())? / (2.0 * at(ctx.v1_off_axis())?) - 1.0))
             },
         },
-        PaperClaim {
-            id: "fig8_theta_r_proportional",
-            ours: |ctx| Ok(100.0 * (theta_at(ctx, |p| p.impact.r = 0.08)? / (2.0 * theta_at(ctx, |_| {})?) - 1.0)),
-        },
+        PaperClaim { id: "fig8_theta_r_proportional", ours: super::off_axis::theta_r_departure },
         PaperClaim {
             id: "fig8_theta_ix_inverse",
             ours: |ctx| Ok(100.0 * (2.0 * theta_at(ctx, |p| p.racket.ix *= 2.0)? / theta_at(ctx, |_| {})? - 1.0)),

@@ -38,7 +38,9 @@ pub const EXPERIMENT: Experiment = Experiment {
         PaperClaim { id: "fig9_serve_gain", ours: serve_gain },
         PaperClaim { id: "fig9_node_serve_gain", ours: node_serve_gain },
         PaperClaim { id: "fig9_f_vib_cut", ours: f_vib_cut },
+        PaperClaim { id: "fig9_f_vib_ei384", ours: |ctx| f_vib_at_tip(ctx, ctx.frame_ei(384.0)) },
         PaperClaim { id: "fig9_tau_ei384", ours: |ctx| Ok(tip_setup(ctx, ctx.frame_ei(384.0))?.tau_s * 1e3) },
+        PaperClaim { id: "fig9_throat_serve_gain", ours: |ctx| serve_gain_at(ctx, super::position::THROAT_X) },
     ],
 };
 
@@ -50,8 +52,13 @@ fn e_a_at_tip(ctx: &Context, ei: f64) -> Result<f64> {
 /// The serve speed gain of the EI 384 frame over the EI 150 one at the centre of the strings
 /// (the vibration node), k_s 4e4, %.
 fn node_serve_gain(ctx: &Context) -> Result<f64> {
+    serve_gain_at(ctx, CENTRE_X)
+}
+
+/// The serve speed gain (%) of the EI 384 frame over the EI 150 one at `x` (r 0, k_s 4e4).
+fn serve_gain_at(ctx: &Context, x: f64) -> Result<f64> {
     let e_a = |ei: f64| -> Result<f64> {
-        let mut p = ctx.paper_params(CENTRE_X, 4.0e4);
+        let mut p = ctx.paper_params(x, 4.0e4);
         p.racket.ei = ei;
         Ok(ctx.impact(&p)?.e_a)
     };
@@ -62,12 +69,15 @@ fn node_serve_gain(ctx: &Context) -> Result<f64> {
 /// How much less the EI 384 frame vibrates than the EI 150 one at 6 cm, k_s 4e4 (the paper's
 /// measure, peak bending PE), %.
 fn f_vib_cut(ctx: &Context) -> Result<f64> {
-    let f_vib = |ei: f64| -> Result<f64> {
-        let mut p = ctx.paper_params(X_TIP, 4.0e4);
-        p.racket.ei = ei;
-        Ok(ctx.impact(&p)?.f_vib_peak_pe)
-    };
-    Ok(100.0 * (1.0 - f_vib(ctx.frame_ei(384.0))? / f_vib(ctx.frame_ei(150.0))?))
+    Ok(100.0 * (1.0 - f_vib_at_tip(ctx, ctx.frame_ei(384.0))? / f_vib_at_tip(ctx, ctx.frame_ei(150.0))?))
+}
+
+/// The paper's f(vib) (peak bending PE after the impact) at 6 cm (r 0, k_s 4e4) for a frame
+/// stiffness.
+fn f_vib_at_tip(ctx: &Context, ei: f64) -> Result<f64> {
+    let mut p = ctx.paper_params(X_TIP, 4.0e4);
+    p.racket.ei = ei;
+    Ok(ctx.impact(&p)?.f_vib_peak_pe)
 }
 
 /// The serve speed gain of the EI 384 frame over the EI 150 one at 6 cm, %.

@@ -26,6 +26,7 @@ pub mod claims;
 pub mod conclusion;
 pub mod curves;
 pub mod setup;
+pub mod spectrum;
 pub mod tolerance;
 
 pub mod off_axis;

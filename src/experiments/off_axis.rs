@@ -146,10 +146,41 @@ pub fn both_beds(ctx: &Context) -> Result<Vec<BothBeds>> {
         .collect())
 }
 
+/// The vibration below which the paper calls it "essentially zero", a fraction of the ball's
+/// energy (as at the node, `fig5_node_f_vib`): where the vibration reaches it, an impact point is
+/// "removed from the node".
+pub const ESSENTIALLY_ZERO: f64 = 0.01;
+
 /// Theta (deg) at (x, r 4 cm, 30 m/s) for a string stiffness, N = 39 node scheme.
 pub fn theta_r4(ctx: &Context, x: f64, ks: f64) -> Result<f64> {
+    theta_at(ctx, x, ks, 0.04)
+}
+
+/// Theta (deg) at (x, r, 30 m/s) for a string stiffness: the impacts of Figs 7 and 8 (and of
+/// [`both_beds`], which they share).
+pub fn theta_at(ctx: &Context, x: f64, ks: f64, r: f64) -> Result<f64> {
     let mut p = ctx.paper_params(x, ks);
-    p.impact.r = 0.04;
+    p.impact.r = r;
     p.impact.v1 = ctx.v1_off_axis();
     Ok(ctx.impact(&p)?.theta_end_deg)
+}
+
+/// The rotation's departure from proportional to r over the range Figs 7 and 8 plot, %: theta
+/// at r over theta at r 4 cm times r / 4 cm, less 1, at r 2 to 10 cm in steps of 2 on the four
+/// curves (x 10 and 15.8 cm, k_s 2e4 and 4e4); the departure of largest size, with its sign.
+pub fn theta_r_departure(ctx: &Context) -> Result<f64> {
+    let mut worst = 0.0_f64;
+    for x in [0.10, super::CENTRE_X] {
+        for ks in KS_VALUES {
+            let at_4 = theta_r4(ctx, x, ks)?;
+            for k in [1, 3, 4, 5] {
+                let r = 0.02 * k as f64;
+                let d = 100.0 * (theta_at(ctx, x, ks, r)? / (at_4 * r / 0.04) - 1.0);
+                if d.abs() > worst.abs() {
+                    worst = d;
+                }
+            }
+        }
+    }
+    Ok(worst)
 }

@@ -14,6 +14,11 @@ use crate::render::plot::{Band, Chart, Curve, LineStyle, VLine};
 use crate::render::table::{Table, Value};
 use crate::solve::ImpactResult;
 
+/// "Near the throat" (p. 5, Fig 5; p. 6 and Conclusions, the frame's stiffness), m from the
+/// tip: 2 cm inside the end of the string face ([`STRING_FACE_LENGTH`], 32 cm), where a ball
+/// still lands on the strings. The paper places no throat.
+pub const THROAT_X: f64 = 0.30;
+
 /// Table columns shared by the position and stiffness sweeps.
 pub const COLUMNS: [&str; 6] = ["e_a", "f_ball", "f_vib", "f_vib_peak_pe", "tau_s", "peak_force_n"];
 

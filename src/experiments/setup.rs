@@ -4,6 +4,7 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
+use super::spectrum::{self, Detail};
 use crate::error::{Error, Result};
 use crate::model::beam::{Beam, Modes};
 use crate::params::{Ball, LoadRule, Params, Racket, SolverKind};
@@ -171,7 +172,14 @@ impl Runs {
 /// A shared store of impacts already run (none unless asked for), keyed by their exact
 /// parameters. Not part of what a context is.
 #[derive(Debug, Clone, Default)]
-pub struct Memo(Option<Arc<Mutex<HashMap<String, ImpactResult>>>>);
+pub struct Memo(Option<Arc<Mutex<Store>>>);
+
+/// What a [`Memo`] holds: impacts, and impacts with their [`Detail`].
+#[derive(Debug, Default)]
+pub struct Store {
+    impacts: HashMap<String, ImpactResult>,
+    details: HashMap<String, Detail>,
+}
 
 impl PartialEq for Memo {
     fn eq(&self, _: &Self) -> bool {
@@ -248,62 +256,79 @@ impl Context {
     /// ([`Scheme::Paper`]) or read between the two ([`Scheme::Curve`]); on a context holding its
     /// loads ([`Context::holding_loads`]) the nodes are those of the held beam.
     pub fn impact(&self, p: &Params) -> Result<ImpactResult> {
+        self.read(p, |q| self.remembered(q, |s| &mut s.impacts, impact, |r| r.x_load_m), ImpactResult::lerp)
+    }
+
+    /// One impact with what the paper reads off it besides its result ([`spectrum::Detail`]),
+    /// with the context's solver, at the positions [`Context::impact`] takes, under the same
+    /// record and store.
+    pub fn impact_detail(&self, p: &Params) -> Result<Detail> {
+        self.read(p, |q| self.remembered(q, |s| &mut s.details, spectrum::detail, |d| d.result.x_load_m), Detail::lerp)
+    }
+
+    /// `one` at the positions this context's numerics take for an impact set up at `p`'s
+    /// position, read between two nodes by `lerp` for a curve.
+    fn read<T>(&self, p: &Params, one: impl Fn(&Params) -> Result<T>, lerp: fn(&T, &T, f64) -> T) -> Result<T> {
         let n = p.numerics.segments;
         if self.scheme == Scheme::Converged {
-            return self.one_impact(p);
+            return one(p);
         }
         let s = self.grid_length.unwrap_or(p.racket.length) / n as f64;
+        // the impact `p` loaded at node `j` of a beam of spacing `s`: on a context holding its
+        // loads, at that node's position with the force shared between the nodes at hand
+        let at_node = |j: usize| {
+            let mut q = *p;
+            q.impact.x = j as f64 * s;
+            if self.grid_length.is_some() {
+                q.numerics.load = LoadRule::Hat;
+            }
+            one(&q)
+        };
         if self.scheme == Scheme::Curve {
             let j = ((p.impact.x / s).floor().max(0.0) as usize).min(n - 1);
             let w = p.impact.x / s - j as f64;
             if w > 1e-9 && w < 1.0 - 1e-9 {
-                return Ok(ImpactResult::lerp(&self.at_node(p, j, s)?, &self.at_node(p, j + 1, s)?, w));
+                return Ok(lerp(&at_node(j)?, &at_node(j + 1)?, w));
             }
         }
         match self.grid_length {
             // the nearest node of the held beam, ties towards the handle as the node rule's
-            Some(_) => self.at_node(p, (((p.impact.x / s).max(0.0) + 0.5).floor() as usize).min(n), s),
-            None => self.one_impact(p),
+            Some(_) => at_node((((p.impact.x / s).max(0.0) + 0.5).floor() as usize).min(n)),
+            None => one(p),
         }
     }
 
-    /// The impact `p` loaded at node `j` of a beam of spacing `s`: on a context holding its loads,
-    /// at that node's position with the force shared between the nodes of the beam at hand.
-    fn at_node(&self, p: &Params, j: usize, s: f64) -> Result<ImpactResult> {
-        let mut q = *p;
-        q.impact.x = j as f64 * s;
-        if self.grid_length.is_some() {
-            q.numerics.load = LoadRule::Hat;
-        }
-        self.one_impact(&q)
-    }
-
-    /// One impact under this context's record and store.
-    fn one_impact(&self, p: &Params) -> Result<ImpactResult> {
-        let done = |r: &ImpactResult| {
-            self.runs.push(Run {
-                segments: p.numerics.segments,
-                load: Some(p.numerics.load),
-                x: Some(p.impact.x),
-                x_load: Some(r.x_load_m),
-            })
-        };
-        let Some(memo) = &self.memo.0 else {
-            let r = impact(p)?;
-            done(&r);
-            return Ok(r);
-        };
-        let key = format!("{p:?}");
-        let known = memo.lock().unwrap_or_else(std::sync::PoisonError::into_inner).get(&key).copied();
-        let r = match known {
-            Some(r) => r,
-            None => {
-                let r = impact(p)?;
-                memo.lock().unwrap_or_else(std::sync::PoisonError::into_inner).insert(key, r);
-                r
+    /// `run(p)` under this context's record (the position its result says it loaded,
+    /// `x_load`) and its store (the part `pick` chooses, keyed by the exact parameters).
+    fn remembered<T: Copy>(
+        &self,
+        p: &Params,
+        pick: fn(&mut Store) -> &mut HashMap<String, T>,
+        run: fn(&Params) -> Result<T>,
+        x_load: fn(&T) -> f64,
+    ) -> Result<T> {
+        let r = match &self.memo.0 {
+            None => run(p)?,
+            Some(memo) => {
+                let key = format!("{p:?}");
+                let lock = || memo.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+                let known = pick(&mut lock()).get(&key).copied();
+                match known {
+                    Some(r) => r,
+                    None => {
+                        let r = run(p)?;
+                        pick(&mut lock()).insert(key, r);
+                        r
+                    }
+                }
             }
         };
-        done(&r);
+        self.runs.push(Run {
+            segments: p.numerics.segments,
+            load: Some(p.numerics.load),
+            x: Some(p.impact.x),
+            x_load: Some(x_load(&r)),
+        });
         Ok(r)
     }
 

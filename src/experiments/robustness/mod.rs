@@ -147,6 +147,12 @@ impl ClaimRobustness {
         self.doubled.as_ref().is_some_and(|d| d.verdict != self.verdict)
     }
 
+    /// The verdict on the conclusion is decided by a wide margin: at least [`WIDE_MARGIN`] widths of
+    /// its sampled range either way.
+    pub fn wide_margin(&self) -> bool {
+        self.conclusion_margin.is_some_and(|m| m.abs() >= WIDE_MARGIN)
+    }
+
     /// The verdict on the conclusion changes when the samples double.
     pub fn conclusion_borderline(&self) -> bool {
         self.doubled.as_ref().is_some_and(|d| d.conclusion != self.conclusion)
@@ -391,15 +397,30 @@ pub fn tally(rows: &[ClaimRobustness]) -> ([(Robust, usize); 5], usize) {
     (counts, rows.iter().filter(|r| r.borderline()).count())
 }
 
-/// How many claims have each verdict on the conclusion, in [`Standing::ALL`]'s order, how many
-/// are borderline and how many hold by construction (both counted apart, not under their
-/// verdict: a conclusion the model makes true by construction is no support).
+/// A margin (in widths of the sampled range) at or beyond which a verdict is "decided by a wide
+/// margin": three widths, past what a plausible error of the model (of the size of the inputs'
+/// spread) could move.
+pub const WIDE_MARGIN: f64 = 3.0;
+
+/// The conclusion is counted under its verdict: the paper's, not by construction, not borderline.
+pub fn counted(r: &ClaimRobustness) -> bool {
+    !r.claim.conclusion_is_ours() && !r.claim.by_construction() && !r.conclusion_borderline()
+}
+
+/// How many claims have each verdict on the conclusion, in [`Standing::ALL`]'s order, and how
+/// many are counted apart, not under their verdict: conclusions that are ours, not the paper's
+/// (no sentence of the paper states them), then of the paper's those that hold by construction
+/// (the model makes them true: no support), then those whose verdict is borderline.
 pub fn conclusion_tally(rows: &[ClaimRobustness]) -> ConclusionTally {
-    let counted = |r: &&ClaimRobustness| !r.claim.by_construction() && !r.conclusion_borderline();
+    let ours = |r: &&ClaimRobustness| r.claim.conclusion_is_ours();
+    let built = |r: &&ClaimRobustness| !ours(r) && r.claim.by_construction();
+    let borderline = |r: &&ClaimRobustness| !ours(r) && !built(r) && r.conclusion_borderline();
+    let counted = |r: &&ClaimRobustness| counted(r);
     ConclusionTally {
         counts: Standing::ALL.map(|v| (v, rows.iter().filter(counted).filter(|r| r.conclusion == v).count())),
-        borderline: rows.iter().filter(|r| !r.claim.by_construction() && r.conclusion_borderline()).count(),
-        by_construction: rows.iter().filter(|r| r.claim.by_construction()).count(),
+        borderline: rows.iter().filter(borderline).count(),
+        by_construction: rows.iter().filter(built).count(),
+        ours: rows.iter().filter(ours).count(),
     }
 }
 
@@ -411,8 +432,10 @@ pub struct ConclusionTally {
     pub counts: [(Standing, usize); 5],
     /// Verdicts that twice the samples changes.
     pub borderline: usize,
-    /// Conclusions that hold by construction of the model.
+    /// The paper's conclusions that hold by construction of the model.
     pub by_construction: usize,
+    /// Conclusions that are ours, not the paper's.
+    pub ours: usize,
 }
 
 /// The counts in words: "Conclusions: 30 hold, 5 mostly, ...; numbers: 8 hold over the whole
@@ -422,12 +445,13 @@ pub fn tally_text(rows: &[ClaimRobustness]) -> String {
         counts: [(_, holds), (_, mostly), (_, contested), (_, fails), (_, c_independent)],
         borderline: c_borderline,
         by_construction,
+        ours,
     } = conclusion_tally(rows);
     let ([(_, whole), (_, part), (_, none), (_, independent), (_, no_number)], borderline) = tally(rows);
     format!(
         "Conclusions: {holds} hold in every sample, {mostly} mostly, {contested} contested, {fails} fail; \
          {c_independent} independent; {c_borderline} borderline (the verdict changes at twice the samples); \
-         {by_construction} hold by construction (not counted).\n\
+         {by_construction} hold by construction (not counted); {ours} are ours, not the paper's (not counted).\n\
          Numbers: {whole} hold over the whole interval, {part} over part of it, {none} not at all; {independent} \
          do not depend on the sampled inputs (independent); {borderline} borderline (the verdict changes at \
          twice the samples); {no_number} state no number (judged by their conclusion)"

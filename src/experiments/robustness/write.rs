@@ -10,7 +10,7 @@ use crate::render::table::{Table, Value};
 use crate::study::uncertainty::{not_meaningful, summary_json};
 
 /// The table columns.
-pub const COLUMNS: [&str; 28] = [
+pub const COLUMNS: [&str; 29] = [
     "id",
     "unit",
     "paper",
@@ -39,6 +39,7 @@ pub const COLUMNS: [&str; 28] = [
     "conclusion_margin",
     "conclusion_margin_2x",
     "by_construction",
+    "conclusion_from",
 ];
 
 /// The claims as a table, one row each in the claims file's order.
@@ -79,6 +80,7 @@ pub fn table(rows: &[ClaimRobustness]) -> Result<Table> {
             num(r.conclusion_margin),
             num(r.doubled.as_ref().and_then(|d| d.conclusion_margin)),
             Value::Text(if r.claim.by_construction() { "yes" } else { "no" }.to_string()),
+            Value::Text(if r.claim.conclusion_is_ours() { "ours" } else { "paper" }.to_string()),
         ])?;
     }
     Ok(t)
@@ -87,7 +89,7 @@ pub fn table(rows: &[ClaimRobustness]) -> Result<Table> {
 /// The JSON document of `uncertainty --claims`: `{"samples", "seed", "runs", "inputs": [...],
 /// "outputs": {claim: {summary, "unit", "paper", "band", "nominal", "numerical", "verdict",
 /// "conclusion", "conclusion_share", "conclusion_verdict", "conclusion_check",
-/// "conclusion_margin", "by_construction"}}, "verdicts", "conclusion_verdicts"}` (`paper` and
+/// "conclusion_margin", "by_construction", "conclusion_from"}}, "verdicts", "conclusion_verdicts"}` (`paper` and
 /// `band` null for a claim the paper states no number for).
 pub fn json(rows: &[ClaimRobustness], samples: u64, seed: u32) -> Result<Json> {
     let inputs = inputs();
@@ -107,6 +109,7 @@ pub fn json(rows: &[ClaimRobustness], samples: u64, seed: u32) -> Result<Json> {
         v["conclusion_check"] = r.claim.conclusion_check.clone().into();
         v["conclusion_margin"] = r.conclusion_margin.into();
         v["by_construction"] = r.claim.by_construction().into();
+        v["conclusion_from"] = if r.claim.conclusion_is_ours() { "ours" } else { "paper" }.into();
         outputs.insert(r.claim.id.clone(), v);
     }
     let inputs: Vec<Json> = inputs
@@ -124,6 +127,7 @@ pub fn json(rows: &[ClaimRobustness], samples: u64, seed: u32) -> Result<Json> {
         c.counts.iter().map(|(v, n)| (v.name().to_string(), (*n).into())).collect();
     conclusion_verdicts.insert("borderline".into(), c.borderline.into());
     conclusion_verdicts.insert("by_construction".into(), c.by_construction.into());
+    conclusion_verdicts.insert("ours".into(), c.ours.into());
     Ok(json!({
         "samples": samples, "seed": seed, "runs": samples as usize * runs_per_sample(), "inputs": inputs,
         "outputs": outputs, "verdicts": verdicts, "conclusion_verdicts": conclusion_verdicts

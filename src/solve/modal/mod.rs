@@ -269,6 +269,23 @@ impl ModalModel {
     /// Run the impact: the compression phase in closed form, then steps from maximum
     /// compression to separation.
     pub fn run(&self) -> Result<ImpactResult> {
+        self.run_into(None).map(|(r, _)| r)
+    }
+
+    /// Run the impact as [`ModalModel::run`] and also say how its energy shared: the energy of
+    /// each retained flexible mode after the impact (J, ascending frequency; the coordinates are
+    /// free modes once the ball has left, so each keeps its energy), and the energy the ball and
+    /// strings hold at maximum compression (J), their largest during the impact: before it they
+    /// store all the work of the force, after it both give energy back.
+    pub fn run_with_modes(&self) -> Result<(ImpactResult, Vec<f64>, f64)> {
+        let mut modes = Vec::new();
+        let (r, stored) = self.run_into(Some(&mut modes))?;
+        Ok((r, modes, stored))
+    }
+
+    /// [`ModalModel::run`], with the flexible modes' energies after the impact pushed into
+    /// `modes` if given, and the ball and strings' energy at maximum compression (J).
+    fn run_into(&self, modes: Option<&mut Vec<f64>>) -> Result<(ImpactResult, f64)> {
         let p = &self.impact.params;
         let v1 = p.impact.v1;
         let n = self.set.lam.len();
@@ -284,6 +301,8 @@ impl ModalModel {
             self.set.compression.at_max(v1, &mut s, None)
         };
         let max = max.ok_or(Error::ImpactDidNotEnd { limit_s: limit })?;
+        // (the compression phase is linear: the ball and strings are springs in series)
+        let stored = 0.5 * max.f * max.yt;
         let y0 = self.law.ball_compression_at_max(max.yt);
         let at_max =
             End { f: max.f, d: 0.0, yt: max.yt, ytd: 0.0, phase: Phase::Expansion { y0 }, u: (1.0, 1.0), t_max: max.t };
@@ -319,7 +338,11 @@ impl ModalModel {
         crate::control::poll(1.0)?;
         run.tangential.complete(self.impact.oblique.as_ref(), &mut result, v1)?;
         result.check_finite()?;
-        Ok(result)
+        if let Some(modes) = modes {
+            let s = &run.s;
+            modes.extend((RIGID..n).map(|k| 0.5 * (s.v(k) * s.v(k) + self.set.lam[k] * s.q(k) * s.q(k))));
+        }
+        Ok((result, stored))
     }
 
     /// The result of the separated impact `run` whose ball was compressed by `y0` at most, m
