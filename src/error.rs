@@ -191,7 +191,11 @@ impl Error {
             csv::ErrorKind::Deserialize { err, .. } => {
                 let column = err.field().and_then(|i| headers.get(i as usize)).unwrap_or("?");
                 // (the cell may be quoted in the reason: `unknown variant ...`)
-                format!("column {}: {}", crate::numfmt::quoted(column), crate::numfmt::quoted_up_to(&err.kind().to_string(), 300))
+                format!(
+                    "column {}: {}",
+                    crate::numfmt::quoted(column),
+                    crate::numfmt::quoted_up_to(&err.kind().to_string(), 300)
+                )
             }
             csv::ErrorKind::UnequalLengths { expected_len, len, .. } => {
                 format!("{len} fields where the header has {expected_len}")

@@ -678,16 +678,29 @@ fn calibrate_never_replaces_its_measurements() {
     let before = std::fs::read(&lab).unwrap();
     std::os::unix::fs::symlink("lab.csv", s.path("link.csv")).unwrap();
     std::fs::hard_link(&lab, s.path("hard.csv")).unwrap();
-    for (option, out) in [("--plot", "lab.csv"), ("--out", "./lab.csv"), ("--out", "link.csv"), ("--plot", "hard.csv")] {
+    for (option, out) in [("--plot", "lab.csv"), ("--out", "./lab.csv"), ("--out", "link.csv"), ("--plot", "hard.csv")]
+    {
         let o = s.run(&["calibrate", "lab.csv", "--fit", "kt", "--hold-out", "none", option, out]);
         refused(&o, &format!("invalid {} = {out}: is the same file as lab.csv, an input", &option[2..]));
         assert_eq!(std::fs::read(&lab).unwrap(), before, "{option} {out} changed the measurements");
     }
-    let o = s.run(&["calibrate", "lab.csv", "--fit", "kt", "--hold-out", "none", "--out", "./fit.txt", "--plot", "fit.txt"]);
+    let o = s.run(&[
+        "calibrate",
+        "lab.csv",
+        "--fit",
+        "kt",
+        "--hold-out",
+        "none",
+        "--out",
+        "./fit.txt",
+        "--plot",
+        "fit.txt",
+    ]);
     refused(&o, "invalid out = ./fit.txt: is the same file as --plot fit.txt");
     assert_eq!(s.names(), ["hard.csv", "lab.csv", "link.csv"]);
     // two files, written together
-    let o = s.run(&["calibrate", "lab.csv", "--fit", "kt", "--hold-out", "none", "--out", "fit.txt", "--plot", "fit.png"]);
+    let o =
+        s.run(&["calibrate", "lab.csv", "--fit", "kt", "--hold-out", "none", "--out", "fit.txt", "--plot", "fit.png"]);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(std::fs::read_to_string(s.path("fit.txt")).unwrap().starts_with("calibrate: "));
     assert!(std::fs::read(s.path("fit.png")).unwrap().starts_with(b"\x89PNG"));

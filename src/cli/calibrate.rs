@@ -179,7 +179,11 @@ pub fn run(a: CalibrateArgs) -> Result<()> {
     if let Some(path) = &a.out {
         racket_impact::render::io::check_output_dir("out", path)?;
         if let Some(plot) = a.plot.as_deref().filter(|plot| racket_impact::render::io::same_output(path, plot)) {
-            return Err(Error::invalid("out", path.display(), format!("is the same file as --plot {}", plot.display())));
+            return Err(Error::invalid(
+                "out",
+                path.display(),
+                format!("is the same file as --plot {}", plot.display()),
+            ));
         }
     }
     // a flag every fitted row sets from its own columns reaches none of them

@@ -141,12 +141,9 @@ pub fn parse(text: &str, file: &str) -> Result<Vec<Measured>> {
         }
         if let Some(at) = role_column {
             let given = record.get(at).unwrap_or("");
-            row.role = Some(
-                Role::parse(given)
-                    .ok_or_else(|| {
-                        bad(format!("column role: '{}' is neither 'calibration' nor 'validation'", quoted(given)))
-                    })?,
-            );
+            row.role = Some(Role::parse(given).ok_or_else(|| {
+                bad(format!("column role: '{}' is neither 'calibration' nor 'validation'", quoted(given)))
+            })?);
         }
         out.push(row);
     }

@@ -4,8 +4,8 @@
 //! model cannot run (a ratio or threshold over several impacts, a support the model has no
 //! variant for, a string without friction data) is refused with the reason.
 
-use crate::numfmt::quoted;
 use crate::error::{Error, Result};
+use crate::numfmt::quoted;
 use crate::params::{ks_from_tension_lb, strings, Grip, Params, SolverKind, StringName};
 use crate::solve::outcome::{Field, FIELDS};
 use crate::study::measured::Measured;
