@@ -153,6 +153,25 @@ pub enum Error {
     /// An unknown experiment id was requested (quoted: [`crate::numfmt::quoted`]).
     #[error("unknown experiment id '{0}' (see `racket-impact figures --list`)")]
     UnknownExperiment(String),
+    /// The run was stopped (Ctrl-C in Python, [`crate::control::Control::cancel`]) before it ended.
+    #[error("the run was interrupted before it ended")]
+    Cancelled,
+    /// A run estimated above the ten minutes a run may take, not asked for as long
+    /// ([`crate::command`]): what the user asked for, then the estimate.
+    #[error(
+        "{asked}: the run is estimated at {estimate}, above the {limit} a run may take unless --long is \
+         given: give --long to run it anyway, or {fewer}"
+    )]
+    TooLong {
+        /// What was asked for, in the user's terms (`the default 256 samples (768 impacts)`).
+        asked: String,
+        /// The estimate in words.
+        estimate: String,
+        /// The limit in words (`10 min`).
+        limit: String,
+        /// What would make it shorter (`fewer samples`).
+        fewer: String,
+    },
     /// Plot rendering failed.
     #[error("plot {id}: {message}")]
     Plot {
@@ -203,6 +222,16 @@ impl Error {
             _ => err.to_string(),
         };
         Error::invalid(what, format!("{file}:{line}"), reason)
+    }
+
+    /// Whether the error is a cancelled run's, or carries one (a sweep's point, several).
+    pub fn is_cancelled(&self) -> bool {
+        match self {
+            Error::Cancelled => true,
+            Error::AtPoint { source, .. } => source.is_cancelled(),
+            Error::Several(all) => all.iter().any(Error::is_cancelled),
+            _ => false,
+        }
     }
 
     /// Build an [`Error::Io`] from a path and an `std::io::Error`.

@@ -23,7 +23,9 @@
 //! The folders are the layers, each using only those below it:
 //! ```text
 //! src/main.rs, src/cli/  the command line: parse, dispatch, print (clap lives only here)
-//!         |
+//!         |              (the Python package, python/, is the other front end on the commands)
+//! src/command/           the commands as requests: each built from its inputs, its own options
+//!         |              declared once, its work estimated before it runs, run under a Control
 //! src/study/             sweeps, string-face maps, swing-speed comparisons, Sobol' uncertainty
 //! src/experiments/       one file per result of the paper, each with its paper claims
 //! src/report.rs          the claims collected, the paper beside ours
@@ -43,6 +45,8 @@
 //! src/params/            every parameter declared once, validation, config overrides
 //!         |
 //! src/error.rs           the crate's errors; src/diagnostic.rs, warnings as data
+//! src/control.rs         a running command's control: cancel flag and progress, read by the
+//!                        solvers' stepping loops (imports only the error type and number words)
 //! src/numfmt.rs          how numbers are written in messages and tables (imports nothing)
 //! src/numeric/           numerical tools apart from the physics: roots, rank-one modes, short
 //!                        turns, reused buffers (imports nothing)
@@ -75,6 +79,11 @@
 //! - [`numfmt`]: how numbers are written, in messages and in tables, for every layer.
 //! - [`numeric`]: numerical tools apart from the physics (a bracketing root finder, the modes of
 //!   oscillators joined by one spring, short turns, buffers reused from impact to impact).
+//! - [`command`]: the commands as requests beneath the command line and the Python package:
+//!   options declared once, the work estimated before it runs (refused above ten minutes unless
+//!   asked for), progress and cancellation through one [`control::Control`].
+//! - [`control`]: a running command's cancel flag and progress counters, which the solvers' loops
+//!   poll (a hook that reads a flag: results unchanged bit for bit).
 //! - [`diagnostic`]: warnings as data, returned with a result ([`intake::diagnose`] checks a run).
 //!
 //! ## Example
@@ -95,6 +104,8 @@
 //! assert_eq!(msg, "invalid p = 0.9: hysteresis exponent must satisfy 1 < p <= 10");
 //! ```
 
+pub mod command;
+pub mod control;
 pub mod diagnostic;
 pub mod error;
 pub mod experiments;

@@ -82,6 +82,19 @@ pub fn quoted_up_to(text: &str, max: usize) -> String {
     out
 }
 
+/// Seconds in words: "0.05 s", "42 s", "27 min", "3.1 h".
+pub fn duration(s: f64) -> String {
+    if s < 1.0 {
+        format!("{} s", sig(s, 2))
+    } else if s < 120.0 {
+        format!("{s:.0} s")
+    } else if s < 7200.0 {
+        format!("{:.0} min", s / 60.0)
+    } else {
+        format!("{} h", sig(s / 3600.0, 2))
+    }
+}
+
 /// Format `x` with `digits` significant digits, like C's `%.{digits}g` with trailing zeros
 /// removed.
 ///

@@ -17,6 +17,8 @@ const LAYERS: &[&[&str]] = &[
     &["numeric"],
     &["numfmt"],
     &["error"],
+    // a running command's control (cancel, progress): read by the solvers, given by the commands
+    &["control"],
     &["diagnostic"],
     &["params"],
     &["model"],
@@ -27,6 +29,8 @@ const LAYERS: &[&[&str]] = &[
     &["study"],
     &["experiments"],
     &["report"],
+    // the commands as requests beneath both front ends
+    &["command"],
     &["cli"],
 ];
 

@@ -34,7 +34,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from . import _native
+from . import _native, _progress
 
 __version__ = _native.__version__
 
@@ -58,6 +58,7 @@ __all__ = [
     "BeyondModelWarning",
     "MissingDataWarning",
     "NotUsedWarning",
+    "LongRunWarning",
 ]
 
 #: The declaration of every impact parameter (key, name, help, unit, range, default, ...), as the
@@ -65,6 +66,10 @@ __all__ = [
 _PARAMS: list[dict[str, Any]] = json.loads(_native.parameters())
 #: The result fields of one impact (key, unit, doc, ...), as the library declares them.
 _FIELDS: list[dict[str, Any]] = json.loads(_native.result_fields())
+#: Every command's own options (not the parameters: ``nx``, ``samples``, ``long``, ...), as the
+#: library declares them: name (the flag), keyword, kind (switch, count, number, text, choice),
+#: range, choices, whether a list, default (as the flag takes it) and help.
+_COMMANDS: dict[str, list[dict[str, Any]]] = json.loads(_native.commands())
 
 
 def _by_name() -> dict[str, dict[str, Any]]:
@@ -118,19 +123,31 @@ class NotUsedWarning(RacketImpactWarning):
     """A property or key given that this run does not use."""
 
 
+class LongRunWarning(RacketImpactWarning):
+    """A call estimated to take more than a minute (told before it starts), or one that has
+    taken more than three times its estimate (told as it goes)."""
+
+
 _WARNINGS = {
     "unusual": UnusualValueWarning,
     "beyond_model": BeyondModelWarning,
     "missing_data": MissingDataWarning,
     "not_used": NotUsedWarning,
+    "long_run": LongRunWarning,
 }
+
+
+def _caller_level() -> int:
+    """The ``stacklevel`` of the line that called into this package."""
+    level, frame = 1, sys._getframe(1)
+    while frame is not None and os.path.dirname(frame.f_code.co_filename) == _HERE:
+        frame, level = frame.f_back, level + 1
+    return level
 
 
 def _warn(diagnostics: list[dict[str, str]]) -> None:
     """Each diagnostic as a warning, pointing at the line that called into this package."""
-    level, frame = 1, sys._getframe(0)
-    while frame is not None and os.path.dirname(frame.f_code.co_filename) == _HERE:
-        frame, level = frame.f_back, level + 1
+    level = _caller_level()
     for d in diagnostics:
         cls = _WARNINGS.get(d["kind"], RacketImpactWarning)
         warnings.warn(cls(d["sentence"], d["kind"], d["field"]), stacklevel=level)
@@ -153,21 +170,96 @@ def _param(name: str, function: str) -> dict[str, Any]:
 
 
 def _text(p: dict[str, Any], value: Any) -> str:
-    """A value as the command line's flag would be given it: a string as it is, a whole number
-    in digits, a real number in its shortest exact form (``repr``)."""
-    if isinstance(value, str):
-        return value
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        if p["kind"] == "choice":
-            names = ", ".join(c["name"] for c in p["choices"])
-            raise TypeError(f"{p['name']} takes one of the names {names}, not {value!r}")
-        raise TypeError(f"{p['name']} takes a number, not {value!r}")
+    """A value as the command line's flag would be given it: a name as it is, a whole number in
+    digits, a real number in its shortest exact form (``repr``). A value of another type is a
+    ``TypeError``, as in any numpy-style API: ``ks="4e4"`` is not a number, ``segments=39.0``
+    not a whole one."""
     if p["kind"] == "choice":
+        if isinstance(value, str):
+            return value
         names = ", ".join(c["name"] for c in p["choices"])
         raise TypeError(f"{p['name']} takes one of the names {names}, not {value!r}")
+    if p["kind"] == "count":
+        if isinstance(value, numbers.Integral) and not isinstance(value, (bool, np.bool_)):
+            return str(int(value))
+        raise TypeError(f"{p['name']} takes a whole number, not {value!r}")
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{p['name']} takes a number, not {value!r}")
     if isinstance(value, numbers.Integral):
         return str(int(value))
     return repr(float(value))
+
+
+def _takes(o: dict[str, Any]) -> str:
+    """What a command's option takes, in words."""
+    return {
+        "switch": "True or False",
+        "count": f"a whole number ({o['lo']}..={o['hi']})",
+        "number": "a number",
+        "text": "a text",
+        "choice": "one of the names " + ", ".join(o["choices"]),
+    }[o["kind"]]
+
+
+def _option_text(o: dict[str, Any], function: str, value: Any) -> str:
+    """A command option's value as its flag takes it; a value of another type is a
+    ``TypeError`` naming the keyword (its range is the library's to check: a ``ValueError``
+    with the command line's message)."""
+    kind = o["kind"]
+    if kind == "switch" and isinstance(value, (bool, np.bool_)):
+        return "true" if value else "false"
+    if kind == "count" and isinstance(value, numbers.Integral) and not isinstance(value, (bool, np.bool_)):
+        return str(int(value))
+    if kind == "number" and isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_)):
+        return repr(float(value))
+    if kind == "text" and isinstance(value, Racket):
+        return value.source
+    if kind == "text" and isinstance(value, (str, os.PathLike)):
+        return os.fspath(value)
+    if kind == "choice" and isinstance(value, str):
+        return value
+    raise TypeError(f"{function}() argument {o['keyword']} takes {_takes(o)}, not {value!r}")
+
+
+def _options(command: str, function: str, given: dict[str, Any]) -> list[tuple[str, list[str]]]:
+    """The command's options among ``given`` as ``(keyword, [texts])``: a list option takes a
+    sequence or one value; ``None`` is "not given" for an option without a default, and a
+    ``TypeError`` for one with a default (``nx=None``)."""
+    out = []
+    for o in _COMMANDS[command]:
+        if o["keyword"] not in given:
+            continue
+        value = given[o["keyword"]]
+        if value is None:
+            if o["default"] is None and o["kind"] != "switch":
+                continue
+            raise TypeError(f"{function}() argument {o['keyword']} takes {_takes(o)}, not None")
+        if o["many"] and not isinstance(value, (str, os.PathLike, Racket)) and np.ndim(value) > 0:
+            values = list(value)
+        else:
+            values = [value]
+        out.append((o["keyword"], [_option_text(o, function, v) for v in values]))
+    return out
+
+
+def _split(command: str, kwargs: dict[str, Any]) -> tuple[dict[str, Any], dict[str, Any]]:
+    """The keywords as (the command's options, the impact parameters)."""
+    own = {o["keyword"] for o in _COMMANDS[command]}
+    return {k: v for k, v in kwargs.items() if k in own}, {k: v for k, v in kwargs.items() if k not in own}
+
+
+def _call(command: str, racket, config, pairs, options, progress) -> Any:
+    """Run the library's ``command`` with the parameters ``pairs`` (for a sweep its axes) and
+    its ``options``, its progress drawn and its notes warned of as it runs
+    (:mod:`racket_impact._progress`); Ctrl-C stops it within a second with KeyboardInterrupt."""
+    def note(text: str) -> None:
+        warnings.warn(LongRunWarning(text, "long_run", ""), stacklevel=_caller_level())
+
+    reporter = _progress.Reporter(progress, note)
+    try:
+        return _native.call(command, _source(racket), _path(config), pairs, options, reporter)
+    finally:
+        reporter.close()
 
 
 def _pairs(params: dict[str, Any], function: str) -> list[tuple[str, str]]:
@@ -230,10 +322,18 @@ class Impact:
     oblique or spinning ball that is undefined (``e_t`` at too little incoming slip) is ``None``,
     as ``null`` in the JSON."""
 
-    __slots__ = ("_doc",)
+    __slots__ = ("_doc", "_series")
 
-    def __init__(self, document: dict[str, Any]):
+    def __init__(self, document: dict[str, Any], series=None):
         object.__setattr__(self, "_doc", document)
+        object.__setattr__(self, "_series", series)
+
+    @property
+    def series(self):
+        """The impact's time series (``simulate(series=True)``; ``simulate --series``'s CSV
+        columns), a DataFrame where pandas is installed, else a dict of numpy arrays; ``None``
+        unless asked for."""
+        return self._series
 
     def __getattr__(self, name: str) -> Any:
         try:
@@ -268,12 +368,14 @@ class Impact:
         return f"Impact({', '.join(parts)}, ...)"
 
 
-def simulate(*, racket=None, config=None, **params) -> Impact:
-    # (the docstring is made from the parameters' declaration below)
+def simulate(*, racket=None, config=None, progress=None, **kwargs) -> Impact:
+    # (the docstring is made from the parameters' and the options' declarations below)
+    options, params = _split("simulate", kwargs)
     pairs = _pairs(params, "simulate")
-    doc = json.loads(_native.simulate(_source(racket), _path(config), pairs))
+    doc, series = _call("simulate", racket, config, pairs, _options("simulate", "simulate", options), progress)
+    doc = json.loads(doc)
     _warn(doc["diagnostics"])
-    return Impact(doc)
+    return Impact(doc, None if series is None else _table(series[1]))
 
 
 # --- many impacts ---------------------------------------------------------------------------
@@ -297,12 +399,13 @@ def _axis(p: dict[str, Any], values: Any) -> Any:
     return [_text(p, v.item() if isinstance(v, np.generic) else v) for v in items]
 
 
-def sweep(*, racket=None, config=None, **axes):
-    # (the docstring is made from the parameters' declaration below)
+def sweep(*, racket=None, config=None, progress=None, **kwargs):
+    # (the docstring is made from the parameters' and the options' declarations below)
+    options, axes = _split("sweep", kwargs)
     if not axes:
         raise TypeError("sweep() needs at least one parameter to vary, e.g. sweep(x=np.linspace(0.02, 0.6, 50))")
     pairs = [(_param(name, "sweep")["key"], _axis(_param(name, "sweep"), v)) for name, v in axes.items()]
-    columns, diagnostics = _native.sweep(_source(racket), _path(config), pairs)
+    columns, diagnostics = _call("sweep", racket, config, pairs, _options("sweep", "sweep", options), progress)
     _warn(json.loads(diagnostics))
     return _table(columns)
 
@@ -565,7 +668,11 @@ _RACKET_DOC = """racket : str, os.PathLike or Racket, optional
     A preset name (see presets()) or a racket file (TOML, player units); its values replace
     the paper's racket, strings and ball, and the impact moves to the centre of its head.
 config : str or os.PathLike, optional
-    A TOML file with any parameter key (as the command line's --config); keywords win."""
+    A TOML file with any parameter key (as the command line's --config); keywords win.
+progress : bool, optional
+    Show the call's progress (tqdm's bar where tqdm is installed, else a line on standard
+    error): by default once the call has run a second; False: never. Ctrl-C stops any call
+    within a second (KeyboardInterrupt), with nothing kept."""
 
 _COMMON_NOTE = """The defaults are the paper's racket hit at the centre of its strings with the
 paper's ball (the command line's): with ``racket=``, the racket's own values. Precedence: the
@@ -586,6 +693,7 @@ Example: ``simulate(x=0.10, r=0.05, ks=3e4).e_a``
 Parameters
 ----------
 {_RACKET_DOC}
+@OPTIONS@
 @PARAMETERS@
 """,
     sweep: f"""Every impact of the cartesian product of the values given, in parallel, as ``sweep``.
@@ -604,6 +712,7 @@ released; nothing is done in Python per impact. Sweeps use the modal solver unle
 Parameters
 ----------
 {_RACKET_DOC}
+@OPTIONS@
 @PARAMETERS@
 """,
     face_map: f"""A quantity over the string face, one impact per point of an nx x nr grid (``map``).
@@ -650,13 +759,48 @@ seed : int, optional
 }
 
 
+#: The command each function runs: its options are the library's declaration of them.
+_COMMAND_OF = {simulate: "simulate", sweep: "sweep"}
+
+
+def _option_default(o: dict[str, Any]) -> Any:
+    """An option's default as a Python value (a switch's is False)."""
+    if o["kind"] == "switch":
+        return False
+    if o["default"] is None:
+        return None
+    return {"count": int, "number": float}.get(o["kind"], str)(o["default"])
+
+
+def _option_doc(o: dict[str, Any]) -> str:
+    """One option in a numpydoc ``Parameters`` list: its type, help, range and default."""
+    kind = {"switch": "bool", "count": "int", "number": "float", "text": "str", "choice": "str"}[o["kind"]]
+    if o["many"]:
+        kind = f"{kind} or sequence of {kind}"
+    lines = [f"{o['keyword']} : {kind}", f"    {o['help']}."]
+    if o["kind"] == "count":
+        lines.append(f"    Allowed: {o['lo']} <= {o['keyword']} <= {o['hi']}.")
+    if o["kind"] == "choice":
+        lines.append(f"    One of: {', '.join(o['choices'])}.")
+    default = _option_default(o)
+    if default is not None:
+        lines.append(f"    Default: {default!r}.")
+    return "\n".join(lines)
+
+
 def _signature(function, names: list[str]) -> inspect.Signature:
-    """The function's own parameters, then every impact parameter as a keyword (default None:
-    the default named in the docstring)."""
-    own = list(inspect.signature(function).parameters.values())
-    own = [q for q in own if q.kind is not inspect.Parameter.VAR_KEYWORD]
+    """The function's own parameters, its command's options with their defaults, then every
+    impact parameter as a keyword (default None: the default named in the docstring)."""
+    options = [
+        inspect.Parameter(o["keyword"], inspect.Parameter.KEYWORD_ONLY, default=_option_default(o))
+        for o in _COMMANDS.get(_COMMAND_OF.get(function, ""), [])
+    ]
     extra = [inspect.Parameter(n, inspect.Parameter.KEYWORD_ONLY, default=None) for n in names]
-    return inspect.Signature(own + extra)
+    # (the function's own, as written: not those a signature made earlier added)
+    added = {q.name for q in options + extra}
+    own = list(inspect.signature(function).parameters.values())
+    own = [q for q in own if q.kind is not inspect.Parameter.VAR_KEYWORD and q.name not in added]
+    return inspect.Signature(own + options + extra)
 
 
 #: The parameters a map sets itself, with why (the grid sets the impact point, the map its
@@ -673,7 +817,9 @@ def _taken(function) -> list[dict[str, Any]]:
 
 def _docstring(function) -> str:
     """The function's docstring with every parameter it takes."""
-    return _DOCS[function].replace("@PARAMETERS@", "\n".join(_param_doc(p) for p in _taken(function)))
+    options = "\n".join(_option_doc(o) for o in _COMMANDS.get(_COMMAND_OF.get(function, ""), []))
+    text = _DOCS[function].replace("@OPTIONS@\n", options + "\n" if options else "")
+    return text.replace("@PARAMETERS@", "\n".join(_param_doc(p) for p in _taken(function)))
 
 
 for _f in _DOCS:

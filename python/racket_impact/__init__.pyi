@@ -74,6 +74,13 @@ class NotUsedWarning(RacketImpactWarning):
     """
     ...
 
+class LongRunWarning(RacketImpactWarning):
+    """
+    A call estimated to take more than a minute (told before it starts), or one that has
+    taken more than three times its estimate (told as it goes).
+    """
+    ...
+
 class Impact:
     """
     One impact's result: every field of ``simulate --format json`` as an attribute (units in
@@ -224,6 +231,13 @@ class Impact:
     """
     The run's diagnostics (kind, field, sentence), also given as warnings.
     """
+    @property
+    def series(self) -> pd.DataFrame | dict[str, np.ndarray] | None:
+        """
+        The impact's time series (``simulate(series=True)``; ``simulate --series``'s CSV
+        columns), a DataFrame where pandas is installed, else a dict of numpy arrays; ``None``
+        unless asked for.
+        """
     def __getattr__(self, name: str) -> Any: ...
     def __getitem__(self, name: str) -> Any: ...
     def keys(self) -> KeysView[str]: ...
@@ -236,43 +250,47 @@ def simulate(
     *,
     racket: str | os.PathLike[str] | Racket | None = None,
     config: str | os.PathLike[str] | None = None,
-    x: float | str | None = None,
-    r: float | str | None = None,
-    ks: float | str | None = None,
-    ei: float | str | None = None,
-    mass: float | str | None = None,
-    length: float | str | None = None,
-    ix: float | str | None = None,
-    half_width: float | str | None = None,
-    mb: float | str | None = None,
-    k1: float | str | None = None,
-    p: float | str | None = None,
-    v1: float | str | None = None,
-    segments: int | str | None = None,
+    progress: bool | None = None,
+    series: bool = False,
+    series_dt: float = 2e-05,
+    series_end: float = 0.0,
+    x: float | None = None,
+    r: float | None = None,
+    ks: float | None = None,
+    ei: float | None = None,
+    mass: float | None = None,
+    length: float | None = None,
+    ix: float | None = None,
+    half_width: float | None = None,
+    mb: float | None = None,
+    k1: float | None = None,
+    p: float | None = None,
+    v1: float | None = None,
+    segments: int | None = None,
     load: str | None = None,
-    dt: float | str | None = None,
+    dt: float | None = None,
     solver: str | None = None,
     frame: str | None = None,
     grip: str | None = None,
     strings: str | None = None,
-    string_stiffening: float | str | None = None,
-    stiffening_deflection: float | str | None = None,
-    hand_stiffness: float | str | None = None,
-    hand_damping: float | str | None = None,
-    grip_length: float | str | None = None,
-    angle_deg: float | str | None = None,
-    azimuth_deg: float | str | None = None,
-    spin_rpm: float | str | None = None,
-    mu: float | str | None = None,
-    mu_scale: float | str | None = None,
-    kt: float | str | None = None,
+    string_stiffening: float | None = None,
+    stiffening_deflection: float | None = None,
+    hand_stiffness: float | None = None,
+    hand_damping: float | None = None,
+    grip_length: float | None = None,
+    angle_deg: float | None = None,
+    azimuth_deg: float | None = None,
+    spin_rpm: float | None = None,
+    mu: float | None = None,
+    mu_scale: float | None = None,
+    kt: float | None = None,
     tangential: str | None = None,
-    mu_ss: float | str | None = None,
+    mu_ss: float | None = None,
     string: str | None = None,
-    ball_radius: float | str | None = None,
-    ball_inertia_factor: float | str | None = None,
-    ball_ex: float | str | None = None,
-    ball_kdyn: float | str | None = None,
+    ball_radius: float | None = None,
+    ball_inertia_factor: float | None = None,
+    ball_ex: float | None = None,
+    ball_kdyn: float | None = None,
 ) -> Impact:
     """
     One impact: the ball's rebound (e_A), contact time, twist and where the energy went.
@@ -295,6 +313,19 @@ def simulate(
         the paper's racket, strings and ball, and the impact moves to the centre of its head.
     config : str or os.PathLike, optional
         A TOML file with any parameter key (as the command line's --config); keywords win.
+    progress : bool, optional
+        Show the call's progress (tqdm's bar where tqdm is installed, else a line on standard
+        error): by default once the call has run a second; False: never. Ctrl-C stops any call
+        within a second (KeyboardInterrupt), with nothing kept.
+    series : bool
+        Also record the impact's time series (t, F, y_b, Y_T, theta, every energy term); needs the fd solver.
+        Default: False.
+    series_dt : float
+        Sample spacing of the time series, s.
+        Default: 2e-05.
+    series_end : float
+        Extend the time series to at least this time, s.
+        Default: 0.0.
     x : float, m [Impact]
         Impact distance from the tip, m (0 <= x <= length).
         Allowed: 0 <= x <= length.
@@ -517,6 +548,8 @@ def sweep(
     *,
     racket: str | os.PathLike[str] | Racket | None = None,
     config: str | os.PathLike[str] | None = None,
+    progress: bool | None = None,
+    long: bool = False,
     x: float | str | Sequence[float] | np.ndarray | None = None,
     r: float | str | Sequence[float] | np.ndarray | None = None,
     ks: float | str | Sequence[float] | np.ndarray | None = None,
@@ -578,6 +611,13 @@ def sweep(
         the paper's racket, strings and ball, and the impact moves to the centre of its head.
     config : str or os.PathLike, optional
         A TOML file with any parameter key (as the command line's --config); keywords win.
+    progress : bool, optional
+        Show the call's progress (tqdm's bar where tqdm is installed, else a line on standard
+        error): by default once the call has run a second; False: never. Ctrl-C stops any call
+        within a second (KeyboardInterrupt), with nothing kept.
+    long : bool
+        Run even when the work is estimated above ten minutes, which is refused without it (a run estimated above a minute says so before it starts).
+        Default: False.
     x : float, m [Impact]
         Impact distance from the tip, m (0 <= x <= length).
         Allowed: 0 <= x <= length.
@@ -820,39 +860,39 @@ def face_map(
     compare_racket: str | os.PathLike[str] | Racket | None = None,
     compare_tension_lb: float | Sequence[float] | None = None,
     config: str | os.PathLike[str] | None = None,
-    ks: float | str | None = None,
-    ei: float | str | None = None,
-    mass: float | str | None = None,
-    length: float | str | None = None,
-    ix: float | str | None = None,
-    half_width: float | str | None = None,
-    mb: float | str | None = None,
-    k1: float | str | None = None,
-    p: float | str | None = None,
-    v1: float | str | None = None,
-    segments: int | str | None = None,
+    ks: float | None = None,
+    ei: float | None = None,
+    mass: float | None = None,
+    length: float | None = None,
+    ix: float | None = None,
+    half_width: float | None = None,
+    mb: float | None = None,
+    k1: float | None = None,
+    p: float | None = None,
+    v1: float | None = None,
+    segments: int | None = None,
     load: str | None = None,
     frame: str | None = None,
     grip: str | None = None,
     strings: str | None = None,
-    string_stiffening: float | str | None = None,
-    stiffening_deflection: float | str | None = None,
-    hand_stiffness: float | str | None = None,
-    hand_damping: float | str | None = None,
-    grip_length: float | str | None = None,
-    angle_deg: float | str | None = None,
-    azimuth_deg: float | str | None = None,
-    spin_rpm: float | str | None = None,
-    mu: float | str | None = None,
-    mu_scale: float | str | None = None,
-    kt: float | str | None = None,
+    string_stiffening: float | None = None,
+    stiffening_deflection: float | None = None,
+    hand_stiffness: float | None = None,
+    hand_damping: float | None = None,
+    grip_length: float | None = None,
+    angle_deg: float | None = None,
+    azimuth_deg: float | None = None,
+    spin_rpm: float | None = None,
+    mu: float | None = None,
+    mu_scale: float | None = None,
+    kt: float | None = None,
     tangential: str | None = None,
-    mu_ss: float | str | None = None,
+    mu_ss: float | None = None,
     string: str | None = None,
-    ball_radius: float | str | None = None,
-    ball_inertia_factor: float | str | None = None,
-    ball_ex: float | str | None = None,
-    ball_kdyn: float | str | None = None,
+    ball_radius: float | None = None,
+    ball_inertia_factor: float | None = None,
+    ball_ex: float | None = None,
+    ball_kdyn: float | None = None,
 ) -> FaceMap:
     """
     A quantity over the string face, one impact per point of an nx x nr grid (``map``).
@@ -877,6 +917,10 @@ def face_map(
         the paper's racket, strings and ball, and the impact moves to the centre of its head.
     config : str or os.PathLike, optional
         A TOML file with any parameter key (as the command line's --config); keywords win.
+    progress : bool, optional
+        Show the call's progress (tqdm's bar where tqdm is installed, else a line on standard
+        error): by default once the call has run a second; False: never. Ctrl-C stops any call
+        within a second (KeyboardInterrupt), with nothing kept.
     ks : float, N/m [Strings]
         String-plane stiffness, N/m (1 ..= 1e12).
         Allowed: 1 <= ks <= 1e12 N/m.
@@ -1107,43 +1151,43 @@ def uncertainty(
     seed: int | None = None,
     racket: str | os.PathLike[str] | Racket | None = None,
     config: str | os.PathLike[str] | None = None,
-    x: float | str | None = None,
-    r: float | str | None = None,
-    ks: float | str | None = None,
-    ei: float | str | None = None,
-    mass: float | str | None = None,
-    length: float | str | None = None,
-    ix: float | str | None = None,
-    half_width: float | str | None = None,
-    mb: float | str | None = None,
-    k1: float | str | None = None,
-    p: float | str | None = None,
-    v1: float | str | None = None,
-    segments: int | str | None = None,
+    x: float | None = None,
+    r: float | None = None,
+    ks: float | None = None,
+    ei: float | None = None,
+    mass: float | None = None,
+    length: float | None = None,
+    ix: float | None = None,
+    half_width: float | None = None,
+    mb: float | None = None,
+    k1: float | None = None,
+    p: float | None = None,
+    v1: float | None = None,
+    segments: int | None = None,
     load: str | None = None,
-    dt: float | str | None = None,
+    dt: float | None = None,
     solver: str | None = None,
     frame: str | None = None,
     grip: str | None = None,
     strings: str | None = None,
-    string_stiffening: float | str | None = None,
-    stiffening_deflection: float | str | None = None,
-    hand_stiffness: float | str | None = None,
-    hand_damping: float | str | None = None,
-    grip_length: float | str | None = None,
-    angle_deg: float | str | None = None,
-    azimuth_deg: float | str | None = None,
-    spin_rpm: float | str | None = None,
-    mu: float | str | None = None,
-    mu_scale: float | str | None = None,
-    kt: float | str | None = None,
+    string_stiffening: float | None = None,
+    stiffening_deflection: float | None = None,
+    hand_stiffness: float | None = None,
+    hand_damping: float | None = None,
+    grip_length: float | None = None,
+    angle_deg: float | None = None,
+    azimuth_deg: float | None = None,
+    spin_rpm: float | None = None,
+    mu: float | None = None,
+    mu_scale: float | None = None,
+    kt: float | None = None,
     tangential: str | None = None,
-    mu_ss: float | str | None = None,
+    mu_ss: float | None = None,
     string: str | None = None,
-    ball_radius: float | str | None = None,
-    ball_inertia_factor: float | str | None = None,
-    ball_ex: float | str | None = None,
-    ball_kdyn: float | str | None = None,
+    ball_radius: float | None = None,
+    ball_inertia_factor: float | None = None,
+    ball_ex: float | None = None,
+    ball_kdyn: float | None = None,
 ) -> Uncertainty:
     """
     An impact's result fields under uncertain inputs: quantiles and Sobol' indices.
@@ -1169,6 +1213,10 @@ def uncertainty(
         the paper's racket, strings and ball, and the impact moves to the centre of its head.
     config : str or os.PathLike, optional
         A TOML file with any parameter key (as the command line's --config); keywords win.
+    progress : bool, optional
+        Show the call's progress (tqdm's bar where tqdm is installed, else a line on standard
+        error): by default once the call has run a second; False: never. Ctrl-C stops any call
+        within a second (KeyboardInterrupt), with nothing kept.
     x : float, m [Impact]
         Impact distance from the tip, m (0 <= x <= length).
         Allowed: 0 <= x <= length.

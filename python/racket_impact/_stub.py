@@ -15,8 +15,10 @@ import sys
 
 import racket_impact as ri
 
-#: A parameter's type as a keyword: a value of its kind, or its text as the command line takes it.
-_TYPES = {"number": "float | str", "count": "int | str", "choice": "str"}
+#: A parameter's type as a keyword: a value of its kind (a text is not a number: ``TypeError``).
+_TYPES = {"number": "float", "count": "int", "choice": "str"}
+#: A command option's type.
+_OPTION = {"switch": "bool", "count": "int", "number": "float", "text": "str", "choice": "str"}
 #: A swept parameter's type: values, one value, or a spec string.
 _AXIS = {"number": "float | str | Sequence[float] | np.ndarray", "count": "int | str | Sequence[int]", "choice": "str | Sequence[str]"}
 #: A result field's Python type.
@@ -29,10 +31,25 @@ def _doc(text: str | None, indent: str) -> str:
     return f'{indent}"""\n{body}\n{indent}"""'
 
 
+def _options(f) -> str:
+    """The options of f's command (the library's declaration), with their defaults, and
+    ``progress``, for a function that runs a command of the library's layer."""
+    if f not in ri._COMMAND_OF:
+        return ""
+    lines = ["    progress: bool | None = None"]
+    for o in ri._COMMANDS[ri._COMMAND_OF[f]]:
+        kind = _OPTION[o["kind"]]
+        if o["many"]:
+            kind = f"{kind} | Sequence[{kind}]"
+        default = ri._option_default(o)
+        lines.append(f"    {o['keyword']}: {kind}{' | None' if default is None else ''} = {default!r}")
+    return ",\n" + ",\n".join(lines)
+
+
 def _function(f, own: str, returns: str, types: dict[str, str]) -> str:
-    """``def f(own, *, <every parameter f takes>) -> returns`` with f's docstring."""
+    """``def f(own, *, <f's options>, <every parameter f takes>) -> returns`` with f's docstring."""
     params = ",\n".join(f"    {p['name']}: {types[p['kind']]} | None = None" for p in ri._taken(f))
-    return f"def {f.__name__}(\n{own},\n{params},\n) -> {returns}:\n{_doc(ri._docstring(f), '    ')}\n"
+    return f"def {f.__name__}(\n{own}{_options(f)},\n{params},\n) -> {returns}:\n{_doc(ri._docstring(f), '    ')}\n"
 
 
 _RACKET = "    *,\n    racket: str | os.PathLike[str] | Racket | None = None,\n    config: str | os.PathLike[str] | None = None"
@@ -55,6 +72,9 @@ def _impact() -> str:
         _doc("The sign convention of the spins (oblique or spinning ball only).", "    "),
         "    diagnostics: list[dict[str, str]]",
         _doc("The run's diagnostics (kind, field, sentence), also given as warnings.", "    "),
+        "    @property",
+        "    def series(self) -> pd.DataFrame | dict[str, np.ndarray] | None:",
+        _doc(ri.Impact.series.__doc__, "        "),
         "    def __getattr__(self, name: str) -> Any: ...",
         "    def __getitem__(self, name: str) -> Any: ...",
         "    def keys(self) -> KeysView[str]: ...",
@@ -88,7 +108,14 @@ def stub() -> str:
         _doc(ri.parameters.__doc__, "    "),
         "",
     ]
-    for w in (ri.RacketImpactWarning, ri.UnusualValueWarning, ri.BeyondModelWarning, ri.MissingDataWarning, ri.NotUsedWarning):
+    for w in (
+        ri.RacketImpactWarning,
+        ri.UnusualValueWarning,
+        ri.BeyondModelWarning,
+        ri.MissingDataWarning,
+        ri.NotUsedWarning,
+        ri.LongRunWarning,
+    ):
         body = ["    kind: str", "    field: str", "    def __init__(self, sentence: str, kind: str = ..., field: str = ...) -> None: ..."]
         parts.append(_class(w, body if w is ri.RacketImpactWarning else ["    ..."]))
     parts.append(_impact())

@@ -30,9 +30,51 @@ use racket_impact::params::{keys, Overrides};
 use racket_impact::render::table::{Table, Value};
 use racket_impact::study::sweep::Cell;
 
-/// A library error as the `ValueError` the command line's message becomes.
+/// A library error as the `ValueError` the command line's message becomes, in Python's words
+/// ([`pythonic`]).
 fn fail(e: racket_impact::Error) -> PyErr {
-    PyValueError::new_err(e.to_string())
+    PyValueError::new_err(pythonic(&e.to_string()))
+}
+
+/// A message of the library in Python's words: a flag `--angle-deg` is the keyword `angle_deg`
+/// (a switch `--long` is `long=True`), and the parameter or option a message names
+/// (`invalid angle-deg = 95: ... 0 <= angle-deg <= 85 deg`) is named by its keyword.
+fn pythonic(message: &str) -> String {
+    use racket_impact::command::{Kind, ALL};
+    // every name a message can spell with dashes: the parameters' keys and the options' names
+    let keyword = |name: &str| -> Option<(String, bool)> {
+        if let Some(spec) = keys::find(name) {
+            return Some((spec.name.to_string(), false));
+        }
+        ALL.iter()
+            .flat_map(|d| d.options.iter())
+            .find(|o| o.name == name)
+            .map(|o| (o.keyword(), o.kind == Kind::Switch))
+    };
+    let mut out = String::with_capacity(message.len());
+    let mut rest = message;
+    while !rest.is_empty() {
+        let word_len = rest.find(|c: char| !(c.is_ascii_alphanumeric() || c == '-' || c == '_')).unwrap_or(rest.len());
+        if word_len == 0 {
+            let c = rest.chars().next().unwrap_or(' ');
+            out.push(c);
+            rest = &rest[c.len_utf8()..];
+            continue;
+        }
+        let word = &rest[..word_len];
+        rest = &rest[word_len..];
+        let (dashes, name) = match word.strip_prefix("--") {
+            Some(name) => (true, name),
+            None => (false, word),
+        };
+        match keyword(name) {
+            Some((kw, switch)) if dashes => out.push_str(&if switch { format!("{kw}=True") } else { kw }),
+            // (a bare key with a dash is a name too; one without, `ks`, reads the same)
+            Some((kw, _)) if name.contains('-') => out.push_str(&kw),
+            _ => out.push_str(word),
+        }
+    }
+    out
 }
 
 /// JSON as text (the library's layout: what the commands print).
@@ -66,11 +108,15 @@ fn overrides(pairs: &[(String, String)]) -> racket_impact::Result<Overrides> {
     Ok(flags)
 }
 
-/// Where an impact's parameters come from, as a command's flags would give them.
-fn sources(args: &Bound<'_, PyTuple>, command: &'static str) -> PyResult<Sources> {
-    let racket: Option<String> = arg(args, 0)?;
-    let config: Option<String> = arg(args, 1)?;
-    let pairs: Vec<(String, String)> = arg(args, 2)?;
+/// Where an impact's parameters come from, as a command's flags would give them: the racket,
+/// the config file and the parameters `(name, text)` at argument `at` of `args`.
+fn sources(
+    args: &Bound<'_, PyTuple>,
+    at: usize,
+    (racket, config): (Option<String>, Option<String>),
+    command: &'static str,
+) -> PyResult<Sources> {
+    let pairs: Vec<(String, String)> = arg(args, at)?;
     Ok(Sources {
         racket,
         config: config.map(Into::into),
@@ -159,11 +205,153 @@ fn result_fields() -> PyResult<String> {
     json_text(&serde_json::Value::Array(rows))
 }
 
-/// `simulate(racket, config, pairs)`: the JSON document of `simulate --format json`.
-fn simulate(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<String> {
-    let sources = sources(args, "simulate")?;
-    let doc = py.detach(|| racket_impact::study::impact::Single::run(&sources).and_then(|s| s.json())).map_err(fail)?;
-    json_text(&doc)
+/// `commands()`: every command on the layer with its options, as JSON: `{command: [{name,
+/// keyword, kind, lo, hi, choices, many, default, help}]}`.
+fn commands() -> PyResult<String> {
+    use racket_impact::command::{Kind, Many, ALL};
+    let table: serde_json::Map<String, serde_json::Value> = ALL
+        .iter()
+        .map(|d| {
+            let options: Vec<serde_json::Value> = d
+                .options
+                .iter()
+                .map(|o| {
+                    let (kind, lo, hi, choices): (&str, Option<u64>, Option<u64>, &[&str]) = match o.kind {
+                        Kind::Switch => ("switch", None, None, &[]),
+                        Kind::Count { lo, hi } => ("count", Some(lo), Some(hi), &[]),
+                        Kind::Number => ("number", None, None, &[]),
+                        Kind::Text => ("text", None, None, &[]),
+                        Kind::Choice(c) => ("choice", None, None, c),
+                    };
+                    serde_json::json!({
+                        "name": o.name, "keyword": o.keyword(), "kind": kind, "lo": lo, "hi": hi,
+                        "choices": choices, "many": o.many != Many::One, "default": o.default, "help": o.help,
+                    })
+                })
+                .collect();
+            (d.name.to_string(), serde_json::Value::Array(options))
+        })
+        .collect();
+    json_text(&serde_json::Value::Object(table))
+}
+
+/// How long the calling thread waits for the work between two looks at its signals and its
+/// progress (Ctrl-C stops a call within this and the solvers' poll, a few milliseconds).
+const WATCH_EVERY: std::time::Duration = std::time::Duration::from_millis(50);
+
+/// Run `work` on the library's thread pool under a new [`Control`] while this thread waits with
+/// the GIL released, [`WATCH_EVERY`] at a time; between waits the signals are checked (Ctrl-C:
+/// the control is cancelled, and once the work has stopped, which it does within milliseconds,
+/// the `KeyboardInterrupt` is raised; nothing is returned, and a call writes no file) and
+/// `reporter` is told the notes (`reporter.note(text)`) and the progress
+/// (`reporter.update(position, total, unit, words, elapsed_s)`).
+///
+/// [`Control`]: racket_impact::command::Control
+fn drive<T: Send + 'static>(
+    py: Python<'_>,
+    reporter: Option<&Bound<'_, PyAny>>,
+    work: impl FnOnce(&racket_impact::command::Control) -> racket_impact::Result<T> + Send + 'static,
+) -> PyResult<T> {
+    use std::sync::mpsc::RecvTimeoutError;
+    let ctl = racket_impact::command::Control::new();
+    let (tx, rx) = std::sync::mpsc::channel();
+    let watched = ctl.clone();
+    rayon::spawn(move || {
+        // (a panic is an error of the call, not the end of the interpreter)
+        let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| work(&watched)));
+        let _ = tx.send(outcome);
+    });
+    let tell = |ctl: &racket_impact::command::Control| -> PyResult<()> {
+        let Some(r) = reporter else { return Ok(()) };
+        for note in ctl.take_notes() {
+            r.call_method1("note", (note,))?;
+        }
+        let s = ctl.status();
+        r.call_method1("update", (s.position, s.total, s.unit.name(), s.words(), s.elapsed_s))?;
+        Ok(())
+    };
+    // (the receiver goes into each wait and comes back: it is not shared between threads)
+    let mut rx = rx;
+    loop {
+        let (got, back) = py.detach(move || (rx.recv_timeout(WATCH_EVERY), rx));
+        rx = back;
+        match got {
+            Ok(Ok(outcome)) => {
+                tell(&ctl)?;
+                return outcome.map_err(fail);
+            }
+            Ok(Err(_)) => {
+                return Err(PySystemError::new_err("racket_impact: the work panicked (a bug: please report it)"))
+            }
+            Err(RecvTimeoutError::Disconnected) => {
+                return Err(PySystemError::new_err("racket_impact: the work ended without a result"))
+            }
+            Err(RecvTimeoutError::Timeout) => {}
+        }
+        if let Err(e) = py.check_signals().and_then(|()| tell(&ctl)) {
+            ctl.cancel();
+            // (the work stops at its next poll; nothing of it is kept)
+            let _ = py.detach(move || rx.recv());
+            return Err(e);
+        }
+    }
+}
+
+/// The options `(name, [texts])` of the command `opts` declares, as [`Given`].
+///
+/// [`Given`]: racket_impact::command::Given
+fn given(
+    opts: &'static [racket_impact::command::Opt],
+    pairs: &[(String, Vec<String>)],
+) -> racket_impact::Result<racket_impact::command::Given> {
+    let mut given = racket_impact::command::Given::new(opts);
+    for (name, texts) in pairs {
+        for t in texts {
+            given.set(name, t.as_str())?;
+        }
+    }
+    Ok(given)
+}
+
+/// `call(command, racket, config, pairs, options, reporter)`: the command `command` of the
+/// layer ([`racket_impact::command`]) with the parameters `pairs` and its options `options`
+/// (`(keyword, [texts])`), run under [`drive`]: what each returns is in its arm below.
+fn call(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyAny>> {
+    use racket_impact::command::{execute, options_of};
+    let command: String = arg(args, 0)?;
+    let racket: Option<String> = arg(args, 1)?;
+    let config: Option<String> = arg(args, 2)?;
+    let options: Vec<(String, Vec<String>)> = arg(args, 4)?;
+    let reporter: Option<Bound<'_, PyAny>> = arg(args, 5)?;
+    let opts = options_of(&command).ok_or_else(|| PyValueError::new_err(format!("no command {command:?}")))?;
+    let given = given(opts, &options).map_err(fail)?;
+    let reporter = reporter.as_ref();
+    match command.as_str() {
+        "simulate" => {
+            let sources = sources(args, 3, (racket, config), "simulate")?;
+            let done = drive(py, reporter, move |ctl| {
+                execute(racket_impact::command::simulate::Simulate::new(&sources, &given)?, ctl)
+            })?;
+            let doc = json_text(&done.single.json().map_err(fail)?)?;
+            let series = match &done.series {
+                Some(rows) => {
+                    Some(table_py(py, &racket_impact::render::impact::series_table(&done.single.params, rows))?)
+                }
+                None => None,
+            };
+            Ok((doc, series).into_pyobject(py)?.into_any().unbind())
+        }
+        "sweep" => {
+            let axes: Vec<(String, Bound<'_, PyAny>)> = arg(args, 3)?;
+            let pairs = sweep_pairs(&axes)?;
+            let config = config.map(std::path::PathBuf::from);
+            let (header, columns, diagnostics) =
+                drive(py, reporter, move |ctl| sweep(ctl, racket, config, pairs, given))?;
+            let diagnostics = serde_json::to_value(&diagnostics).map_err(|e| PyValueError::new_err(e.to_string()))?;
+            Ok((columns_py(py, header, columns)?, json_text(&diagnostics)?).into_pyobject(py)?.into_any().unbind())
+        }
+        other => Err(PyValueError::new_err(format!("no command {other:?} in this package"))),
+    }
 }
 
 /// One column of numbers, ints or flags as bytes, or of names as a list.
@@ -248,7 +436,15 @@ fn axis_spec(value: &Bound<'_, PyAny>) -> PyResult<String> {
         let bytes = b.as_bytes();
         let values: Vec<String> = bytes
             .chunks_exact(8)
-            .map(|c| racket_impact::numfmt::exact(f64::from_le_bytes(c.try_into().unwrap_or_default())))
+            .map(|c| {
+                // (a value the sweep refuses, NaN or inf, as a scalar one reads: named, not empty)
+                let v = f64::from_le_bytes(c.try_into().unwrap_or_default());
+                if v.is_finite() {
+                    racket_impact::numfmt::exact(v)
+                } else {
+                    v.to_string()
+                }
+            })
             .collect();
         return Ok(values.join(","));
     }
@@ -256,96 +452,97 @@ fn axis_spec(value: &Bound<'_, PyAny>) -> PyResult<String> {
     Ok(list.join(","))
 }
 
-/// `sweep(racket, config, axes)`: every impact of the cartesian product of `axes` (`(name,
-/// values)` each, in order, first slowest), as the `sweep` command runs them; returns the
-/// columns (the CSV's names) and the diagnostics' JSON.
-fn sweep(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<(Py<PyAny>, String)> {
-    use racket_impact::study::sweep::{self, Sweep};
-    let racket: Option<String> = arg(args, 0)?;
-    let config: Option<String> = arg(args, 1)?;
-    let axes: Vec<(String, Bound<'_, PyAny>)> = arg(args, 2)?;
+/// The swept parameters `(name, values)` as the sweep's `--KEY SPEC` pairs, in order, first
+/// slowest.
+fn sweep_pairs(axes: &[(String, Bound<'_, PyAny>)]) -> PyResult<Vec<String>> {
     let mut pairs = Vec::with_capacity(2 * axes.len());
-    for (name, value) in &axes {
+    for (name, value) in axes {
         // (a name Python spells with underscores, as its key)
         let key = keys::find_any(name).map_or(name.as_str(), |s| s.key);
         pairs.push(format!("--{key}"));
         pairs.push(axis_spec(value)?);
     }
-    let config = config.map(std::path::PathBuf::from);
-    // a signal (Ctrl-C in a notebook) stops the sweep after the chunk it arrives in
-    let mut interrupted: Option<PyErr> = None;
-    let run = || -> racket_impact::Result<(Vec<String>, Vec<Column>, Vec<racket_impact::diagnostic::Diagnostic>)> {
-        let sweep = Sweep::from_pairs(racket.as_deref(), config.as_deref(), &pairs)?;
-        let representatives = sweep.representatives()?;
-        let noted = sweep.check_used(&representatives, config.as_deref())?;
-        let header = sweep.header();
-        let mut columns: Vec<Column> = Vec::new();
-        sweep.run_rows(
-            |cells| cells,
-            |rows| {
-                for row in rows {
-                    if columns.is_empty() {
-                        columns = row.iter().enumerate().map(|(k, c)| new_column(&sweep, k, c)).collect();
-                    }
-                    for (column, cell) in columns.iter_mut().zip(row) {
-                        push(column, cell);
-                    }
-                }
-                if let Err(e) = Python::attach(|py| py.check_signals()) {
-                    interrupted = Some(e);
-                    return Err(racket_impact::Error::invalid("sweep", "(interrupted)", "stopped by a signal"));
-                }
-                Ok(())
-            },
-            |_| {},
-        )?;
-        let theta = header.iter().position(|c| c == "theta_end_deg").and_then(|k| match &columns[k] {
-            Column::Numbers(v) => {
-                v.iter().copied().filter(|x| x.is_finite()).max_by(|a, b| a.abs().total_cmp(&b.abs()))
-            }
-            _ => None,
-        });
-        let diagnostics = sweep::diagnostics(&noted, &representatives, theta.unwrap_or(0.0));
-        Ok((header, columns, diagnostics))
+    Ok(pairs)
+}
+
+/// A sweep's impacts as `sweep` runs them (`pairs`: its `--KEY SPEC` pairs), under `ctl`:
+/// the columns (the CSV's names) and the diagnostics.
+fn sweep(
+    ctl: &racket_impact::command::Control,
+    racket: Option<String>,
+    config: Option<std::path::PathBuf>,
+    pairs: Vec<String>,
+    given: racket_impact::command::Given,
+) -> racket_impact::Result<(Vec<String>, Vec<Column>, Vec<racket_impact::diagnostic::Diagnostic>)> {
+    use racket_impact::command::sweep::SweepRequest;
+    let request = SweepRequest::new(racket.as_deref(), config.as_deref(), &pairs, &given)?;
+    let header = request.header();
+    // what each swept column holds, as its parameter is declared (a number, a count, a name)
+    let swept: Vec<Option<Values>> = request.sweep.axes.iter().map(|a| keys::find(&a.key).map(|s| s.values)).collect();
+    let typed = move |cells: Vec<Cell<'_>>| -> Vec<Typed> {
+        cells.iter().enumerate().map(|(k, c)| Typed::of(c, swept.get(k).copied().flatten())).collect()
     };
-    let outcome = py.detach(run);
-    if let Some(e) = interrupted {
-        return Err(e);
-    }
-    let (header, columns, diagnostics) = outcome.map_err(fail)?;
-    let diagnostics = serde_json::to_value(&diagnostics).map_err(|e| PyValueError::new_err(e.to_string()))?;
-    Ok((columns_py(py, header, columns)?, json_text(&diagnostics)?))
-}
-
-/// The column of the sweep's `k`-th cell, `first` its first row's: a swept value is a number,
-/// a whole number or a name as its parameter is declared.
-fn new_column(sweep: &racket_impact::study::sweep::Sweep, k: usize, first: &Cell<'_>) -> Column {
-    match first {
-        Cell::Given(_) => match sweep.axes.get(k).and_then(|a| keys::find(&a.key)).map(|s| s.values) {
-            Some(Values::Number) => Column::Numbers(Vec::new()),
-            Some(Values::Count) => Column::Counts(Vec::new()),
-            _ => Column::Names(Vec::new()),
-        },
-        Cell::Number(_) => Column::Numbers(Vec::new()),
-        Cell::Flag(_) => Column::Flags(Vec::new()),
-        Cell::Name(_) => Column::Names(Vec::new()),
-    }
-}
-
-/// Append a cell to its column (a swept value read as its flag reads it: it was checked when
-/// the sweep was made).
-fn push(column: &mut Column, cell: &Cell<'_>) {
-    match (column, *cell) {
-        (Column::Numbers(v), Cell::Number(x)) => v.push(x),
-        (Column::Numbers(v), Cell::Given(t)) => {
-            v.push(racket_impact::params::number::parse_number(t).unwrap_or(f64::NAN))
+    let mut columns: Vec<Column> = Vec::new();
+    let sink = |rows: &[Vec<Typed>]| -> racket_impact::Result<()> {
+        for row in rows {
+            if columns.is_empty() {
+                columns = row.iter().map(Typed::column).collect();
+            }
+            for (column, cell) in columns.iter_mut().zip(row) {
+                cell.push(column);
+            }
         }
-        (Column::Counts(v), Cell::Given(t)) => v.push(t.trim().parse().unwrap_or(-1)),
-        (Column::Flags(v), Cell::Flag(f)) => v.push(u8::from(f)),
-        (Column::Names(v), c) => v.push(c.text()),
-        (Column::Numbers(v), _) => v.push(f64::NAN),
-        (Column::Counts(v), _) => v.push(-1),
-        (Column::Flags(v), _) => v.push(0),
+        Ok(())
+    };
+    let diagnostics = racket_impact::command::execute(request.stream(typed, sink), ctl)?.diagnostics;
+    Ok((header, columns, diagnostics))
+}
+
+/// A sweep's cell as its column keeps it (made in parallel, with the rows).
+enum Typed {
+    Number(f64),
+    Count(i64),
+    Flag(bool),
+    Name(String),
+}
+
+impl Typed {
+    /// The cell `c`, a swept value read as its parameter `swept` is declared (a number, a
+    /// whole number, a name), as its flag reads it: it was checked when the sweep was made.
+    fn of(c: &Cell<'_>, swept: Option<Values>) -> Typed {
+        match (*c, swept) {
+            (Cell::Given(t), Some(Values::Number)) => {
+                Typed::Number(racket_impact::params::number::parse_number(t).unwrap_or(f64::NAN))
+            }
+            (Cell::Given(t), Some(Values::Count)) => Typed::Count(t.trim().parse().unwrap_or(-1)),
+            (Cell::Number(x), _) => Typed::Number(x),
+            (Cell::Flag(f), _) => Typed::Flag(f),
+            (c, _) => Typed::Name(c.text()),
+        }
+    }
+
+    /// The column of a cell like this one.
+    fn column(&self) -> Column {
+        match self {
+            Typed::Number(_) => Column::Numbers(Vec::new()),
+            Typed::Count(_) => Column::Counts(Vec::new()),
+            Typed::Flag(_) => Column::Flags(Vec::new()),
+            Typed::Name(_) => Column::Names(Vec::new()),
+        }
+    }
+
+    /// Append the cell to its column.
+    fn push(&self, column: &mut Column) {
+        match (column, self) {
+            (Column::Numbers(v), Typed::Number(x)) => v.push(*x),
+            (Column::Counts(v), Typed::Count(i)) => v.push(*i),
+            (Column::Flags(v), Typed::Flag(f)) => v.push(u8::from(*f)),
+            (Column::Names(v), Typed::Name(t)) => v.push(t.clone()),
+            (Column::Numbers(v), _) => v.push(f64::NAN),
+            (Column::Counts(v), _) => v.push(-1),
+            (Column::Flags(v), _) => v.push(0),
+            (Column::Names(v), _) => v.push(String::new()),
+        }
     }
 }
 
@@ -354,7 +551,7 @@ fn push(column: &mut Column, cell: &Cell<'_>) {
 /// JSON).
 fn face_map(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyAny>> {
     use racket_impact::study::map::{MapRequest, Quantity, MAP_SETS};
-    let mut sources = sources(args, "map")?;
+    let mut sources = sources(args, 2, (arg(args, 0)?, arg(args, 1)?), "map")?;
     let quantity: String = arg(args, 3)?;
     let (nx, nr): (usize, usize) = (arg(args, 4)?, arg(args, 5)?);
     let compare_racket: Option<String> = arg(args, 6)?;
@@ -366,15 +563,15 @@ fn face_map(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyAny>> {
     }
     let quantity: Quantity = quantity.parse().map_err(fail)?;
     let request = MapRequest { sources, quantity, nx, nr, compare_racket, compare_tension_lb };
-    let run = || -> racket_impact::Result<_> {
+    let run = move |ctl: &racket_impact::command::Control| -> racket_impact::Result<_> {
         request.check()?;
         let (configs, _) = request.configurations()?;
         let noted = request.check_used(&configs)?;
-        let map = request.run(&configs, &mut |_| {})?;
+        let map = ctl.within(|| request.run(&configs, &mut |_| {}))?;
         let diagnostics: Vec<_> = noted.into_iter().chain(map.diagnostics(configs.iter().map(|(_, p)| p))).collect();
         Ok((map, diagnostics))
     };
-    let (map, diagnostics) = py.detach(run).map_err(fail)?;
+    let (map, diagnostics) = drive(py, None, run)?;
     let diagnostics = serde_json::to_value(&diagnostics).map_err(|e| PyValueError::new_err(e.to_string()))?;
     let grid = (
         Column::Numbers(map.grid.xs.clone()).into_py(py)?,
@@ -389,16 +586,16 @@ fn face_map(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyAny>> {
 /// `uncertainty --format json`.
 fn uncertainty(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<String> {
     use racket_impact::study::uncertainty::{Study, DEFAULT_SAMPLES};
-    let sources = sources(args, "uncertainty")?;
+    let sources = sources(args, 2, (arg(args, 0)?, arg(args, 1)?), "uncertainty")?;
     let vary: Vec<String> = arg(args, 3)?;
     let samples: Option<u64> = arg(args, 4)?;
     let seed: Option<u32> = arg(args, 5)?;
-    let run = || -> racket_impact::Result<serde_json::Value> {
+    let run = move |ctl: &racket_impact::command::Control| -> racket_impact::Result<serde_json::Value> {
         let study = Study::from_sources(&sources, &vary, samples.unwrap_or(DEFAULT_SAMPLES), seed.unwrap_or(0))?;
-        let outputs = study.run(|_| {})?;
+        let outputs = ctl.within(|| study.run(|_| {}))?;
         Ok(study.json(&outputs))
     };
-    json_text(&py.detach(run).map_err(fail)?)
+    json_text(&drive(py, None, run)?)
 }
 
 /// `presets(segments)`: the presets' table (`racket --list`).
@@ -450,15 +647,15 @@ fn run_experiment(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyAn
     use racket_impact::experiments::{find, Context};
     let id: String = arg(args, 0)?;
     let racket: Option<String> = arg(args, 1)?;
-    let run = || -> racket_impact::Result<Table> {
+    let run = move |ctl: &racket_impact::command::Control| -> racket_impact::Result<Table> {
         let e = find(&id)?;
         let ctx = match &racket {
             Some(r) => Context::for_racket(r)?,
             None => Context::paper(),
         };
-        (e.run)(&ctx)
+        ctl.within(|| (e.run)(&ctx))
     };
-    let table = py.detach(run).map_err(fail)?;
+    let table = drive(py, None, run)?;
     table_py(py, &table)
 }
 
@@ -482,8 +679,8 @@ fn module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     add(m, c"parameters", c"parameters() -> JSON of every declared parameter", |_, _| parameters())?;
     add(m, c"map_sets", c"map_sets() -> JSON [(key, why)] of what a map sets itself", |_, _| map_sets())?;
     add(m, c"result_fields", c"result_fields() -> JSON of every result field", |_, _| result_fields())?;
-    add(m, c"simulate", c"simulate(racket, config, pairs) -> simulate's JSON", simulate)?;
-    add(m, c"sweep", c"sweep(racket, config, axes) -> (columns, diagnostics JSON)", sweep)?;
+    add(m, c"commands", c"commands() -> JSON of every command's options", |_, _| commands())?;
+    add(m, c"call", c"call(command, racket, config, pairs, options, reporter) -> the command's result", call)?;
     add(m, c"face_map", c"face_map(racket, config, pairs, quantity, nx, nr, compare_racket, tensions)", face_map)?;
     add(m, c"uncertainty", c"uncertainty(racket, config, pairs, vary, samples, seed) -> JSON", uncertainty)?;
     add(m, c"presets", c"presets(segments) -> table", presets)?;

@@ -1,5 +1,8 @@
-"""Every bad input raises: a bad value ValueError with the command line's one-line message, an
-unknown keyword or a value of the wrong type TypeError; nothing is printed."""
+"""Every bad input raises: a bad value ValueError with the command line's one-line message in
+Python's words (keywords, not flags), an unknown keyword or a value of the wrong type TypeError;
+nothing is printed."""
+
+import re
 
 import numpy as np
 import pytest
@@ -14,7 +17,8 @@ VALUE_ERRORS = [
     (ri.simulate, {"p": 1}, ["simulate"]),
     (ri.simulate, {"x": 0.9}, ["simulate"]),
     (ri.simulate, {"ks": float("nan")}, ["simulate"]),
-    (ri.simulate, {"ks": "1e-400"}, ["simulate"]),
+    (ri.simulate, {"angle_deg": 95}, ["simulate"]),
+    (ri.simulate, {"grip": "hand", "solver": "modal"}, ["simulate"]),
     (ri.simulate, {"segments": 2}, ["simulate"]),
     (ri.simulate, {"solver": "modal", "dt": 1e-6}, ["simulate"]),
     (ri.simulate, {"frame": "rigid", "angle_deg": 30}, ["simulate"]),
@@ -23,8 +27,6 @@ VALUE_ERRORS = [
     (ri.simulate, {"string": "alu-power-16", "mu": 0.3, "angle_deg": 20}, ["simulate"]),
     # (a value the command line's flag parser refuses before the library sees it: the message
     # of the library's own reading, as a sweep or a config file gets it)
-    (ri.simulate, {"ks": "abc"}, ["sweep"]),
-    (ri.simulate, {"segments": 39.5}, ["sweep"]),
     (ri.simulate, {"load": "nodes"}, ["sweep"]),
     (ri.simulate, {"string": "nope"}, ["sweep"]),
     (ri.sweep, {"ks": "1:2:3:lin"}, ["sweep"]),
@@ -33,6 +35,9 @@ VALUE_ERRORS = [
     (ri.sweep, {"x": [0.1, 0.9]}, ["sweep"]),
     (ri.sweep, {"x": [0.1, 0.2], "ks": [0.5, 4e4]}, ["sweep"]),
     (ri.sweep, {"ks": []}, ["sweep"]),
+    # (a NaN in a list as a NaN alone)
+    (ri.sweep, {"ks": [2e4, float("nan")]}, ["sweep"]),
+    (ri.sweep, {"angle_deg": [10, 95]}, ["sweep"]),
     (ri.uncertainty, {"vary": ["ks=uniform:2e4:6e4"], "ks": 3e4}, ["uncertainty", "--vary", "ks=uniform:2e4:6e4"]),
     (ri.uncertainty, {"vary": ["load=uniform:1:2"]}, ["uncertainty", "--vary", "load=uniform:1:2"]),
     (ri.uncertainty, {"vary": ["ks=uniform:0:6e4"]}, ["uncertainty", "--vary", "ks=uniform:0:6e4"]),
@@ -56,9 +61,32 @@ def _cli_args(function, kwargs, command):
     return command + flags(rest)
 
 
+#: The command line's switches: `--long` is `long=True` in Python.
+SWITCHES = {o["name"] for options in ri._COMMANDS.values() for o in options if o["kind"] == "switch"}
+#: Every name a message spells with a dash: the parameters' keys and the options' names.
+DASHED = {p["key"] for p in ri.parameters()} | {o["name"] for options in ri._COMMANDS.values() for o in options}
+
+
+def python_words(message):
+    """A command-line message in Python's words: a flag is its keyword (a switch `=True`), a
+    name with a dash the keyword with an underscore."""
+    message = re.sub(r"--([a-z][a-z0-9-]*)", lambda m: m[1] + ("=True" if m[1] in SWITCHES else ""), message)
+    for name in sorted(DASHED, key=len, reverse=True):
+        if "-" in name:
+            message = re.sub(rf"(?<![\w-]){re.escape(name)}(?![\w-])", name.replace("-", "_"), message)
+    return message
+
+
+def test_python_words_are_the_keywords():
+    assert python_words("invalid angle-deg = 95: must satisfy 0 <= angle-deg <= 85 deg") == (
+        "invalid angle_deg = 95: must satisfy 0 <= angle_deg <= 85 deg"
+    )
+    assert python_words("give --long to run it anyway; --solver fd") == "give long=True to run it anyway; solver fd"
+
+
 @pytest.mark.parametrize("function,kwargs,command", VALUE_ERRORS, ids=lambda v: str(v) if isinstance(v, dict) else "")
 def test_bad_value_is_value_error_with_the_command_lines_message(function, kwargs, command, tmp_cwd, capfd):
-    expected = cli_error(*_cli_args(function, kwargs, command))
+    expected = python_words(cli_error(*_cli_args(function, kwargs, command)))
     with pytest.raises(ValueError) as e:
         function(**kwargs)
     assert str(e.value) == expected
@@ -81,6 +109,15 @@ def test_unknown_keyword_is_type_error_with_the_nearest_names():
 
 
 def test_wrong_types_are_type_errors():
+    # (as in any numpy-style API: a text is not a number, nor a real number a whole one)
+    with pytest.raises(TypeError, match="ks takes a number, not '4e4'"):
+        ri.simulate(ks="4e4")
+    with pytest.raises(TypeError, match="ks takes a number, not 'abc'"):
+        ri.simulate(ks="abc")
+    with pytest.raises(TypeError, match="segments takes a whole number, not 39.5"):
+        ri.simulate(segments=39.5)
+    with pytest.raises(TypeError, match=r"sweep\(\) argument long takes True or False, not 1"):
+        ri.sweep(x=[0.1], long=1)
     with pytest.raises(TypeError, match="ks takes a number, not True"):
         ri.simulate(ks=True)
     with pytest.raises(TypeError, match="ks takes a number"):

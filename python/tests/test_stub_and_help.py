@@ -4,6 +4,8 @@ import inspect
 import pydoc
 from pathlib import Path
 
+import pytest
+
 import racket_impact as ri
 from racket_impact import _stub
 
@@ -73,4 +75,21 @@ def test_a_new_declaration_row_reaches_every_python_name(monkeypatch):
         assert ri._param(spelling, "simulate")["key"] == "made-up"
     assert ri._pairs({"made_up": 3e4}, "simulate") == [("made-up", "30000.0")]
     assert "made_up : float, N/m [Strings]" in ri._docstring(ri.simulate)
-    assert "    made_up: float | str | None = None," in _stub.stub()
+    assert "    made_up: float | None = None," in _stub.stub()
+
+
+def test_a_new_option_row_reaches_the_keyword_its_type_check_the_help_and_the_stub(monkeypatch):
+    # a made-up option of sweep as the library would hand its row over (`command::sweep::OPTIONS`):
+    # nothing else is written for it, yet it is a keyword with its default, checked for its type,
+    # passed to the library as its flag's text, in the help and in the stub
+    row = dict(name="max-twist-deg", keyword="max_twist_deg", kind="number", lo=None, hi=None, choices=[],
+               many=False, default="5", help="A made-up limit on the twist, degrees")
+    monkeypatch.setitem(ri._COMMANDS, "sweep", ri._COMMANDS["sweep"] + [row])
+    options, axes = ri._split("sweep", {"max_twist_deg": 2.5, "x": [0.1]})
+    assert axes == {"x": [0.1]}
+    assert ri._options("sweep", "sweep", options) == [("max_twist_deg", ["2.5"])]
+    with pytest.raises(TypeError, match=r"sweep\(\) argument max_twist_deg takes a number, not '2.5'"):
+        ri._options("sweep", "sweep", {"max_twist_deg": "2.5"})
+    assert ri._signature(ri.sweep, []).parameters["max_twist_deg"].default == 5.0
+    assert "max_twist_deg : float\n    A made-up limit on the twist, degrees.\n    Default: 5.0." in ri._docstring(ri.sweep)
+    assert "    max_twist_deg: float = 5.0," in _stub.stub()

@@ -264,3 +264,71 @@ impl Drop for Progress {
         self.bar.finish_and_clear();
     }
 }
+
+/// A run's progress and notes on stderr, read from its [`Control`] by a thread of its own every
+/// [`Reporter::EVERY`]: each note (the estimate before the work, a run outliving three times its
+/// estimate) as one `warning:` line as it comes, unless `--quiet`; the bar, with the position
+/// (the impacts in flight counted in part), a rate a person reads and the time left, only on a
+/// terminal, without `--quiet`, and once the run has taken [`Progress::DELAY`]. On drop, the
+/// notes left are told and the bar is cleared.
+///
+/// [`Control`]: racket_impact::command::Control
+pub struct Reporter {
+    /// Dropped to tell the watcher the run is over.
+    stop: Option<std::sync::mpsc::Sender<()>>,
+    watcher: Option<std::thread::JoinHandle<()>>,
+}
+
+impl Reporter {
+    /// How often the control is read.
+    pub const EVERY: std::time::Duration = std::time::Duration::from_millis(100);
+
+    /// Report the run `ctl` controls.
+    pub fn start(ctl: &racket_impact::command::Control) -> Reporter {
+        use std::io::IsTerminal;
+        let ctl = ctl.clone();
+        let quiet = QUIET.load(std::sync::atomic::Ordering::Relaxed);
+        let drawn = std::io::stderr().is_terminal() && !quiet;
+        let (stop, stopped) = std::sync::mpsc::channel::<()>();
+        let watcher = std::thread::spawn(move || {
+            let started = std::time::Instant::now();
+            let bar = indicatif::ProgressBar::with_draw_target(Some(0), indicatif::ProgressDrawTarget::hidden());
+            bar.set_style(
+                indicatif::ProgressStyle::with_template("{bar:40} {msg}")
+                    .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+            );
+            let (mut shown, mut over) = (false, false);
+            loop {
+                let status = ctl.status();
+                let notes = ctl.take_notes();
+                if !notes.is_empty() {
+                    bar.suspend(|| notes.iter().for_each(|n| warn(n)));
+                }
+                if over {
+                    break;
+                }
+                if drawn && !shown && started.elapsed() >= Progress::DELAY {
+                    bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+                    shown = true;
+                }
+                if shown {
+                    bar.set_length(status.total.max(1) * 1000);
+                    bar.set_position((status.position * 1000.0) as u64);
+                    bar.set_message(status.words());
+                }
+                over = !matches!(stopped.recv_timeout(Self::EVERY), Err(std::sync::mpsc::RecvTimeoutError::Timeout));
+            }
+            bar.finish_and_clear();
+        });
+        Reporter { stop: Some(stop), watcher: Some(watcher) }
+    }
+}
+
+impl Drop for Reporter {
+    fn drop(&mut self) {
+        drop(self.stop.take());
+        if let Some(w) = self.watcher.take() {
+            let _ = w.join();
+        }
+    }
+}

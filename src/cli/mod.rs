@@ -12,6 +12,7 @@ pub mod figures;
 pub mod hints;
 pub mod map;
 pub mod modes;
+pub mod options;
 pub mod overrides;
 pub mod racket;
 pub mod report;

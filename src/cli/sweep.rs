@@ -4,12 +4,15 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use racket_impact::command::sweep::SweepRequest;
+use racket_impact::command::{execute, Control};
 use racket_impact::params::spec::Values;
 use racket_impact::params::{keys, Overrides};
-use racket_impact::study::sweep::Sweep;
+use racket_impact::study::sweep::Cell;
 use racket_impact::Result;
 
-use super::common::{print_diagnostics, stream_stdout, Progress};
+use super::common::{print_diagnostics, stream_stdout, Reporter};
+use super::options::{Options, SweepOptions};
 
 #[derive(Args, Debug)]
 pub struct SweepArgs {
@@ -23,10 +26,8 @@ pub struct SweepArgs {
     /// hard links to the old file keep the old content); standard output if absent
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Run even when the work is estimated above ten minutes, which is refused without it (a run
-    /// estimated above a minute says so before it starts)
-    #[arg(long)]
-    pub long: bool,
+    #[command(flatten)]
+    pub options: Options<SweepOptions>,
     /// The varied parameters: --KEY SPEC pairs
     #[arg(trailing_var_arg = true, allow_hyphen_values = true, value_name = "--KEY SPEC")]
     pub specs: Vec<String>,
@@ -77,20 +78,12 @@ fn keys_with_defaults() -> String {
 
 /// Run the sweep, writing the header and then each finished chunk's rows.
 pub fn run(a: SweepArgs) -> Result<()> {
-    let sweep = Sweep::from_pairs(a.racket.as_deref(), a.config.as_deref(), &a.specs)?;
     // a swept option no impact can honour is refused; a swept property none exercises and a
     // config file's unused keys are noted (printed with the other diagnostics at the end)
-    let representatives = sweep.representatives()?;
-    let noted = sweep.check_used(&representatives, a.config.as_deref())?;
+    let request = SweepRequest::new(a.racket.as_deref(), a.config.as_deref(), &a.specs, &a.options.0)?;
     if let Some(path) = &a.out {
         racket_impact::render::io::check_output_dir("out", path)?;
     }
-    if let Some(note) =
-        sweep.estimate(rayon::current_num_threads()).check("sweep", format!("{} impacts", sweep.len()), a.long)?
-    {
-        super::common::warn(&note);
-    }
-    let progress = Progress::new(sweep.len());
     let mut file = match &a.out {
         Some(path) => Some(racket_impact::render::io::AtomicFile::create(path)?),
         None => None,
@@ -101,28 +94,24 @@ pub fn run(a: SweepArgs) -> Result<()> {
             None => stream_stdout(bytes),
         }
     };
-    let header = sweep.header();
-    let theta_column = header.iter().position(|c| c == "theta_end_deg");
-    emit(&csv_lines(&[header]))?;
-    let mut theta_max = 0.0f64;
-    let outcome = sweep.run(
-        |rows| {
-            for row in rows {
-                let theta = theta_column.and_then(|i| row[i].parse::<f64>().ok()).unwrap_or(0.0);
-                if theta.abs() > theta_max.abs() {
-                    theta_max = theta;
-                }
-            }
-            emit(&csv_lines(rows))
-        },
-        |done| progress.update(done),
-    );
-    drop(progress);
-    outcome?; // on error the temporary file is dropped, the target untouched
+    // (the header with the first rows: a run refused for its length writes nothing)
+    let mut header = Some(request.header());
+    let sink = |rows: &[Vec<String>]| {
+        if let Some(h) = header.take() {
+            emit(&csv_lines(&[h]))?;
+        }
+        emit(&csv_lines(rows))
+    };
+    let ctl = Control::new();
+    let reporter = Reporter::start(&ctl);
+    let swept = execute(request.stream(|cells| cells.iter().map(Cell::text).collect(), sink), &ctl);
+    drop(reporter);
+    // (on error the temporary file is dropped, the target untouched)
+    let diagnostics = swept.map(|s| s.diagnostics)?;
     if let Some(f) = file {
         f.commit()?;
     }
-    print_diagnostics(&racket_impact::study::sweep::diagnostics(&noted, &representatives, theta_max));
+    print_diagnostics(&diagnostics);
     Ok(())
 }
 

@@ -320,7 +320,12 @@ pub fn evaluate_all(claims: &[Claim], base: &Context) -> Result<Vec<Ours>> {
     use rayon::prelude::*;
     let base = base.clone().remembering();
     let readings: Vec<Reading> = claims.iter().map(|c| c.reading).collect();
-    computations(claims)?.into_par_iter().zip(readings).map(|(pc, reading)| evaluate(pc, reading, &base)).collect()
+    let watch = crate::control::current();
+    computations(claims)?
+        .into_par_iter()
+        .zip(readings)
+        .map(|(pc, reading)| crate::control::within(watch.as_ref(), || evaluate(pc, reading, &base)))
+        .collect()
 }
 
 /// A claim's numbers on `base` (its numerics the paper's beam): the value under the claim's

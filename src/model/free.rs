@@ -35,6 +35,9 @@ pub const PHASE_PER_SAMPLE: f64 = 0.25;
 /// parabola step leaving the candidate within about 1e-3 of a sample spacing of the peak; on
 /// 200,000 random vibrations the pruning moved no result by more than 3e-14).
 const QUADRATIC_MARGIN: f64 = 1e-6;
+/// Samples of a search between two looks at whether its run is cancelled
+/// ([`crate::control::cancelled`]: a long search stops within a few milliseconds).
+const CANCEL_SAMPLES: usize = 1 << 14;
 
 /// A sampled peak after the parabola step: time, value, sample spacing, the peak of the local
 /// quadratic, and the phasors there.
@@ -153,7 +156,11 @@ impl FreeVibration {
         let rot = self.rotation(k, (hi - lo) / m as f64);
         let mut out = Buf::with_capacity(m + 1);
         out.push((0..k).map(|i| f(i, ph.q[i])).sum());
-        for _ in 0..m {
+        for j in 0..m {
+            // (a cancelled run's search ends short: its solver's next poll ends the impact)
+            if j % CANCEL_SAMPLES == CANCEL_SAMPLES - 1 && crate::control::cancelled() {
+                break;
+            }
             ph.rotate(&rot);
             out.push(ph.q.iter().enumerate().fold(0.0, |sum, (i, &q)| sum + f(i, q)));
         }
@@ -246,6 +253,10 @@ impl FreeVibration {
         let samples = if half.is_finite() { whole_m + 1 } else { 0 };
         let (mut ph, mut start, mut v) = (first.clone(), first, Buf::with_capacity(samples));
         for (j, &peak) in peaks.iter().enumerate().take(windows) {
+            // (a cancelled run's search ends short: its solver's next poll ends the impact)
+            if crate::control::cancelled() {
+                return best;
+            }
             if j > 0 {
                 at.rotate(&turn);
             }
@@ -285,6 +296,9 @@ impl FreeVibration {
             start.copy_from(&ph);
             v.clear();
             for i in 0..=m {
+                if i % CANCEL_SAMPLES == CANCEL_SAMPLES - 1 && crate::control::cancelled() {
+                    return best;
+                }
                 if i > 0 {
                     ph.rotate(&step);
                 }

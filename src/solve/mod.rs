@@ -43,8 +43,14 @@ pub trait Solver: Sized {
 
 /// Prepare and run one impact with the solver `S`; a result whose energy error exceeds the
 /// limit is an error, whichever solver made it ([`ENERGY_ERROR_LIMIT`]).
+/// The impact counts itself in the run's progress ([`crate::control`]), done or failed.
 pub fn solve<S: Solver>(params: &Params) -> Result<ImpactResult> {
-    let r = S::prepare(params)?.run()?;
+    crate::control::impact_begins();
+    // (a cancelled run starts no impact)
+    crate::control::poll(0.0)?;
+    let r = S::prepare(params).and_then(|s| s.run());
+    crate::control::impact_done();
+    let r = r?;
     r.check_energy()?;
     Ok(r)
 }

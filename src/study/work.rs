@@ -179,18 +179,7 @@ impl Estimate {
     }
 }
 
-/// Seconds in words: "0.05 s", "42 s", "27 min", "3.1 h".
-pub fn duration(s: f64) -> String {
-    if s < 1.0 {
-        format!("{} s", crate::numfmt::sig(s, 2))
-    } else if s < 120.0 {
-        format!("{s:.0} s")
-    } else if s < 7200.0 {
-        format!("{:.0} min", s / 60.0)
-    } else {
-        format!("{} h", crate::numfmt::sig(s / 3600.0, 2))
-    }
-}
+pub use crate::numfmt::duration;
 
 #[cfg(test)]
 mod tests {

@@ -2,11 +2,12 @@
 //! their share of each node, their part in the explicit solver's kick, and the damped free
 //! racket after the impact (stepped on: a damped racket has no modal closed form).
 
+use crate::error::Result;
 use crate::model::basis::Basis;
 use crate::model::beam::Beam;
 use crate::params::{Grip, Params, Variants};
 use crate::solve::fd::stepper::Stepper;
-use crate::solve::fd::FdModel;
+use crate::solve::fd::{FdModel, POLL_STEPS};
 
 impl Stepper {
     /// Energy stored in the hand's springs plus what its dampers dissipated, J.
@@ -49,16 +50,30 @@ impl Stepper {
 }
 
 impl FdModel {
-    /// The held racket after separation, stepped on from `st` at time `t` (s) until `t_post`:
-    /// the peak bending PE (J) up to `t_window` and whether the frame meets the ball again.
-    pub(super) fn held_after_impact(&self, st: &Stepper, t: f64, t_window: f64, t_post: f64) -> (f64, bool) {
+    /// The held racket after separation, stepped on from `st` at time `t` (s), `steps` into the
+    /// impact, until `t_post`: the peak bending PE (J) up to `t_window` and whether the frame
+    /// meets the ball again.
+    pub(super) fn held_after_impact(
+        &self,
+        st: &Stepper,
+        (t, steps): (f64, usize),
+        t_window: f64,
+        t_post: f64,
+    ) -> Result<(f64, bool)> {
         let beam = self.beam();
         let dt = self.dt;
         let cp = &self.impact.coupling;
         let mut s2 = st.clone();
         let (mut peak, mut meets) = (beam.bending_energy(&s2.y), false);
         let mut t2 = t;
+        // (the steps of the whole impact, for the progress told from inside it)
+        let total = steps as f64 + (t_post - t) / dt;
+        let mut k: usize = 0;
         while t2 < t_post {
+            if k % POLL_STEPS == POLL_STEPS - 1 {
+                crate::control::poll((steps + k) as f64 / total)?;
+            }
+            k += 1;
             let pe = s2.drift(dt, &self.impact.basis.pad.kappa);
             s2.kick(dt, 0.0, self);
             t2 += dt;
@@ -67,7 +82,7 @@ impl FdModel {
             }
             meets |= cp.compression(s2.ball.y, &s2.y, s2.th) > 0.0;
         }
-        (peak, meets)
+        Ok((peak, meets))
     }
 }
 

@@ -9,7 +9,7 @@ use crate::model::free::FreeVibration;
 use crate::model::tangential::ForcePiece;
 use crate::solve::fd::ledger::Motion;
 use crate::solve::fd::stepper::Stepper;
-use crate::solve::fd::FdModel;
+use crate::solve::fd::{FdModel, POLL_STEPS};
 use crate::solve::hermite::Hermite;
 use crate::solve::oblique::Follower;
 use crate::solve::observer::Observer;
@@ -87,10 +87,14 @@ impl FdModel {
         let motion =
             |t: f64, st: &Stepper, force: f64| Motion { t, force, y_ball: st.ball.y, y_total: yt_of(st), theta: st.th };
         obs.observe(0, || self.ledger(&st, phase, &cs, 0.0, 0.0).row(e0, motion(0.0, &st, cs.force)));
+        let (contact_steps, held_steps) = self.expected_steps();
 
         loop {
             if t > t_limit {
                 return Err(Error::ImpactDidNotEnd { limit_s: t_limit });
+            }
+            if step % POLL_STEPS == POLL_STEPS - 1 {
+                crate::control::poll(step as f64 / (contact_steps + held_steps))?;
             }
             let (th_prev, om_prev) = (st.th, st.om);
             let pe = st.drift(dt, &self.impact.basis.pad.kappa);
@@ -167,8 +171,10 @@ impl FdModel {
             self.after_impact(st, t - tau, t_post - t)
         } else {
             // a held racket is damped: no modal closed form, step it on
-            self.held_after_impact(st, t, t_window, t_post)
+            self.held_after_impact(st, (t, sep.step), t_window, t_post)?
         };
+        // (a search after the impact that a cancelled run cut short is no result)
+        crate::control::poll(1.0)?;
         let (energy_err, momentum_err) = (sep.energy_dev / e0, sep.momentum_dev / p0);
         if energy_err > ENERGY_ERROR_LIMIT {
             return Err(Error::EnergyDrift { error: energy_err, limit: ENERGY_ERROR_LIMIT });

@@ -47,6 +47,9 @@ pub const DEFAULT_CONTACT_PHASE_PER_STEP: f64 = 2.0e-3;
 /// Refuse parameters whose expected run (two rigid-contact half-periods plus the post-impact
 /// window of two fundamental periods) needs more node-steps than this (about 15 s here).
 pub const MAX_NODE_STEPS: f64 = 1.0e9;
+/// Steps between two calls of the run's hook ([`crate::control::poll`]: cancellation and the
+/// progress inside an impact), a power of two; about a millisecond on 40 nodes.
+pub(crate) const POLL_STEPS: usize = 1 << 10;
 
 /// An impact prepared for the explicit solver: the prepared impact, the time step and the hand.
 #[derive(Debug, Clone)]
@@ -124,6 +127,16 @@ impl FdModel {
         }
         let (inv_ball_mass, twist_per_force) = (1.0 / params.ball.mass, params.impact.r / params.racket.ix);
         Ok(FdModel { impact, dt_limit, dt, hand, inv_ball_mass, twist_per_force })
+    }
+
+    /// The steps the impact is expected to take: the contact (two rigid-contact half-periods,
+    /// as the time limit counts them) and, for a racket held in the hand, the window after it
+    /// (two fundamental periods, stepped too; a free racket's is told in closed form). What the
+    /// work estimate counts (`study::work`) and the progress told from inside an impact.
+    pub fn expected_steps(&self) -> (f64, f64) {
+        let contact = 2.0 * self.impact.time_limit_s / IMPACT_TIME_LIMIT_HALF_PERIODS / self.dt;
+        let held = if self.hand.is_empty() { 0.0 } else { 2.0 / self.impact.f1_hz / self.dt };
+        (contact, held)
     }
 
     /// Run the impact.

@@ -136,6 +136,8 @@ const RIGID: usize = 4;
 /// solver's limit ([`crate::solve::fd::MAX_NODE_STEPS`], about 15 s); without it a frame of
 /// `ei` 1e-2 on 400 segments hit by a stiff ball ran for hours.
 pub const MAX_MODE_SAMPLES: f64 = 8.0e9;
+/// Steps between two calls of the run's hook ([`crate::control::poll`]), a power of two.
+const POLL_STEPS: usize = 1 << 8;
 
 /// A prepared modal model of one impact.
 #[derive(Debug, Clone)]
@@ -300,13 +302,21 @@ impl ModalModel {
         };
         let modal_energy = self.energy(&run.s);
         run.ledger(&at_max, modal_energy);
+        let mut steps: usize = 0;
         while run.separated.is_none() {
             if run.t > limit {
                 return Err(Error::ImpactDidNotEnd { limit_s: limit });
             }
+            if steps % POLL_STEPS == POLL_STEPS - 1 {
+                // (the time limit is ten contact times: a tenth of it, the expected contact)
+                crate::control::poll(0.5 * run.t / (0.1 * limit))?;
+            }
+            steps += 1;
             run.advance()?;
         }
         let mut result = self.finish(&run, y0);
+        // (a search after the impact that a cancelled run cut short is no result)
+        crate::control::poll(1.0)?;
         run.tangential.complete(self.impact.oblique.as_ref(), &mut result, v1)?;
         result.check_finite()?;
         Ok(result)

@@ -354,10 +354,11 @@ impl Problem {
     /// naming its row.
     pub fn values(&self, cases: &[Case], z: &[f64]) -> Result<Vec<f64>> {
         self.impacts.fetch_add(cases.len(), Ordering::Relaxed);
+        let watch = crate::control::current();
         cases
             .par_iter()
             .map(|c| {
-                let r = simulate(&self.params_at(c, z)?)
+                let r = crate::control::within(watch.as_ref(), || simulate(&self.params_at(c, z)?))
                     .map_err(|e| Error::AtPoint { point: c.row.id.clone(), source: Box::new(e) })?;
                 Ok(c.field.number(&r))
             })

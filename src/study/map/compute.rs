@@ -85,12 +85,16 @@ fn evaluate(
 ) -> Result<Vec<Option<ImpactResult>>> {
     let mut results = vec![None; grid.len()];
     let mut done = offset;
+    let watch = crate::control::current();
     for chunk in points.chunks(CHUNK) {
         let out: Vec<ImpactResult> = chunk
             .par_iter()
             .map(|&k| {
                 let (x, r) = grid.point(k);
-                simulate(&params_at(base, x, r)).map_err(|e| {
+                crate::control::within(watch.as_ref(), || simulate(&params_at(base, x, r))).map_err(|e| {
+                    if e.is_cancelled() {
+                        return e;
+                    }
                     Error::invalid("map point", format!("x = {x} m, r = {r} m"), format!("the impact failed: {e}"))
                 })
             })

@@ -31,13 +31,14 @@ where
     let total = design.runs();
     let mut out = Vec::with_capacity(total);
     let mut start = 0;
+    let watch = crate::control::current();
     while start < total {
         let end = (start + CHUNK).min(total);
         let chunk: Vec<Vec<f64>> = (start..end)
             .into_par_iter()
             .map(|k| {
                 let x: Vec<f64> = design.point(k).iter().zip(dists).map(|(&u, d)| d.quantile(u)).collect();
-                model(&x)
+                crate::control::within(watch.as_ref(), || model(&x))
             })
             .collect::<Result<_>>()?;
         out.extend(chunk);

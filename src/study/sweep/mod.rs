@@ -280,6 +280,9 @@ impl Sweep {
     /// ...`), unless the message names the point already: a bad value of the one such key, or
     /// no such key (the command names the point).
     pub(super) fn at_point(&self, vals: &[&str], e: Error) -> Error {
+        if e.is_cancelled() {
+            return e;
+        }
         let swept: Vec<(&Axis, &str)> =
             self.axes.iter().zip(vals).filter(|(a, _)| a.values.len() > 1).map(|(a, v)| (a, *v)).collect();
         let names_it = match (&e, &swept[..]) {

@@ -38,6 +38,7 @@ impl Sweep {
         let points = Points::of(self)?;
         let width = self.header().len();
         let mut start = 0u64;
+        let watch = crate::control::current();
         while start < total {
             let end = (start + CHUNK as u64).min(total);
             let rows: Vec<T> = (start..end)
@@ -45,7 +46,8 @@ impl Sweep {
                 .map(|i| {
                     let (p, vals) = points.at(i);
                     // (`simulate` validates the parameters, as `point` would)
-                    let r = simulate(&p).map_err(|e| self.at_point(&vals, e))?;
+                    let r =
+                        crate::control::within(watch.as_ref(), || simulate(&p)).map_err(|e| self.at_point(&vals, e))?;
                     let mut cells = Vec::with_capacity(width);
                     cells.extend(vals.into_iter().map(Cell::Given));
                     cells.extend(fixed.iter().map(|k| Cell::Number(keys::value_number(k, &p).unwrap_or(f64::NAN))));
