@@ -27,8 +27,12 @@ use crate::numfmt::{duration, sig};
 /// An impact counted whole, in [`Status::position`]'s millionths.
 const MICRO: u64 = 1_000_000;
 
-/// A run that has taken this many times its estimate says so, once, as it goes.
+/// A run that has taken this many times its estimate says so, once, as it goes (once it has
+/// run [`OVERRUN_AFTER_S`]).
 pub const OVERRUN_FACTOR: f64 = 3.0;
+
+/// A run shorter than this is not told to have outlived its estimate: nobody waits for it.
+pub const OVERRUN_AFTER_S: f64 = 10.0;
 
 /// What a run counts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -160,7 +164,8 @@ impl Control {
         std::mem::take(&mut self.told().notes)
     }
 
-    /// Where the run is; a run past [`OVERRUN_FACTOR`] times its estimate tells so, once.
+    /// Where the run is; a run past [`OVERRUN_FACTOR`] times its estimate (and
+    /// [`OVERRUN_AFTER_S`]) tells so, once.
     pub fn status(&self) -> Status {
         let total = self.0.total.load(Ordering::Relaxed);
         let done = self.0.done.load(Ordering::Relaxed) as f64;
@@ -177,7 +182,8 @@ impl Control {
             expected_s: told.expected_s,
         };
         if let Some(expected) = status.expected_s {
-            if !told.overrun_told && status.elapsed_s > OVERRUN_FACTOR * expected && status.fraction() < 1.0 {
+            let over = status.elapsed_s > (OVERRUN_FACTOR * expected).max(OVERRUN_AFTER_S);
+            if !told.overrun_told && over && status.fraction() < 1.0 {
                 told.overrun_told = true;
                 told.notes.push(format!(
                     "this run has taken {}, more than {} times its estimate of {} ({} done): the estimate \
@@ -420,12 +426,21 @@ mod tests {
         assert_eq!(s.words(), "0.3 of 8 impacts, 3.3 s per impact, about 29 s left");
         let ctl = Control::new();
         ctl.begin(8, Unit::Named("experiments"));
-        ctl.expect(1e-9);
-        std::thread::sleep(std::time::Duration::from_millis(2));
+        ctl.expect(1.0);
+        // (a run begun 20 s ago, of an estimated second: past three times it and ten seconds)
+        let long_ago = Instant::now().checked_sub(std::time::Duration::from_secs(20));
+        ctl.told().started = long_ago.unwrap_or_else(Instant::now);
         ctl.status();
         ctl.status();
         let notes = ctl.take_notes();
         assert_eq!(notes.len(), 1, "{notes:?}");
-        assert!(notes[0].contains("more than 3 times its estimate"), "{}", notes[0]);
+        assert!(notes[0].starts_with("this run has taken 20 s, more than 3 times its estimate of 1 s (0 of 8 experiments done)"), "{}", notes[0]);
+        // a short run is not told: nobody waits for it
+        let short = Control::new();
+        short.begin(8, Unit::Impacts);
+        short.expect(1e-9);
+        std::thread::sleep(std::time::Duration::from_millis(2));
+        short.status();
+        assert!(short.take_notes().is_empty());
     }
 }

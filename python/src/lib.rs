@@ -181,12 +181,6 @@ fn parameters() -> PyResult<String> {
     json_text(&serde_json::Value::Array(rows))
 }
 
-/// The parameters a map sets itself, each with why (`study::map::MAP_SETS`), as JSON pairs.
-fn map_sets() -> PyResult<String> {
-    let rows: Vec<(&str, &str)> = racket_impact::study::map::MAP_SETS.iter().map(|(s, why)| (s.key, *why)).collect();
-    serde_json::to_string(&rows).map_err(|e| PyValueError::new_err(e.to_string()))
-}
-
 /// The result fields of one impact (`solve::outcome::FIELDS`), as JSON: key, unit, doc, flag
 /// or number, and whether it is a field of an oblique or spinning ball or of a tangential law
 /// with named losses.
@@ -205,8 +199,9 @@ fn result_fields() -> PyResult<String> {
     json_text(&serde_json::Value::Array(rows))
 }
 
-/// `commands()`: every command on the layer with its options, as JSON: `{command: [{name,
-/// keyword, kind, lo, hi, choices, many, default, help}]}`.
+/// `commands()`: every command on the layer with its options and the parameters it does not
+/// take, as JSON: `{command: {"options": [{name, keyword, kind, lo, hi, choices, many, default,
+/// required, help}], "not_taken": {key: why}}}`.
 fn commands() -> PyResult<String> {
     use racket_impact::command::{Kind, Many, ALL};
     let table: serde_json::Map<String, serde_json::Value> = ALL
@@ -225,11 +220,16 @@ fn commands() -> PyResult<String> {
                     };
                     serde_json::json!({
                         "name": o.name, "keyword": o.keyword(), "kind": kind, "lo": lo, "hi": hi,
-                        "choices": choices, "many": o.many != Many::One, "default": o.default, "help": o.help,
+                        "choices": choices, "many": o.many != Many::One, "default": o.default,
+                        "required": o.required, "help": o.help,
                     })
                 })
                 .collect();
-            (d.name.to_string(), serde_json::Value::Array(options))
+            let not_taken: serde_json::Map<String, serde_json::Value> = keys::ALL
+                .iter()
+                .filter_map(|s| (d.not_taken)(s.key).map(|why| (s.key.to_string(), why.into())))
+                .collect();
+            (d.name.to_string(), serde_json::json!({"options": options, "not_taken": not_taken}))
         })
         .collect();
     json_text(&serde_json::Value::Object(table))
@@ -349,6 +349,55 @@ fn call(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyAny>> {
                 drive(py, reporter, move |ctl| sweep(ctl, racket, config, pairs, given))?;
             let diagnostics = serde_json::to_value(&diagnostics).map_err(|e| PyValueError::new_err(e.to_string()))?;
             Ok((columns_py(py, header, columns)?, json_text(&diagnostics)?).into_pyobject(py)?.into_any().unbind())
+        }
+        "map" => {
+            let sources = sources(args, 3, (racket, config), "map")?;
+            let done =
+                drive(py, reporter, move |ctl| execute(racket_impact::command::map::Map::new(&sources, &given)?, ctl))?;
+            let map = &done.map;
+            let diagnostics =
+                serde_json::to_value(&done.diagnostics).map_err(|e| PyValueError::new_err(e.to_string()))?;
+            let grid = (
+                Column::Numbers(map.grid.xs.clone()).into_py(py)?,
+                Column::Numbers(map.grid.rs.clone()).into_py(py)?,
+                Column::Numbers(map.heatmap.z.clone()).into_py(py)?,
+            );
+            let out = (json_text(&map.metadata)?, table_py(py, &map.table)?, grid, json_text(&diagnostics)?);
+            Ok(out.into_pyobject(py)?.into_any().unbind())
+        }
+        "uncertainty" => {
+            use racket_impact::command::uncertainty::{Uncertain, Uncertainty};
+            use racket_impact::experiments::robustness;
+            let sources = sources(args, 3, (racket, config), "uncertainty")?;
+            let done = drive(py, reporter, move |ctl| execute(Uncertainty::new(&sources, &given)?, ctl))?;
+            match done {
+                Uncertain::Fields { study, outputs, .. } => {
+                    let doc = json_text(&study.json(&outputs))?;
+                    Ok((doc, None::<Py<PyAny>>, "[]").into_pyobject(py)?.into_any().unbind())
+                }
+                Uncertain::Claims { rows, samples, seed, diagnostics } => {
+                    let doc = json_text(&robustness::json(&rows, samples, seed).map_err(fail)?)?;
+                    let table = table_py(py, &robustness::table(&rows).map_err(fail)?)?;
+                    let diagnostics =
+                        serde_json::to_string(&diagnostics).map_err(|e| PyValueError::new_err(e.to_string()))?;
+                    Ok((doc, Some(table), diagnostics).into_pyobject(py)?.into_any().unbind())
+                }
+            }
+        }
+        "speed" => {
+            use racket_impact::command::speed::Speed;
+            let sources = sources(args, 3, (racket, config), "speed")?;
+            let done = drive(py, reporter, move |ctl| execute(Speed::new(&sources, &given)?, ctl))?;
+            let table = table_py(py, &done.table().map_err(fail)?)?;
+            let diagnostics =
+                serde_json::to_string(&done.diagnostics()).map_err(|e| PyValueError::new_err(e.to_string()))?;
+            Ok((table, done.json().map_err(fail)?, diagnostics).into_pyobject(py)?.into_any().unbind())
+        }
+        "modes" => {
+            use racket_impact::command::modes::Modes;
+            let sources = sources(args, 3, (racket, config), "modes")?;
+            let done = drive(py, reporter, move |ctl| execute(Modes::new(&sources, &given)?, ctl))?;
+            Ok(json_text(&done.json().map_err(fail)?)?.into_pyobject(py)?.into_any().unbind())
         }
         other => Err(PyValueError::new_err(format!("no command {other:?} in this package"))),
     }
@@ -546,58 +595,6 @@ impl Typed {
     }
 }
 
-/// `face_map(racket, config, pairs, quantity, nx, nr, compare_racket, compare_tension_lb)`:
-/// the map `map` computes, without its files: (metadata JSON, table, (x, r, values), diagnostics
-/// JSON).
-fn face_map(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyAny>> {
-    use racket_impact::study::map::{MapRequest, Quantity, MAP_SETS};
-    let mut sources = sources(args, 2, (arg(args, 0)?, arg(args, 1)?), "map")?;
-    let quantity: String = arg(args, 3)?;
-    let (nx, nr): (usize, usize) = (arg(args, 4)?, arg(args, 5)?);
-    let compare_racket: Option<String> = arg(args, 6)?;
-    let compare_tension_lb: Vec<f64> = arg(args, 7)?;
-    // (the command has no flag for what the grid sets: a config file's values are noted)
-    sources.not_taken = MAP_SETS.iter().map(|(s, _)| s.key).collect();
-    if compare_tension_lb.len() >= 2 {
-        sources.set_by_options.extend(racket_impact::intake::compare::TENSION_SETS);
-    }
-    let quantity: Quantity = quantity.parse().map_err(fail)?;
-    let request = MapRequest { sources, quantity, nx, nr, compare_racket, compare_tension_lb };
-    let run = move |ctl: &racket_impact::command::Control| -> racket_impact::Result<_> {
-        request.check()?;
-        let (configs, _) = request.configurations()?;
-        let noted = request.check_used(&configs)?;
-        let map = ctl.within(|| request.run(&configs, &mut |_| {}))?;
-        let diagnostics: Vec<_> = noted.into_iter().chain(map.diagnostics(configs.iter().map(|(_, p)| p))).collect();
-        Ok((map, diagnostics))
-    };
-    let (map, diagnostics) = drive(py, None, run)?;
-    let diagnostics = serde_json::to_value(&diagnostics).map_err(|e| PyValueError::new_err(e.to_string()))?;
-    let grid = (
-        Column::Numbers(map.grid.xs.clone()).into_py(py)?,
-        Column::Numbers(map.grid.rs.clone()).into_py(py)?,
-        Column::Numbers(map.heatmap.z.clone()).into_py(py)?,
-    );
-    let out = (json_text(&map.metadata)?, table_py(py, &map.table)?, grid, json_text(&diagnostics)?);
-    Ok(out.into_pyobject(py)?.into_any().unbind())
-}
-
-/// `uncertainty(racket, config, pairs, vary, samples, seed)`: the JSON document of
-/// `uncertainty --format json`.
-fn uncertainty(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<String> {
-    use racket_impact::study::uncertainty::{Study, DEFAULT_SAMPLES};
-    let sources = sources(args, 2, (arg(args, 0)?, arg(args, 1)?), "uncertainty")?;
-    let vary: Vec<String> = arg(args, 3)?;
-    let samples: Option<u64> = arg(args, 4)?;
-    let seed: Option<u32> = arg(args, 5)?;
-    let run = move |ctl: &racket_impact::command::Control| -> racket_impact::Result<serde_json::Value> {
-        let study = Study::from_sources(&sources, &vary, samples.unwrap_or(DEFAULT_SAMPLES), seed.unwrap_or(0))?;
-        let outputs = ctl.within(|| study.run(|_| {}))?;
-        Ok(study.json(&outputs))
-    };
-    json_text(&drive(py, None, run)?)
-}
-
 /// `presets(segments)`: the presets' table (`racket --list`).
 fn presets(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyAny>> {
     let segments: usize = arg(args, 0)?;
@@ -677,12 +674,9 @@ where
 fn module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     add(m, c"parameters", c"parameters() -> JSON of every declared parameter", |_, _| parameters())?;
-    add(m, c"map_sets", c"map_sets() -> JSON [(key, why)] of what a map sets itself", |_, _| map_sets())?;
     add(m, c"result_fields", c"result_fields() -> JSON of every result field", |_, _| result_fields())?;
     add(m, c"commands", c"commands() -> JSON of every command's options", |_, _| commands())?;
     add(m, c"call", c"call(command, racket, config, pairs, options, reporter) -> the command's result", call)?;
-    add(m, c"face_map", c"face_map(racket, config, pairs, quantity, nx, nr, compare_racket, tensions)", face_map)?;
-    add(m, c"uncertainty", c"uncertainty(racket, config, pairs, vary, samples, seed) -> JSON", uncertainty)?;
     add(m, c"presets", c"presets(segments) -> table", presets)?;
     add(m, c"racket", c"racket(source, segments) -> (name, JSON, fit table)", racket)?;
     add(m, c"strings", c"strings() -> JSON rows", |_, _| strings())?;
