@@ -31,32 +31,36 @@ test:
 
 # The Python package (python/): `pip install ./python` builds it with maturin in this target
 # directory (reusing the release build's compiled library), here into target/python, and pytest
-# runs its suite against the command line. Needs Python 3.9+ with maturin, pytest, numpy and
-# pandas (`.ci/run` installs them); without them the step says what to install and is skipped,
-# except under CI, where it fails.
+# runs its suite against the command line. The tests need Python 3.9+ with maturin, pytest,
+# numpy and pandas: python/tools.sh finds them in $(PYTHON), or installs them once from the
+# package registry into target/venv, and fails with one line when it cannot; without Python 3.9+
+# the step says in one line that the Python tests need it (and fails under CI).
 PYTHON ?= python3
-PYTHON_TOOLS := maturin pytest numpy pandas
-# (the build backend runs the `maturin` program: from the scripts folder of that Python)
-PYTHON_PATH = PATH="$$($(PYTHON) -c 'import sysconfig; print(sysconfig.get_path("scripts"))'):$$PATH"
+PYTHON_VENV ?= $(CURDIR)/target/venv
+# The Python with the tools (empty: no Python here, already said), and the package built into
+# target/python with it (its build backend runs the `maturin` program of that Python's scripts
+# folder).
+PYTHON_WITH_TOOLS = py=$$(sh python/tools.sh "$(PYTHON)" "$(PYTHON_VENV)") || exit 1
+PYTHON_PACKAGE = PATH="$$("$$py" -c 'import sysconfig; print(sysconfig.get_path("scripts"))'):$$PATH" \
+	"$$py" -m pip install --quiet --disable-pip-version-check --no-build-isolation --no-deps --upgrade \
+	--target target/python ./python
 
 python-test: build
-	@if $(PYTHON) -c "import $(shell echo $(PYTHON_TOOLS) | tr ' ' ',')" 2>/dev/null; then \
-		$(PYTHON_PATH) $(PYTHON) -m pip install --quiet --no-build-isolation --no-deps --upgrade --target target/python ./python && \
-		PYTHONPATH=$(CURDIR)/target/python RACKET_IMPACT_BIN=$(BIN) $(PYTHON) -m pytest -q -p no:cacheprovider python/tests; \
-	elif [ -n "$$CI" ]; then \
-		echo "error: the Python tests need $(PYTHON) with $(PYTHON_TOOLS)" >&2; exit 1; \
-	else \
-		echo "Python tests skipped: $(PYTHON) -m pip install $(PYTHON_TOOLS) to run them"; \
-	fi
+	@$(PYTHON_WITH_TOOLS); [ -n "$$py" ] || exit 0; \
+	$(PYTHON_PACKAGE) && \
+	PYTHONPATH=$(CURDIR)/target/python RACKET_IMPACT_BIN=$(BIN) "$$py" -m pytest -q -p no:cacheprovider python/tests
 
 # Regenerate the Python package's type stub from the parameters' declaration (the tests fail
 # while it is stale).
 python-stub: build
-	$(PYTHON_PATH) $(PYTHON) -m pip install --quiet --no-build-isolation --no-deps --upgrade --target target/python ./python
-	PYTHONPATH=$(CURDIR)/target/python $(PYTHON) -m racket_impact._stub > python/racket_impact/__init__.pyi
+	@$(PYTHON_WITH_TOOLS); [ -n "$$py" ] || exit 1; \
+	$(PYTHON_PACKAGE) && \
+	PYTHONPATH=$(CURDIR)/target/python "$$py" -m racket_impact._stub > python/racket_impact/__init__.pyi
 
 # The string-face maps (CSV + PNG + JSON each; tests/map.rs checks the committed ones against
-# these lines).
+# these lines). The report of this build is kept in target/tmp/cache (src/cli/cache.rs), where
+# the tests' runs of the binary find it instead of computing it again.
+figures: export RACKET_IMPACT_CACHE := $(CURDIR)/target/tmp/cache
 figures: build
 	$(BIN) figures --out figures
 	$(BIN) map --racket paper-125hz --load node --quantity power --out figures/map_paper_power.csv
@@ -64,6 +68,7 @@ figures: build
 	$(BIN) map --racket tweener --quantity power --compare-tension-lb 50,60 --out figures/map_tweener_50_vs_60lb.csv
 	$(BIN) report --summary
 
+report: export RACKET_IMPACT_CACHE := $(CURDIR)/target/tmp/cache
 report: build
 	$(BIN) report --summary
 

@@ -434,7 +434,13 @@ mod tests {
         ctl.status();
         let notes = ctl.take_notes();
         assert_eq!(notes.len(), 1, "{notes:?}");
-        assert!(notes[0].starts_with("this run has taken 20 s, more than 3 times its estimate of 1 s (0 of 8 experiments done)"), "{}", notes[0]);
+        assert!(
+            notes[0].starts_with(
+                "this run has taken 20 s, more than 3 times its estimate of 1 s (0 of 8 experiments done)"
+            ),
+            "{}",
+            notes[0]
+        );
         // a short run is not told: nobody waits for it
         let short = Control::new();
         short.begin(8, Unit::Impacts);

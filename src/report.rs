@@ -6,16 +6,18 @@
 //! value, the tolerance within which we call it reproduced (relative, or absolute for claims of
 //! "about zero"), and the verdict we expect, pinned so a regression that flips one fails a test.
 //!
-//! Every impact position between nodes of the paper's N = 39 beam is read by one rule
-//! ([`READING_RULE`]); every claim computed from a beam run has its converged value beside it
-//! (the same computation on the converged beam, [`crate::experiments::claims::evaluate`]).
+//! Every value is computed as the paper computed it and read as it read it, by one rule
+//! ([`reading_rule`]: an impact the paper set up at the node its scheme loads, a value it read
+//! off a curve between the computed nodes, each claim's reading decided from its quote); every
+//! claim computed from a beam run has its converged value beside it (the same computation on
+//! the converged beam, [`crate::experiments::claims::evaluate`]).
 
 mod beyond;
 mod robustness;
 
 use crate::error::{Error, Result};
-use crate::experiments::claims::{computations, evaluate_all};
-use crate::experiments::{self, Context, Ours, READING_RULE};
+use crate::experiments::claims::{computations, evaluate_all, Moved, Reading};
+use crate::experiments::{self, reading_rule, Context, Ours};
 use crate::numfmt::{decisive, fmt_sig};
 
 pub use crate::experiments::claims::{
@@ -28,16 +30,17 @@ pub use crate::experiments::claims::{
 pub struct Row {
     /// The claim.
     pub claim: Claim,
-    /// Our value, computed as the paper did (N = 39, the force on the nearest node).
+    /// Our value, computed as the paper computed it and read as it read it (N = 39,
+    /// [`reading_rule`]).
     pub ours: f64,
     /// The same computation with converged numerics (`hat` load, N = 320), for a claim computed
     /// from a beam run ([`Ours::converged`]).
     pub converged: Option<f64>,
-    /// The same read off the N = 39 curve between nodes, where the paper's scheme moved an
-    /// impact ([`Ours::between`]).
-    pub between: Option<f64>,
-    /// Where the paper's scheme moved an impact: (nominal, used), m.
-    pub moved: Vec<(f64, f64)>,
+    /// The same under the other reading, where an impact falls between two nodes
+    /// ([`Ours::other`]).
+    pub other: Option<f64>,
+    /// The impacts between two nodes of the paper's beam.
+    pub moved: Vec<Moved>,
     /// (ours - paper) / |paper|; for absolute claims, ours - paper (`None`: the paper states no
     /// number).
     pub error: Option<f64>,
@@ -50,6 +53,8 @@ pub struct Row {
     pub verdict: Verdict,
     /// The verdict on the converged value, where there is one.
     pub converged_verdict: Option<Verdict>,
+    /// The verdict under the other reading, where there is one ([`Row::other`]).
+    pub other_verdict: Option<Verdict>,
 }
 
 impl Row {
@@ -92,11 +97,12 @@ pub fn rows(claims: Vec<Claim>, ours: Vec<Ours>) -> Result<Vec<Row>> {
     let ids: Vec<String> = claims.iter().map(|c| c.id.clone()).collect();
     let values: Vec<f64> = ours.iter().map(|o| o.value).collect();
     let fine: Vec<f64> = ours.iter().map(|o| o.converged.unwrap_or(o.value)).collect();
+    let others: Vec<f64> = ours.iter().map(|o| o.other.unwrap_or(o.value)).collect();
     let lookup = |all: &[f64], id: &str| ids.iter().position(|i| i == id).map(|j| all[j]);
     claims
         .into_iter()
         .zip(ours)
-        .map(|(claim, Ours { value, converged, between, moved })| {
+        .map(|(claim, Ours { value, converged, other, moved })| {
             let tolerance = claim.tolerance()?;
             let band = claim.band()?;
             let check = claim.check()?;
@@ -112,10 +118,11 @@ pub fn rows(claims: Vec<Claim>, ours: Vec<Ours>) -> Result<Vec<Row>> {
             Ok(Row {
                 verdict: judge(value, &values),
                 converged_verdict: converged.map(|c| judge(c, &fine)),
+                other_verdict: other.map(|o| judge(o, &others)),
                 claim,
                 ours: value,
                 converged,
-                between,
+                other,
                 moved,
                 error,
                 tolerance,
@@ -145,7 +152,7 @@ fn tolerance_text(r: &Row) -> String {
     let (Some((kind, tol)), Some((lo, hi))) = (r.tolerance, r.band) else {
         return format!("its conclusion, `{}`", r.claim.conclusion_check);
     };
-    let values: Vec<f64> = std::iter::once(r.ours).chain(r.converged).chain(r.between).collect();
+    let values: Vec<f64> = std::iter::once(r.ours).chain(r.converged).chain(r.other).collect();
     format!("{} ({} to {})", fmt_rel_or_abs(kind, tol), decisive(lo, &values, 4), decisive(hi, &values, 4))
 }
 
@@ -156,13 +163,27 @@ fn fmt_rel_or_abs(kind: ToleranceKind, v: f64) -> String {
     }
 }
 
-/// " [N = 39: 15.8 cm read at 16.38 cm]" for a claim whose impacts the paper's scheme moved.
+/// " [N = 39: 10 cm -> node at 9.10 cm]" for a claim of an impact the paper set up between
+/// two nodes, " [N = 39: 15.8 cm read between the nodes at 14.56 and 16.38 cm]" for one read
+/// off a curve.
 fn moved_text(r: &Row) -> String {
     if r.moved.is_empty() {
         return String::new();
     }
-    let pairs: Vec<String> =
-        r.moved.iter().map(|(x, at)| format!("{} cm -> node at {:.2} cm", fmt_sig(100.0 * x, 4), 100.0 * at)).collect();
+    let cm = |x: f64| format!("{:.2}", 100.0 * x);
+    let pairs: Vec<String> = r
+        .moved
+        .iter()
+        .map(|m| {
+            let x = fmt_sig(100.0 * m.x, 4);
+            match r.claim.reading {
+                Reading::Impact => format!("{x} cm -> node at {} cm", cm(m.node)),
+                Reading::Curve => {
+                    format!("{x} cm read between the nodes at {} and {} cm", cm(m.between.0), cm(m.between.1))
+                }
+            }
+        })
+        .collect();
     format!(" [N = 39: {}]", pairs.join(", "))
 }
 
@@ -236,7 +257,28 @@ pub fn markdown(rows: &[Row]) -> String {
         .collect();
     let mut s = String::new();
     s.push_str(REPORT_HEAD);
-    s.push_str(&format!("Reading rule, one for every claim and figure: {READING_RULE}.\n\n"));
+    s.push_str(&format!("Reading rule, one for every claim: {}.\n\n", reading_rule(&Context::paper().racket)));
+    let decided: Vec<String> = rows
+        .iter()
+        .filter_map(|r| {
+            let other = r.other_verdict.filter(|v| *v != r.verdict)?;
+            Some(format!(
+                "`{}` (read as the paper read it, {}: {}; {}: {})",
+                r.claim.id,
+                r.claim.reading.name(),
+                r.verdict.name(),
+                match r.claim.reading {
+                    Reading::Impact => "read off the curve",
+                    Reading::Curve => "computed at the node",
+                },
+                other.name()
+            ))
+        })
+        .collect();
+    s.push_str(&format!(
+        "The verdicts the reading decides (the other reading gives the other verdict): {}.\n\n",
+        list_or_none(decided)
+    ));
     s.push_str(&format!("Tolerances, one rule applied by code to every claim: {}.\n", tolerance_rule()));
     s.push_str(&format!(
         "\n*Kind*: a *reproduction* runs the model on something no other claim already checks; a *consistency* \
@@ -268,8 +310,8 @@ pub fn markdown(rows: &[Row]) -> String {
         list_or_none(only_converged),
     ));
     s.push_str(
-        "| id | kind | claim | source | unit | paper | tolerance | ours (N = 39) | read off the curve | converged | error | verdict |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| id | kind | claim | source | unit | paper | tolerance | reading | ours (N = 39) | other reading | converged | error | verdict |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for r in rows {
         let c = &r.claim;
@@ -278,7 +320,7 @@ pub fn markdown(rows: &[Row]) -> String {
             format!("{}{outside}", shown(r, v))
         });
         s.push_str(&format!(
-            "| `{}` | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+            "| `{}` | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
             c.id,
             c.kind.name(),
             cell(&c.claim),
@@ -286,8 +328,9 @@ pub fn markdown(rows: &[Row]) -> String {
             c.unit,
             paper_text(c),
             tolerance_text(r),
+            c.reading.name(),
             shown(r, r.ours),
-            r.between.map_or(String::new(), |v| shown(r, v)),
+            r.other.map_or(String::new(), |v| shown(r, v)),
             converged,
             match (r.tolerance, r.error) {
                 (Some((kind, _)), Some(e)) => fmt_rel_or_abs(kind, e),
@@ -323,7 +366,7 @@ pub fn markdown(rows: &[Row]) -> String {
 pub fn document(rows: &[Row]) -> Result<String> {
     let ours: Vec<Ours> = rows
         .iter()
-        .map(|r| Ours { value: r.ours, converged: r.converged, between: r.between, moved: r.moved.clone() })
+        .map(|r| Ours { value: r.ours, converged: r.converged, other: r.other, moved: r.moved.clone() })
         .collect();
     Ok(markdown(rows) + &calibration_table(rows)? + &robustness::section(&ours)? + &beyond::section()?)
 }
@@ -335,7 +378,11 @@ pub fn document(rows: &[Row]) -> Result<String> {
 pub fn calibration_table(rows: &[Row]) -> Result<String> {
     let claims: Vec<Claim> = rows.iter().map(|r| r.claim.clone()).collect();
     let line = Context { tension_shape: 1.0, ..Context::paper() }.remembering();
-    let values: Vec<f64> = computations(&claims)?.iter().map(|pc| (pc.ours)(&line)).collect::<Result<_>>()?;
+    let values: Vec<f64> = computations(&claims)?
+        .iter()
+        .zip(&claims)
+        .map(|(pc, c)| (pc.ours)(&Context { scheme: c.reading.scheme(), ..line.clone() }))
+        .collect::<Result<_>>()?;
     let mut s = String::from(
         "\nUnder the paper's other reading of the calibration, the straight line through 2e4 N/m at 40 lb and 6e4 \
          at 80 lb (50 lb = 3e4 N/m; the two readings agree at 60 lb), the tension claims move as follows (N = 39; \
@@ -424,14 +471,14 @@ pub fn check_claims_file() -> Result<Vec<Claim>> {
 
 const REPORT_HEAD: &str = "# Replication report: Cross (2000), string tension and frame stiffness\n\n\
 Generated by `racket-impact report` (also run by `make figures`); do not edit by hand. Every \
-number the paper states is set beside ours. *ours* is computed the way the paper computed it \
-(N = 39 segments, the whole force on the node nearest the impact point: the reading rule below) \
-and carries the verdict. Where that moves an impact to a node, *read off the curve* is the same \
-computation with each such impact read on the straight line between its two nodes, as a reader of \
-the paper's printed curves would (SPEC.md section 4 reads the centre claims so; we set it beside \
-the rule's value rather than under the verdict, so that one rule decides every claim and every \
-figure). *converged* is the same computation with the force shared between the two neighbouring \
-nodes (`hat`) on N = 320 segments, at the nominal position. Each value is printed to the digit \
+number the paper states is set beside ours. *ours* is computed as the paper computed it and \
+read as the paper read it (N = 39 segments; the reading rule below), and carries the verdict: \
+the result of an impact the paper set up is computed with the whole force on the node its scheme \
+loads, a value it read off a curve against position is read off ours between the two computed \
+nodes. *reading* says which (`impact` or `curve`), decided from the claim's quote alone. Where an \
+impact falls between two nodes, *other reading* is the same computation read the other way. \
+*converged* is the same computation with the force shared between the two neighbouring nodes \
+(`hat`) on N = 320 segments, at the nominal position. Each value is printed to the digit \
 that places it against the claim's tolerance (given as the band of values it allows). A value \
 printed with one significant digit gets a wide tolerance (\"2 %\" covers 1.5 to 2.5 %, \"2e4\" \
 1.5e4 to 2.5e4): that is what the paper's precision allows us to check. The claims, their kinds, \

@@ -1,7 +1,10 @@
 //! Golden regression: every experiment's table, formatted at 6 significant digits, must equal
 //! its snapshot in `golden/` (insta; with CI=true a changed or missing snapshot fails and
 //! nothing is written; `make golden` re-blesses deliberately) and the committed
-//! `figures/<id>.csv`. The committed PNGs must be what the code draws now, byte for byte.
+//! `figures/<id>.csv`. The committed PNGs must be what the code draws now, byte for byte, and
+//! drawing twice must give the same bytes. (One test per experiment checks all of it from one
+//! run of the experiment: a second test that ran every experiment again for its PNG cost 45
+//! CPU-seconds of the suite.)
 
 use std::path::PathBuf;
 
@@ -22,6 +25,16 @@ fn check(id: &str) {
     let committed = std::fs::read_to_string(root().join("figures").join(format!("{id}.csv")))
         .unwrap_or_else(|e| panic!("figures/{id}.csv: {e} (run `make figures`)"));
     assert_eq!(committed, csv, "figures/{id}.csv is stale: run `make figures`");
+    // the figure, drawn twice from the table
+    let chart = (exp.chart)(&Context::paper(), &table);
+    let dir = tempfile::tempdir().unwrap();
+    let [a, b] = ["a", "b"].map(|n| dir.path().join(format!("{id}-{n}.png")));
+    racket_impact::render::plot::render_png(id, &chart, &a).unwrap();
+    racket_impact::render::plot::render_png(id, &chart, &b).unwrap();
+    let (a, b) = (std::fs::read(a).unwrap(), std::fs::read(b).unwrap());
+    assert!(a == b, "{id}: rendering is not deterministic");
+    let committed = std::fs::read(root().join("figures").join(format!("{id}.png"))).unwrap();
+    assert!(committed == a, "figures/{id}.png is stale: run `make figures`");
 }
 
 /// One golden test per experiment of the registry, named by its id.
@@ -46,27 +59,4 @@ fn every_registered_experiment_has_committed_outputs() {
             assert!(root().join("figures").join(format!("{}.{ext}", e.id)).exists(), "figures/{}.{ext} missing", e.id);
         }
     }
-}
-
-/// The committed PNGs are what the code draws now, and drawing is deterministic.
-#[test]
-fn committed_pngs_are_current_and_deterministic() {
-    let dir = std::env::temp_dir().join(format!("racket-impact-png-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    for e in experiments::registry() {
-        let committed_csv = std::fs::read_to_string(root().join("figures").join(format!("{}.csv", e.id))).unwrap();
-        // draw from the committed table (the golden tests check the table itself)
-        let table = (e.run)(&Context::paper()).unwrap();
-        assert_eq!(table.to_csv(), committed_csv, "{}: table changed", e.id);
-        let chart = (e.chart)(&Context::paper(), &table);
-        let a = dir.join(format!("{}-a.png", e.id));
-        let b = dir.join(format!("{}-b.png", e.id));
-        racket_impact::render::plot::render_png(e.id, &chart, &a).unwrap();
-        racket_impact::render::plot::render_png(e.id, &chart, &b).unwrap();
-        let (a, b) = (std::fs::read(a).unwrap(), std::fs::read(b).unwrap());
-        assert_eq!(a, b, "{}: rendering is not deterministic", e.id);
-        let committed = std::fs::read(root().join("figures").join(format!("{}.png", e.id))).unwrap();
-        assert!(committed == a, "figures/{}.png is stale: run `make figures`", e.id);
-    }
-    let _ = std::fs::remove_dir_all(&dir);
 }

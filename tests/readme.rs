@@ -172,3 +172,39 @@ fn readme_counts_are_the_reports() {
         assert_eq!(theirs, ours, "README's count for '{what}' is not REPORT.md's: {headline}");
     }
 }
+
+/// The numbers README's "Model variants" quotes are what the commands it gives beside them print
+/// (README quoted the rigid frame's 0.3903 / 0.3907 and the hand's 0.4238 -> 0.4244 without
+/// saying they need `--load node`, and the default load prints others): each bullet's
+/// `racket-impact sweep ...` is run, and every e_A it prints, to four decimals, is in the bullet.
+#[test]
+fn the_variants_numbers_are_what_the_commands_beside_them_print() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let section = readme.split("## Model variants").nth(1).unwrap().split("\n## ").next().unwrap();
+    // the bullets, each joined into one line
+    let bullets: Vec<String> = section
+        .split("\n- ")
+        .skip(1)
+        .map(|b| b.split("\n\n").next().unwrap().split_whitespace().collect::<Vec<_>>().join(" "))
+        .collect();
+    let mut checked = 0;
+    for bullet in &bullets {
+        for command in bullet.split('`').skip(1).step_by(2).filter(|c| c.starts_with("racket-impact sweep ")) {
+            let o = Command::new(env!("CARGO_BIN_EXE_racket-impact"))
+                .args(command.split_whitespace().skip(1))
+                .output()
+                .unwrap();
+            assert!(o.status.success(), "{command}: {}", String::from_utf8_lossy(&o.stderr));
+            let csv = String::from_utf8(o.stdout).unwrap();
+            let mut lines = csv.lines();
+            let column = lines.next().unwrap().split(',').position(|c| c == "e_a").expect("an e_a column");
+            for row in lines {
+                let e_a: f64 = row.split(',').nth(column).unwrap().parse().unwrap();
+                let shown = format!("{e_a:.4}");
+                assert!(bullet.contains(&shown), "{command} prints e_A {shown}, which README does not say:\n{bullet}");
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked >= 4, "only {checked} numbers checked");
+}

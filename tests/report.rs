@@ -182,3 +182,100 @@ fn arithmetic_on_inputs_or_other_claims_is_a_consistency_check() {
         assert_eq!(c.kind, Kind::Reproduction, "{id}");
     }
 }
+
+/// The paper's notation as the claims file writes it: LaTeX and Unicode symbols become plain
+/// forms (`$k_{\rm s}$` is `k_s`, `4×10^4` is `4e4`, `N m⁻¹` is `N/m`, `°` is ` deg`, `τ` is `tau`,
+/// `\pm` is `+-`), emphasis marks and doubled spaces are dropped, and a space before a comma or
+/// full stop goes (the text's line breaks leave some). Applied to both sides, so a quote is found
+/// only if its words are the paper's, in the paper's order.
+fn transliterated(text: &str) -> String {
+    let mut t = text.to_string();
+    for (from, to) in [
+        ("\u{2019}", "'"),
+        ("\u{2018}", "'"),
+        ("\u{2013}", "-"),
+        ("\u{2014}", "-"),
+        ("\\rm", ""),
+        ("\\mathrm", ""),
+        ("\\text", ""),
+        ("\\times", "×"),
+        ("\\pm", "+-"),
+        ("\\tau", "tau"),
+        ("\\theta", "theta"),
+        ("τ", "tau"),
+        ("θ", "theta"),
+        ("°", " deg"),
+        ("⁻¹", "^-1"),
+        ("$", ""),
+        ("{", ""),
+        ("}", ""),
+        ("*", ""),
+    ] {
+        t = t.replace(from, to);
+    }
+    let mut t = t.split_whitespace().collect::<Vec<_>>().join(" ");
+    // "4 × 10^4" and "4×10^4" are "4e4"
+    while let Some(k) = t.find("10^").filter(|&k| t[..k].trim_end().ends_with('×')) {
+        let mantissa_end = t[..k].trim_end().len() - '×'.len_utf8();
+        let mantissa = t[..mantissa_end].trim_end();
+        let exponent: String = t[k + 3..].chars().take_while(char::is_ascii_digit).collect();
+        t = format!("{mantissa}e{exponent}{}", &t[k + 3 + exponent.len()..]);
+    }
+    for (from, to) in [("N m^-1", "N/m"), ("rad s^-1", "rad/s"), ("m s^-1", "m/s"), (" ,", ","), (" .", ".")] {
+        t = t.replace(from, to);
+    }
+    t
+}
+
+/// Every quote of the claims file is the paper's words (`data/paper/cross2000.txt`, the text the
+/// project was given), piece by piece: pieces joined by " / ", each maybe opening with a label
+/// in brackets that says where it stands.
+#[test]
+fn paper_quotes_are_the_papers_words() {
+    let paper = transliterated(include_str!("../data/paper/cross2000.txt"));
+    assert!(paper.contains("k_s is typically between 2e4 and 6e4 N/m for string tensions"), "transliteration");
+    assert!(paper.contains("e = 0.745 +- 0.017") && paper.contains("an angle of about 9 deg during"));
+    let mut pieces = 0;
+    for c in check_claims_file().unwrap() {
+        for piece in c.quote.split(" / ") {
+            let words = match piece.strip_prefix('(') {
+                Some(rest) if rest.contains(") ") => rest.split_once(") ").unwrap().1,
+                _ => piece,
+            };
+            let words = transliterated(words);
+            assert!(words.split_whitespace().count() >= 3, "{}: the piece '{piece}' is too short to be a quote", c.id);
+            assert!(paper.contains(&words), "{}: '{words}' is not in the paper's text", c.id);
+            pieces += 1;
+        }
+    }
+    assert!(pieces >= 54, "{pieces} pieces");
+}
+
+/// Every claim says how its value is read (`impact` or `curve`, the column has no default), and
+/// the words that decide it are words of its quote.
+#[test]
+fn every_claims_reading_is_decided_by_its_quote() {
+    use racket_impact::experiments::claims::Reading;
+    let claims = check_claims_file().unwrap();
+    for c in &claims {
+        let words = c.reading_words.trim();
+        assert!(words.split_whitespace().count() >= 3, "{}: no words decide its reading ({words:?})", c.id);
+        assert!(c.quote.contains(words), "{}: '{words}' is not in its quote '{}'", c.id, c.quote);
+    }
+    // a value the paper read off Fig 5 at the centre of the strings is read off our curve; one of
+    // an impact it set up (Fig 4's caption, Fig 8's 15.8 cm) is computed at the node it loads
+    let reading = |id: &str| claims.iter().find(|c| c.id == id).unwrap().reading;
+    assert_eq!(reading("fig5_centre_e_a_soft"), Reading::Curve);
+    assert_eq!(reading("fig4_e_a"), Reading::Impact);
+    assert_eq!(reading("fig8_theta_r4_50lb"), Reading::Impact);
+    // a claims file whose row does not say how it is read, or says it another way, does not parse
+    use racket_impact::experiments::claims::parse_claims;
+    let text = racket_impact::report::CLAIMS_CSV;
+    assert!(parse_claims(text).is_ok());
+    for (from, to) in [(",curve,", ",,"), (",curve,", ",node,"), (",impact,", ",Impact,")] {
+        assert!(text.contains(from));
+        assert!(parse_claims(&text.replacen(from, to, 1)).is_err(), "{from} -> {to} parsed");
+    }
+    let no_column = text.replacen(",reading,", ",reading_dropped,", 1);
+    assert!(parse_claims(&no_column).is_err(), "a file without the reading column parsed");
+}

@@ -56,3 +56,15 @@ def test_the_readme_shows_the_install_beside_the_set_up_commands():
     text = (ROOT / "README.md").read_text()
     setup = text.split("## Set up on a fresh machine", 1)[1].split("\n## ", 1)[0]
     assert "pip install ./python" in setup
+
+
+def test_the_readme_install_line_brings_what_its_example_needs():
+    """README's install line is `pip install ./python`, and its example iterates a DataFrame
+    (`itertuples`): pandas is a dependency of the package, not an extra to know about."""
+    text = (ROOT / "python" / "pyproject.toml").read_text()
+    m = re.search(r"^dependencies = \[(.*?)\]", text, re.M | re.S)
+    assert m, "pyproject.toml declares its dependencies on one list"
+    names = {re.split(r"[<>=!~ ;\[]", d.strip().strip('"'))[0] for d in m.group(1).split(",") if d.strip()}
+    assert {"numpy", "pandas"} <= names, names
+    code, _ = readme_example()
+    assert "itertuples" in code  # (what needs pandas: if the example changes, so may this test)

@@ -5,6 +5,7 @@
 
 use clap::{Parser, Subcommand};
 
+pub mod cache;
 pub mod calibrate;
 pub mod common;
 pub mod figures;

@@ -37,8 +37,8 @@ pub fn run(a: ReportArgs) -> Result<()> {
     super::common::check_stdout()?;
     let progress =
         super::common::Progress::spinner("report: every claim of the paper, its robustness and the sections beyond it");
-    let rows = racket_impact::report::evaluate()?;
-    let md = racket_impact::report::document(&rows)?;
+    // (kept for the next run of this build where RACKET_IMPACT_CACHE says: super::cache)
+    let md = super::cache::text("report", || racket_impact::report::document(&racket_impact::report::evaluate()?))?;
     drop(progress);
     // REPORT.md is published only once the report has been printed (a device before it)
     let mut staged = racket_impact::render::io::Staged::new();

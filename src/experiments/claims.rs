@@ -8,7 +8,7 @@
 use serde::Deserialize;
 
 pub use super::conclusion::Check;
-pub use super::setup::READING_RULE;
+pub use super::setup::reading_rule;
 use super::setup::{Context, Scheme};
 use crate::error::{Error, Result};
 
@@ -76,6 +76,48 @@ impl Kind {
     }
 }
 
+/// How the paper got a value it states, decided from its quote alone ([`reading_rule`]): the
+/// result of a computation it set up, or a value it read off a curve it plotted against
+/// position.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Reading {
+    /// The result of a computation the paper set up (an impact at a position its caption or
+    /// text states, a drop, the beam's modes, arithmetic on its inputs): computed as the paper
+    /// computed it, with the force on the node its N = 39 scheme loads ([`Scheme::Paper`]).
+    Impact,
+    /// A value the paper read off a curve it plotted against position (Fig 5) at a point it
+    /// did not compute (the centre of the strings, the node at 16 cm), or derived from such
+    /// values: read off our N = 39 curve between the two computed nodes ([`Scheme::Curve`]).
+    Curve,
+}
+
+impl Reading {
+    /// The word used in the report and the claims file.
+    pub fn name(self) -> &'static str {
+        match self {
+            Reading::Impact => "impact",
+            Reading::Curve => "curve",
+        }
+    }
+
+    /// The numerics of the reading on the paper's beam.
+    pub fn scheme(self) -> Scheme {
+        match self {
+            Reading::Impact => Scheme::Paper,
+            Reading::Curve => Scheme::Curve,
+        }
+    }
+
+    /// The other reading, which the report sets beside it.
+    pub fn other(self) -> Reading {
+        match self {
+            Reading::Impact => Reading::Curve,
+            Reading::Curve => Reading::Impact,
+        }
+    }
+}
+
 /// One row of `golden/paper_claims.csv`.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -90,9 +132,17 @@ pub struct Claim {
     pub source: String,
     /// Unit of `paper` and of ours.
     pub unit: String,
-    /// The paper's words stating the value (its sentences, joined by " / " where it states it
-    /// twice): whether the value is approximate is read from them ([`Claim::approximate`]).
+    /// The paper's words stating the value, as printed (notation transliterated: `k_s`, `4e4`,
+    /// `N/m`, `deg`), and the words its value is derived from where the sentence refers back to
+    /// them; pieces from different places joined by " / ", each opening with a label in
+    /// brackets where it is not the same paragraph (`(Conclusions) `). Whether the value is
+    /// approximate is read from them ([`Claim::approximate`]), and how it is read
+    /// ([`Claim::reading`]).
     pub quote: String,
+    /// How the paper got the value ([`Reading`]), decided from the quote alone.
+    pub reading: Reading,
+    /// The words of the quote that decide the reading.
+    pub reading_words: String,
     /// The paper's value exactly as printed (its last digit sets the tolerance); empty where
     /// the paper states no number and the claim is its conclusion alone ([`Claim::qualitative`]).
     pub paper: String,
@@ -199,7 +249,12 @@ pub fn tolerance_rule() -> String {
 
 /// Parse the compiled-in claims.
 pub fn claims() -> Result<Vec<Claim>> {
-    let mut rdr = csv::Reader::from_reader(CLAIMS_CSV.as_bytes());
+    parse_claims(CLAIMS_CSV)
+}
+
+/// Parse a claims file's text (the columns of [`Claim`], each required).
+pub fn parse_claims(text: &str) -> Result<Vec<Claim>> {
+    let mut rdr = csv::Reader::from_reader(text.as_bytes());
     rdr.deserialize()
         .map(|r| r.map_err(|e| Error::Config { path: "golden/paper_claims.csv".into(), message: e.to_string() }))
         .collect()
@@ -208,19 +263,30 @@ pub fn claims() -> Result<Vec<Claim>> {
 /// Our numbers for one claim ([`evaluate`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Ours {
-    /// Computed as the paper did: N = 39, the force on the nearest node ([`READING_RULE`]).
+    /// Computed as the paper computed it and read as it read it ([`Claim::reading`],
+    /// [`reading_rule`]): N = 39, an impact the paper set up with the force on the node its
+    /// scheme loads, a value it read off a curve between the two computed nodes.
     pub value: f64,
     /// The same computation with converged numerics (`hat` load, N = 320), for a claim computed
     /// (directly, or through arithmetic on other values) from a beam run; `None` for one that
     /// runs no beam (a closed form, the paper's inputs, the tension calibration).
     pub converged: Option<f64>,
-    /// For a claim whose impacts the paper's scheme moved to a node: the same computation with
-    /// each such impact read off the N = 39 curve between its two nodes ([`Scheme::Curve`], as
-    /// SPEC.md section 4 reads a curve), set beside the reading rule's value.
-    pub between: Option<f64>,
-    /// The positions the paper's scheme moved an impact to: (nominal, used) in m, each pair
-    /// once, in the order of the nominal position.
-    pub moved: Vec<(f64, f64)>,
+    /// For a claim with an impact between two nodes of the paper's beam: the same computation
+    /// under the other reading ([`Reading::other`]), set beside the value.
+    pub other: Option<f64>,
+    /// The impacts between two nodes of the paper's beam, each position once, in order.
+    pub moved: Vec<Moved>,
+}
+
+/// An impact position between two nodes of the paper's N = 39 beam, m from the tip.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Moved {
+    /// The nominal position.
+    pub x: f64,
+    /// The node the paper's scheme loads (the nearest, ties towards the handle).
+    pub node: f64,
+    /// The two nodes a curve is read between.
+    pub between: (f64, f64),
 }
 
 /// One claim of the paper that an experiment checks.
@@ -253,26 +319,37 @@ pub fn computations(claims: &[Claim]) -> Result<Vec<PaperClaim>> {
 pub fn evaluate_all(claims: &[Claim], base: &Context) -> Result<Vec<Ours>> {
     use rayon::prelude::*;
     let base = base.clone().remembering();
+    let readings: Vec<Reading> = claims.iter().map(|c| c.reading).collect();
     let watch = crate::control::current();
     computations(claims)?
         .into_par_iter()
-        .map(|pc| crate::control::within(watch.as_ref(), || evaluate(pc, &base)))
+        .zip(readings)
+        .map(|(pc, reading)| crate::control::within(watch.as_ref(), || evaluate(pc, reading, &base)))
         .collect()
 }
 
-/// A claim's numbers on `base` (its [`Scheme`] the paper's): the value, and where the
+/// A claim's numbers on `base` (its numerics the paper's beam): the value under the claim's
+/// reading, the other reading beside it where an impact falls between two nodes, and where the
 /// computation ran a beam, the same computation on `base` with converged numerics. What the
 /// value is computed from decides whether it has a converged counterpart: the record of the
 /// beams it ran ([`Context::recording`]), not a column of the claims file. A computation that
 /// runs a beam with the paper's numerics on a converged context (numerics of its own, not the
 /// context's) is an error: its "converged" value would not be.
-pub fn evaluate(claim: PaperClaim, base: &Context) -> Result<Ours> {
-    let ctx = base.clone().recording();
-    let value = (claim.ours)(&ctx)?;
+pub fn evaluate(claim: PaperClaim, reading: Reading, base: &Context) -> Result<Ours> {
+    let ctx = Context { scheme: Scheme::Paper, ..base.clone() }.recording();
+    let at_node = (claim.ours)(&ctx)?;
     let runs = ctx.runs.taken();
-    let mut moved: Vec<(f64, f64)> =
-        runs.iter().filter_map(|r| Some((r.x?, r.x_load?))).filter(|(x, at)| (x - at).abs() > 1e-9).collect();
-    moved.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let spacing = base.racket.length / Scheme::Paper.numerics().1 as f64;
+    let mut moved: Vec<Moved> = runs
+        .iter()
+        .filter_map(|r| Some((r.x?, r.x_load?)))
+        .filter(|(x, at)| (x - at).abs() > 1e-9)
+        .map(|(x, node)| {
+            let j = (x / spacing).floor();
+            Moved { x, node, between: (j * spacing, (j + 1.0) * spacing) }
+        })
+        .collect();
+    moved.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.node.total_cmp(&b.node)));
     moved.dedup();
     let converged = if runs.is_empty() {
         None
@@ -292,14 +369,13 @@ pub fn evaluate(claim: PaperClaim, base: &Context) -> Result<Ours> {
         }
         Some(v)
     };
-    let between = if moved.is_empty() {
-        None
-    } else {
-        let mut curve = base.clone();
-        curve.scheme = Scheme::Curve;
-        Some((claim.ours)(&curve)?)
+    let on_curve = || (claim.ours)(&Context { scheme: Scheme::Curve, ..base.clone() });
+    let (value, other) = match (reading, moved.is_empty()) {
+        (_, true) => (at_node, None),
+        (Reading::Impact, false) => (at_node, Some(on_curve()?)),
+        (Reading::Curve, false) => (on_curve()?, Some(at_node)),
     };
-    Ok(Ours { value, converged, between, moved })
+    Ok(Ours { value, converged, other, moved })
 }
 
 impl std::fmt::Debug for PaperClaim {
@@ -329,6 +405,30 @@ mod tests {
         }
     }
 
+    /// A claim read off a curve takes the straight line between the impacts on the two nodes
+    /// around its position, with the node the paper's scheme loads beside it; a claim of an
+    /// impact the paper set up takes that node, with the curve beside it; at a node the two
+    /// readings are one value and nothing is set beside it.
+    #[test]
+    fn each_reading_takes_its_value_and_sets_the_other_beside_it() {
+        let base = Context::paper();
+        let at = |x: f64| {
+            let c = Context::paper();
+            c.impact(&c.paper_params(x, 4.0e4)).unwrap().e_a
+        };
+        let s = 0.71 / 39.0;
+        let w = 0.158 / s - 8.0;
+        let curve = (1.0 - w) * at(8.0 * s) + w * at(9.0 * s);
+        let centre = PaperClaim { id: "centre", ours: |c| Ok(c.impact(&c.paper_params(0.158, 4.0e4))?.e_a) };
+        let read = evaluate(centre, Reading::Curve, &base).unwrap();
+        assert!((read.value - curve).abs() < 1e-12 && read.other == Some(at(9.0 * s)), "{read:?}");
+        let set_up = evaluate(centre, Reading::Impact, &base).unwrap();
+        assert_eq!((set_up.value, set_up.other), (read.other.unwrap(), Some(read.value)));
+        let node = PaperClaim { id: "node", ours: |c| Ok(c.impact(&c.paper_params(0.71 * 9.0 / 39.0, 4.0e4))?.e_a) };
+        let (a, b) = (evaluate(node, Reading::Curve, &base).unwrap(), evaluate(node, Reading::Impact, &base).unwrap());
+        assert!(a.other.is_none() && a.moved.is_empty() && (a.value - b.value).abs() < 1e-12);
+    }
+
     /// A claim computed from a beam gets its converged value by the same computation on a
     /// converged context; a closed form gets none; and a computation that fixes its own
     /// numerics (so its "converged" value would be the paper's again) is refused.
@@ -336,13 +436,15 @@ mod tests {
     fn what_a_value_is_computed_from_decides_its_converged_counterpart() {
         let base = Context::paper();
         let beam = PaperClaim { id: "beam", ours: |c| Ok(c.impact(&c.paper_params(0.158, 4.0e4))?.e_a) };
-        let ours = evaluate(beam, &base).unwrap();
+        let ours = evaluate(beam, Reading::Impact, &base).unwrap();
         let fine = ours.converged.expect("a beam run has a converged value");
         assert!((fine - ours.value).abs() > 1e-4, "{fine} vs {}", ours.value);
         assert_eq!(ours.moved.len(), 1);
-        assert!((ours.moved[0].1 - 0.71 * 9.0 / 39.0).abs() < 1e-12, "the centre is read at node 9");
+        let s = 0.71 / 39.0;
+        assert!((ours.moved[0].node - 9.0 * s).abs() < 1e-12, "the centre is computed at node 9");
+        assert!((ours.moved[0].between.0 - 8.0 * s).abs() < 1e-12 && (ours.moved[0].between.1 - 9.0 * s).abs() < 1e-12);
         let closed = PaperClaim { id: "closed", ours: |_| Ok(2.0 / 0.762_f64.powi(2) - 1.0) };
-        assert_eq!(evaluate(closed, &base).unwrap().converged, None);
+        assert_eq!(evaluate(closed, Reading::Curve, &base).unwrap().converged, None);
         let fixed = PaperClaim {
             id: "fixed",
             ours: |c| {
@@ -352,7 +454,7 @@ mod tests {
                 Ok(c.impact(&p)?.e_a)
             },
         };
-        let err = evaluate(fixed, &base).unwrap_err().to_string();
+        let err = evaluate(fixed, Reading::Impact, &base).unwrap_err().to_string();
         assert!(err.contains("fixed") && err.contains("39 segments"), "{err}");
     }
 }

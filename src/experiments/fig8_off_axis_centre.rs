@@ -2,7 +2,7 @@
 //! x = 15.8 cm", with v1 = 30 m/s and k_s = 2e4 or 4e4 N/m.
 //!
 //! Model: the off-axis sweep of [`super::off_axis`] at the centre of the strings (the N = 39
-//! node scheme loads node 9 at 16.38 cm, [`super::READING_RULE`]). Expect (p. 6): theta roughly proportional to r and to
+//! node scheme loads node 9 at 16.38 cm, [`super::reading_rule`]). Expect (p. 6): theta roughly proportional to r and to
 //! the impact duration; "A ball impacting at r = 4 cm near the centre of the strings causes the
 //! racket to rotate by about 10 deg"; e_A falls with r and rises when k_s is reduced.
 

@@ -38,8 +38,8 @@ pub use curves::{
     styled,
 };
 pub use setup::{
-    checked, converged, impact, log_space, node_positions, paper_node, sweep, used_position, Context, Scheme, CENTRE_X,
-    READING_RULE, V1_OFF_AXIS,
+    checked, converged, impact, log_space, node_positions, paper_node, reading_rule, sweep, used_position, Context,
+    Scheme, CENTRE_X, V1_OFF_AXIS,
 };
 
 /// A registered experiment.

@@ -5,7 +5,7 @@
 //! columns and curves.
 
 use super::CENTRE_X;
-use super::{col, line, node_positions, on_right, paper_node, scaled, styled, sweep, Context};
+use super::{col, line, node_positions, on_right, scaled, styled, sweep, Context};
 use super::{paper_label, paper_points, paper_value};
 use crate::error::Result;
 use crate::numfmt::fmt_sig;
@@ -60,12 +60,11 @@ pub struct PaperCentre {
 }
 
 /// The figure of a position sweep, with the paper's values at the centre of the strings.
-pub fn chart(ctx: &Context, t: &Table, title: &str, paper: PaperCentre) -> Chart {
+pub fn chart(_: &Context, t: &Table, title: &str, paper: PaperCentre) -> Chart {
     let x = scaled(col(t, "x_m"), 100.0);
     let centre = CENTRE_X * 100.0;
     let mut curves = sweep_curves(x, t);
     let [c_ea, _, c_vib, c_tau] = SWEEP_COLORS;
-    let (node, read_at) = paper_node(CENTRE_X, &ctx.racket);
     curves.push(paper_points(
         paper_label(&format!("e_A {} at {} cm", fmt_sig(paper_value(paper.e_a), 3), fmt_sig(centre, 3))),
         vec![centre],
@@ -101,13 +100,11 @@ pub fn chart(ctx: &Context, t: &Table, title: &str, paper: PaperCentre) -> Chart
             STRING_FACE_LENGTH * 100.0,
             format!("string face (tip to {} cm)", fmt_sig(STRING_FACE_LENGTH * 100.0, 3)),
         )],
-        vlines: vec![
-            VLine { x: centre, label: "centre of the strings (15.8 cm)".into() },
-            VLine {
-                x: 100.0 * read_at,
-                label: format!("where our centre values are read (N = 39: node {node}, {:.2} cm)", 100.0 * read_at),
-            },
-        ],
+        // the paper read its centre values off these curves, and so do the claims
+        vlines: vec![VLine {
+            x: centre,
+            label: "centre of the strings (15.8 cm): our centre values are read here".into(),
+        }],
         ..Chart::default()
     }
 }

@@ -56,14 +56,14 @@ pub struct Context {
 /// The numerics of a context's beams.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Scheme {
-    /// The paper's: N = 39 segments, the whole force on the node nearest the impact point
-    /// ([`READING_RULE`]).
+    /// The paper's: N = 39 segments, the whole force on the node nearest the impact point (an
+    /// impact the paper set up, [`reading_rule`]).
     Paper,
     /// Converged: the force shared between the two neighbouring nodes (`hat`), N = 320.
     Converged,
-    /// The paper's beam read as a reader reads its printed curves (SPEC.md section 4): an impact
-    /// at a position between two nodes is the straight line between the impacts on those two
-    /// nodes ([`ImpactResult::lerp`]); the value the report sets beside the reading rule's.
+    /// The paper's beam read as the paper read its printed curves (SPEC.md section 4,
+    /// [`reading_rule`]): an impact at a position between two nodes is the straight line between
+    /// the impacts on those two nodes ([`ImpactResult::lerp`]).
     Curve,
 }
 
@@ -80,14 +80,40 @@ impl Scheme {
     }
 }
 
-/// How every claim and figure reads an impact position that falls between two nodes of the
-/// paper's N = 39 beam, stated once (the report quotes it).
-pub const READING_RULE: &str = "an impact at a position between two nodes of the paper's N = 39 beam is \
-computed as the paper computed its impacts, with the whole force on the nearest node (the ball 'impacts on only one \
-of the segments', p. 2; ties go to the node nearer the handle), for every claim and every figure alike; the centre of \
-the strings, 15.8 cm, is node 9 at 16.38 cm, Fig 4's and Fig 7's 10 cm node 5 at 9.10 cm, Figs 6 and 9's 6 cm node 3 at \
-5.46 cm. Each figure prints the position used where it differs from the nominal one, and the converged value (`hat` \
-load, N = 320) is the same impact at the nominal position";
+/// How every claim's value is computed and read, stated once (the report quotes it, SPEC.md
+/// section 4 states it too): "computed as the paper computed, read as the paper read". The
+/// node positions it names are computed on `racket` (the paper's, for the report).
+pub fn reading_rule(racket: &Racket) -> String {
+    let at = |x: f64| {
+        let (node, at) = paper_node(x, racket);
+        format!("node {node} at {:.2} cm", 100.0 * at)
+    };
+    let s = racket.length / Scheme::Paper.numerics().1 as f64;
+    let j = (CENTRE_X / s).floor();
+    format!(
+        "computed as the paper computed, read as the paper read. The paper computed its impacts at the nodes of its \
+         N = 39 beam, with the whole force on the node nearest the impact point (the ball 'impacts on only one of the \
+         segments', p. 2; ties go to the node nearer the handle), and it states two kinds of number. An *impact* is \
+         the result of a computation it set up: an impact at a position its caption or text states (Fig 4's x = 10 \
+         cm, {}; Figs 6 and 9's x = 6 cm, {}; Figs 7 and 8's x = 10 and 15.8 cm, {} and {}), a drop, the beam's \
+         modes, or arithmetic on its inputs; we compute it as the paper did, at the node its scheme loads. A *curve* \
+         value is one it read off a curve it plotted against position (Fig 5) at a point it did not compute (the \
+         centre of the strings, 15.8 cm, between nodes {} and {} at {:.2} and {:.2} cm; the node at 16 cm), or derived \
+         from such values; we read it off our N = 39 curve, on the straight line between the two computed nodes. \
+         Each claim's reading is decided from its quote alone (column `reading` of `golden/paper_claims.csv`, with \
+         the words that decide it in `reading_words`); the other reading is set beside it, and the converged value \
+         (`hat` load, N = 320) is the same computation at the nominal position. The figures draw their curves \
+         through the computed nodes and print the node used where an impact they set up falls between two",
+        at(0.10),
+        at(0.06),
+        at(0.10),
+        at(CENTRE_X),
+        j as usize,
+        j as usize + 1,
+        100.0 * j * s,
+        100.0 * (j + 1.0) * s,
+    )
+}
 
 /// One beam a claim ran: an impact or an eigenproblem.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -384,7 +410,7 @@ pub fn node_positions(p: &Params) -> Vec<f64> {
 }
 
 /// Where the paper's scheme puts the force of an impact at `x` (m from the tip) on `racket`:
-/// the nearest of the N = 39 nodes, ties towards the handle ([`READING_RULE`]); (node, m).
+/// the nearest of the N = 39 nodes, ties towards the handle ([`reading_rule`]); (node, m).
 pub fn paper_node(x: f64, racket: &Racket) -> (usize, f64) {
     let (load, n) = Scheme::Paper.numerics();
     let point = Beam::new(racket, n).load_point(x, load);

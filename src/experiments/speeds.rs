@@ -10,11 +10,12 @@
 //!
 //! Model: tension maps to k_s proportionally, 60 lb = 4e4 N/m (so 30 lb = 2e4 N/m, the paper's
 //! factor two), and every tension is computed directly, not by scaling percentages. Centre
-//! values are the impact at x = 15.8 cm by the reading rule ([`super::READING_RULE`]: N = 39,
-//! node 9 at 16.38 cm); theta is for r = 4 cm at 30 m/s (Fig 8). The `frame` rows compare EI
-//! 150 and 384 at x = 6 cm (node 3 at 5.46 cm), k_s 4e4 (Figs 6, 9).
+//! values are read as the claims read them ([`super::reading_rule`]): e_A and tau off the N = 39
+//! curve at x = 15.8 cm, between nodes 8 and 9 (the paper read its centre values off Fig 5);
+//! theta for r = 4 cm at 30 m/s as Fig 8 sets it up, at node 9 (16.38 cm). The `frame` rows
+//! compare EI 150 and 384 at x = 6 cm (node 3 at 5.46 cm), k_s 4e4 (Figs 6, 9).
 
-use super::{fig6_string_stiffness::X_TIP, line, Context, Experiment, PaperClaim, CENTRE_X};
+use super::{fig6_string_stiffness::X_TIP, line, Context, Experiment, PaperClaim, Scheme, CENTRE_X};
 use crate::error::Result;
 use crate::numfmt::fmt_sig;
 use crate::params::Params;
@@ -118,6 +119,14 @@ pub fn centre_setup(ctx: &Context, ks: f64) -> Result<Setup> {
     Ok(Setup { e_a: r.e_a, tau_s: r.tau_s, theta_deg: ctx.impact(&q)?.theta_end_deg })
 }
 
+/// [`centre_setup`] as the claims read it on a context with the paper's numerics: e_A and tau
+/// read off the N = 39 curve at the centre (Fig 5's values, a curve reading), theta computed as
+/// Fig 8 sets its impact up (at the node its scheme loads).
+pub fn centre_as_read(ctx: &Context, ks: f64) -> Result<Setup> {
+    let curve = centre_setup(&Context { scheme: Scheme::Curve, ..ctx.clone() }, ks)?;
+    Ok(Setup { theta_deg: centre_setup(ctx, ks)?.theta_deg, ..curve })
+}
+
 /// e_A and tau at 6 cm (Figs 6, 9) for a frame stiffness, k_s 4e4, and theta there for
 /// r = 4 cm at 30 m/s.
 pub fn tip_setup(ctx: &Context, ei: f64) -> Result<Setup> {
@@ -168,10 +177,10 @@ fn run(ctx: &Context) -> Result<Table> {
     for (group, shape, tensions) in [("tension", 0.0, &TENSIONS_LB[..]), ("tension_range", 1.0, &RANGE_TENSIONS_LB[..])]
     {
         let reading = Context { tension_shape: shape, ..ctx.clone() };
-        let reference = centre_setup(ctx, reading.ks_at_tension_lb(REF_TENSION_LB))?;
+        let reference = centre_as_read(ctx, reading.ks_at_tension_lb(REF_TENSION_LB))?;
         for &tension_lb in tensions {
             let ks = reading.ks_at_tension_lb(tension_lb);
-            let s = centre_setup(ctx, ks)?;
+            let s = centre_as_read(ctx, ks)?;
             push(&mut t, Row { group, tension_lb, ks, ei, x: CENTRE_X, a: &reference, b: &s })?;
         }
     }
@@ -282,10 +291,14 @@ fn chart(ctx: &Context, t: &Table) -> Chart {
         super::paper_points(super::paper_label(&format!("{what} {values} {unit}, {at}")), x, ids, color)
     };
     Chart {
-        title: format!(
-            "Speed gains against string tension, relative to 60 lb, at the centre of the strings{}",
-            super::used_position(CENTRE_X, &ctx.racket)
-        ),
+        title: {
+            let (node, at) = super::paper_node(CENTRE_X, &ctx.racket);
+            format!(
+                "Speed gains against string tension, relative to 60 lb, at the centre of the strings (e_A read off the N \
+                 = 39 curve at 15.8 cm; the rotation at r 4 cm as Fig 8 computes it, at node {node}, {:.2} cm)",
+                100.0 * at
+            )
+        },
         x_label: "string tension (lb), ks = 4e4 N/m x tension / 60 lb (30 lb: ks 2e4)".into(),
         y_label: "change on 60 lb (%)".into(),
         y2_label: None,

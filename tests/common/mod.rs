@@ -6,10 +6,19 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// The command-line binary built with the tests.
+/// The command-line binary built with the tests, keeping what it may keep of its build where
+/// `make figures` keeps it ([`CACHE`]).
 pub fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_racket-impact"))
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_racket-impact"));
+    cmd.env("RACKET_IMPACT_CACHE", CACHE);
+    cmd
 }
+
+/// The folder where the binary keeps the report of its build (src/cli/cache.rs): the one `make
+/// figures` names, so that the tests' many runs of `report` (its options, its output paths)
+/// read the report `make figures` computed with the same binary instead of computing it again
+/// (about 40 CPU-seconds each). A report of another build is never read.
+pub const CACHE: &str = concat!(env!("CARGO_TARGET_TMPDIR"), "/cache");
 
 /// Run the binary with `args` and wait for it.
 pub fn run(args: &[&str]) -> Output {

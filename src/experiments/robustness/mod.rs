@@ -253,13 +253,14 @@ pub fn study(
     let mut sampled = base.clone();
     sampled.solver = SolverKind::Modal;
     sampled.scheme = Scheme::Paper;
+    let schemes: Vec<Scheme> = claims.iter().map(|c| c.reading.scheme()).collect();
     let rows = sensitivity::run(
         &design,
         &dists,
         |x| {
             // the claims at one draw share their impacts
             let ctx = context_at(&sampled, &specs, x)?.remembering();
-            fns.iter().map(|f| (f.ours)(&ctx)).collect()
+            fns.iter().zip(&schemes).map(|(f, &scheme)| (f.ours)(&Context { scheme, ..ctx.clone() })).collect()
         },
         progress,
     )?;
