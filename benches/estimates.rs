@@ -91,8 +91,11 @@ fn sources(command: &'static str, pairs: &[(&'static str, String)]) -> Sources {
     Sources { flags, command, ..Sources::default() }
 }
 
-/// One random run: its command, its arguments in words and its request's estimate and run.
-fn draw(rng: &mut Rng) -> Option<(String, String, Box<dyn FnOnce(&Control) -> f64>, f64)> {
+/// A run, measured: the CPU seconds it took (NaN where it failed).
+type Run = Box<dyn FnOnce(&Control) -> f64>;
+
+/// One random run: its command, its arguments in words, the run and its request's estimate.
+fn draw(rng: &mut Rng) -> Option<(String, String, Run, f64)> {
     let threads = racket_impact::command::threads();
     match rng.int(0, 2) {
         0 => {
@@ -105,7 +108,7 @@ fn draw(rng: &mut Rng) -> Option<(String, String, Box<dyn FnOnce(&Control) -> f6
             let request = SweepRequest::new(None, None, &pairs, &given).ok()?;
             let streaming = request.stream(|c| c.len(), |_: &[usize]| Ok(()));
             let estimate = streaming.work(threads)?.estimate.cpu_s;
-            let run: Box<dyn FnOnce(&Control) -> f64> = Box::new(move |ctl| timed(|| execute(streaming, ctl).is_ok()));
+            let run: Run = Box::new(move |ctl| timed(|| execute(streaming, ctl).is_ok()));
             Some(("sweep".into(), pairs.join(" "), run, estimate))
         }
         1 => {
@@ -121,7 +124,7 @@ fn draw(rng: &mut Rng) -> Option<(String, String, Box<dyn FnOnce(&Control) -> f6
             let request = Map::new(&sources("map", &fixed), &given).ok()?;
             let estimate = request.work(threads)?.estimate.cpu_s;
             let words = format!("--nx {nx} --nr {nr} {}", words(&fixed));
-            let run: Box<dyn FnOnce(&Control) -> f64> = Box::new(move |ctl| timed(|| execute(request, ctl).is_ok()));
+            let run: Run = Box::new(move |ctl| timed(|| execute(request, ctl).is_ok()));
             Some(("map".into(), words, run, estimate))
         }
         _ => {
@@ -143,7 +146,7 @@ fn draw(rng: &mut Rng) -> Option<(String, String, Box<dyn FnOnce(&Control) -> f6
             let request = Uncertainty::new(&sources("uncertainty", &fixed), &given).ok()?;
             let estimate = request.work(threads)?.estimate.cpu_s;
             let words = format!("--vary {} --samples {samples} {}", varied.join(","), words(&fixed));
-            let run: Box<dyn FnOnce(&Control) -> f64> = Box::new(move |ctl| timed(|| execute(request, ctl).is_ok()));
+            let run: Run = Box::new(move |ctl| timed(|| execute(request, ctl).is_ok()));
             Some(("uncertainty".into(), words, run, estimate))
         }
     }

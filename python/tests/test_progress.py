@@ -20,7 +20,7 @@ def test_the_own_line_shows_the_part_done_and_the_librarys_words(capsys, monkeyp
     r.close()
     err = capsys.readouterr().err
     assert " 31% |#########" in err and "2.5 of 8 impacts, 1.2 impacts/s" in err
-    assert err.endswith("about 3 s left\n") and " 50% |###############" in err
+    assert err.rstrip(" \n").endswith("about 3 s left") and " 50% |###############" in err
     assert told == ["this run is estimated at about 7 s"]
 
 

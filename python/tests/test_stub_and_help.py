@@ -83,7 +83,7 @@ def test_a_new_option_row_reaches_the_keyword_its_type_check_the_help_and_the_st
     # nothing else is written for it, yet it is a keyword with its default, checked for its type,
     # passed to the library as its flag's text, in the help and in the stub
     row = dict(name="max-twist-deg", keyword="max_twist_deg", kind="number", lo=None, hi=None, choices=[],
-               many=False, default="5", help="A made-up limit on the twist, degrees")
+               many=False, default="5", required=False, help="A made-up limit on the twist, degrees")
     monkeypatch.setitem(ri._COMMANDS, "sweep", ri._COMMANDS["sweep"] + [row])
     options, axes = ri._split("sweep", {"max_twist_deg": 2.5, "x": [0.1]})
     assert axes == {"x": [0.1]}

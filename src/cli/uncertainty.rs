@@ -5,10 +5,10 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use racket_impact::experiments::robustness;
-use racket_impact::params::keys;
 use racket_impact::command::uncertainty::{Uncertain, Uncertainty};
 use racket_impact::command::{execute, Control};
+use racket_impact::experiments::robustness;
+use racket_impact::params::keys;
 use racket_impact::Result;
 
 use super::common::{out, print_diagnostics, Common, Format, Reporter};

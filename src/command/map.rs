@@ -6,7 +6,7 @@ use crate::diagnostic::Diagnostic;
 use crate::error::Result;
 use crate::intake::Sources;
 use crate::params::Params;
-use crate::study::map::{MapOutcome, MapRequest, Quantity, MAX_GRID, MIN_GRID, MAP_SETS};
+use crate::study::map::{MapOutcome, MapRequest, Quantity, MAP_SETS, MAX_GRID, MIN_GRID};
 
 /// The command.
 pub const NAME: &str = "map";
@@ -34,7 +34,12 @@ pub const OPTIONS: &[Opt] = &[
         Some("21"),
         "Grid points across the face, from -half-width to +half-width",
     ),
-    Opt::new("compare-racket", Kind::Text, None, "Difference map against this racket (file or preset): B - A with A = the racket"),
+    Opt::new(
+        "compare-racket",
+        Kind::Text,
+        None,
+        "Difference map against this racket (file or preset): B - A with A = the racket",
+    ),
     Opt::new(
         "compare-tension-lb",
         Kind::Number,

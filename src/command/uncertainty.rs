@@ -129,7 +129,9 @@ impl Uncertainty {
                 return Err(Error::invalid(
                     "samples",
                     samples,
-                    format!("with --claims must be at most {most} (every verdict is checked again at twice the samples)"),
+                    format!(
+                        "with --claims must be at most {most} (every verdict is checked again at twice the samples)"
+                    ),
                 ));
             }
             return Ok(Uncertainty::Claims { samples, seed });
