@@ -256,4 +256,3 @@ pub(crate) fn call(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyA
         other => Err(PyValueError::new_err(format!("no command {other:?} in this package"))),
     }
 }
-
