@@ -152,7 +152,9 @@ fn the_headline_conclusions_stand_where_their_numbers_do_not() {
         assert_eq!(r["verdict"], number, "{id}");
     }
     // where the conclusion is contested, pinned as computed
-    assert_eq!(row("fig4_e_a")["conclusion_verdict"], "contested");
+    // held at node 5's 9.10 cm in every draw, Fig 4's e_A stays under half the centre's (it was
+    // contested while a drawn length moved its load to another node)
+    assert_eq!(row("fig4_e_a")["conclusion_verdict"], "holds");
     assert_eq!(row("fig6_vibration_gone_at_10ms")["conclusion_verdict"], "contested");
     // "about 10 deg", read as every "about" is (within 10 %): about half the samples
     assert_eq!(row("fig8_theta_r4_50lb")["conclusion_verdict"], "contested");

@@ -299,3 +299,69 @@ fn csv_index_columns_spell_keys_with_underscores() {
     ), "{head}");
     assert!(!head.contains('-'), "{head}");
 }
+
+/// The positions every claim's impacts load (m from the tip, to 1e-9), each once, on a context
+/// under the claim's reading; `None` for a claim that loads none.
+fn loaded_positions(
+    claims: &[racket_impact::experiments::claims::Claim],
+    ctx: &racket_impact::experiments::Context,
+) -> Vec<Vec<i64>> {
+    use racket_impact::experiments::{claims::computations, Context};
+    let ctx = ctx.clone().remembering();
+    computations(claims)
+        .unwrap()
+        .iter()
+        .zip(claims)
+        .map(|(pc, c)| {
+            let mine = Context { scheme: c.reading.scheme(), ..ctx.clone() }.recording();
+            (pc.ours)(&mine).unwrap();
+            let mut at: Vec<i64> =
+                mine.runs.taken().iter().filter_map(|r| r.x_load).map(|x| (x * 1e9).round() as i64).collect();
+            at.sort_unstable();
+            at.dedup();
+            at
+        })
+        .collect()
+}
+
+/// The robustness study draws the racket's length, but no draw moves a claim's load: each
+/// impact is loaded at the physical point the claim's nominal run loads (Fig 4's 9.10 cm, node 5
+/// of the paper's beam, at every drawn length), so that no input's share carries the grid. Each
+/// input is moved to either end of its range in turn, the length among them; the same draws on a
+/// context that does not hold its loads move them (the check can fail).
+#[test]
+fn a_sampled_claims_loaded_position_does_not_move_with_a_sampled_input() {
+    use racket_impact::experiments::claims::claims;
+    use racket_impact::experiments::robustness::{context_at, inputs, sampling};
+    use racket_impact::experiments::Context;
+    use racket_impact::params::uncertainty::Dist;
+    let claims = claims().unwrap();
+    let inputs = inputs();
+    let nominal: Vec<f64> = inputs.iter().map(|i| i.uncertainty.unwrap().nominal).collect();
+    let base = sampling(&Context::paper());
+    let at_nominal = loaded_positions(&claims, &context_at(&base, &inputs, &nominal).unwrap());
+    let fig4 = claims.iter().position(|c| c.id == "fig4_e_a").unwrap();
+    assert_eq!(at_nominal[fig4], vec![(0.71 * 5.0 / 39.0 * 1e9_f64).round() as i64], "Fig 4 loads node 5's 9.10 cm");
+    assert!(at_nominal.iter().filter(|a| !a.is_empty()).count() >= 40);
+    let mut moved_without_holding = 0;
+    for (k, input) in inputs.iter().enumerate() {
+        let Dist::Uniform { lo, hi } = input.uncertainty.unwrap().dist else { continue };
+        for end in [lo, hi] {
+            let mut x = nominal.clone();
+            x[k] = end;
+            let drawn = loaded_positions(&claims, &context_at(&base, &inputs, &x).unwrap());
+            for (c, (a, b)) in claims.iter().zip(at_nominal.iter().zip(&drawn)) {
+                assert_eq!(a, b, "{}: its loads move when {} = {end}", c.id, input.key);
+            }
+            if input.key == "length" {
+                let free = Context { grid_length: None, ..base.clone() };
+                let drawn = loaded_positions(&claims, &context_at(&free, &inputs, &x).unwrap());
+                moved_without_holding += at_nominal.iter().zip(&drawn).filter(|(a, b)| a != b).count();
+            }
+        }
+    }
+    assert!(
+        moved_without_holding >= 40,
+        "without holding, a drawn length moved only {moved_without_holding} claims' loads"
+    );
+}

@@ -6,7 +6,7 @@
 //! dead spot (e_A ~ 0) near the tip and f(vib) ~ 0 at the fundamental node (~16 cm).
 
 use super::position::{centre, chart, run, PaperCentre};
-use super::{node_positions, Context, Experiment, PaperClaim};
+use super::{Context, Experiment, PaperClaim};
 use crate::error::Result;
 
 /// The registry entry.
@@ -34,8 +34,7 @@ pub const EXPERIMENT: Experiment = Experiment {
 /// The smallest |e_A| a reader finds on the Fig 5(b) curve in the outer 10 cm: at the paper's
 /// nodes there (nodes 0-5 of N = 39, x <= 9.1 cm), each computed with the context's numerics.
 fn dead_spot(ctx: &Context) -> Result<f64> {
-    let paper_nodes = node_positions(&Context { scheme: super::Scheme::Paper, ..ctx.clone() }.paper_params(0.0, 4.0e4));
-    let params: Vec<_> = paper_nodes.iter().take(6).map(|&x| ctx.paper_params(x, 4.0e4)).collect();
+    let params: Vec<_> = ctx.paper_nodes().iter().take(6).map(|&x| ctx.paper_params(x, 4.0e4)).collect();
     Ok(ctx.sweep(&params)?.iter().map(|r| r.e_a.abs()).fold(f64::INFINITY, f64::min))
 }
 

@@ -120,8 +120,7 @@ pub struct BothBeds {
 /// The positions are the paper's nodes on any context, so that a converged context computes the
 /// same points.
 pub fn both_beds(ctx: &Context) -> Result<Vec<BothBeds>> {
-    let paper = Context { scheme: super::Scheme::Paper, ..ctx.clone() };
-    let nodes = super::node_positions(&paper.paper_params(0.0, KS_VALUES[0]));
+    let nodes = ctx.paper_nodes();
     let mut points: Vec<(f64, f64, f64)> = nodes.iter().skip(1).step_by(4).map(|&x| (x, 0.0, 0.0)).collect();
     for x in [0.10, super::CENTRE_X] {
         points.extend((1..=5).map(|k| (x, 0.02 * k as f64, ctx.v1_off_axis())));

@@ -51,6 +51,11 @@ pub struct Context {
     /// Impacts already run on this context (shared by its clones), where asked for
     /// ([`Context::remembering`]): claims that run the same impact share it.
     pub memo: Memo,
+    /// The length (m) of the racket whose N = 39 nodes place every load under the paper's
+    /// numerics, where it is not this context's own: the robustness study draws the racket's
+    /// length but holds each load at the physical point the nominal run loads
+    /// ([`Context::holding_loads`]). `None`: the context's own racket.
+    pub grid_length: Option<f64>,
 }
 
 /// The numerics of a context's beams.
@@ -195,6 +200,7 @@ impl Context {
             scheme: Scheme::Paper,
             runs: Runs::default(),
             memo: Memo::default(),
+            grid_length: None,
         }
     }
 
@@ -217,25 +223,59 @@ impl Context {
         self
     }
 
-    /// One impact for a claim: [`impact`] under this context's record and store; under
-    /// [`Scheme::Curve`], at a position between two nodes, the impacts on both read between
-    /// them.
+    /// The same context with every load under the paper's numerics held where the paper's
+    /// N = 39 beam of this context's racket puts it, whatever racket it is given later
+    /// ([`Context::grid_length`]): an impact set up at `x` is loaded at the position of the node
+    /// the nominal beam loads, a curve is read between the nominal beam's nodes, each position
+    /// loaded with the force shared between the neighbouring nodes of the beam at hand (`hat`),
+    /// so that a drawn length moves no load.
+    pub fn holding_loads(mut self) -> Self {
+        self.grid_length = Some(self.racket.length);
+        self
+    }
+
+    /// The positions (m from the tip) of the nodes of the paper's N = 39 beam that place the
+    /// loads ([`Context::grid_length`], else this context's racket), whatever the context's
+    /// numerics: the points the paper's figures computed.
+    pub fn paper_nodes(&self) -> Vec<f64> {
+        let n = Scheme::Paper.numerics().1;
+        let length = self.grid_length.unwrap_or(self.racket.length);
+        (0..=n).map(|i| length * i as f64 / n as f64).collect()
+    }
+
+    /// One impact for a claim: [`impact`] under this context's record and store. Under the
+    /// paper's numerics an impact set up between two nodes is loaded on the nearest
+    /// ([`Scheme::Paper`]) or read between the two ([`Scheme::Curve`]); on a context holding its
+    /// loads ([`Context::holding_loads`]) the nodes are those of the held beam.
     pub fn impact(&self, p: &Params) -> Result<ImpactResult> {
+        let n = p.numerics.segments;
+        if self.scheme == Scheme::Converged {
+            return self.one_impact(p);
+        }
+        let s = self.grid_length.unwrap_or(p.racket.length) / n as f64;
         if self.scheme == Scheme::Curve {
-            let n = p.numerics.segments;
-            let s = p.racket.length / n as f64;
             let j = ((p.impact.x / s).floor().max(0.0) as usize).min(n - 1);
             let w = p.impact.x / s - j as f64;
             if w > 1e-9 && w < 1.0 - 1e-9 {
-                let at = |i: usize| {
-                    let mut q = *p;
-                    q.impact.x = i as f64 * s;
-                    self.one_impact(&q)
-                };
-                return Ok(ImpactResult::lerp(&at(j)?, &at(j + 1)?, w));
+                return Ok(ImpactResult::lerp(&self.at_node(p, j, s)?, &self.at_node(p, j + 1, s)?, w));
             }
         }
-        self.one_impact(p)
+        match self.grid_length {
+            // the nearest node of the held beam, ties towards the handle as the node rule's
+            Some(_) => self.at_node(p, (((p.impact.x / s).max(0.0) + 0.5).floor() as usize).min(n), s),
+            None => self.one_impact(p),
+        }
+    }
+
+    /// The impact `p` loaded at node `j` of a beam of spacing `s`: on a context holding its loads,
+    /// at that node's position with the force shared between the nodes of the beam at hand.
+    fn at_node(&self, p: &Params, j: usize, s: f64) -> Result<ImpactResult> {
+        let mut q = *p;
+        q.impact.x = j as f64 * s;
+        if self.grid_length.is_some() {
+            q.numerics.load = LoadRule::Hat;
+        }
+        self.one_impact(&q)
     }
 
     /// One impact under this context's record and store.
