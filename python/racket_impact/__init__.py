@@ -42,6 +42,7 @@ __all__ = [
     "simulate",
     "sweep",
     "face_map",
+    "card",
     "uncertainty",
     "presets",
     "strings",
@@ -50,6 +51,7 @@ __all__ = [
     "parameters",
     "Impact",
     "FaceMap",
+    "Card",
     "Uncertainty",
     "Racket",
     "Experiment",
@@ -457,6 +459,56 @@ def face_map(
     return FaceMap(quantity, json.loads(metadata), _table(columns), x, r, values, diagnostics)
 
 
+class Card:
+    """What string tension does to one racket (``card``).
+
+    ``table``: one row per racket and tension with every panel's numbers (the card's CSV
+    columns, at full precision); ``header``: the CSV's header block (the racket, tensions and
+    numerics, each panel's assumptions, what the spin law was validated on and what not, and on
+    the paper's racket the paper beside the model); ``paper``: the paper's conclusions beside the
+    model's as a table (the paper's racket only, else None); ``png``: the picture's bytes (a
+    notebook shows the card itself); ``diagnostics``."""
+
+    def __init__(self, table, header: list[str], paper, png: bytes, diagnostics: list[dict[str, str]]):
+        self.table = table
+        self.header = header
+        self.paper = paper
+        self.png = png
+        self.diagnostics = diagnostics
+
+    def _repr_png_(self) -> bytes:
+        return self.png
+
+    def __repr__(self) -> str:
+        return f"Card({self.header[0] if self.header else ''!r}, {len(self.table)} rows)"
+
+
+def card(*, racket=None, config=None, progress=None, out=None, **kwargs) -> Card:
+    # (the docstring is made from the parameters' and the options' declarations below)
+    options, params = _split("card", kwargs)
+    for name in params:
+        why = _CARD_SETS.get(_param(name, "card")["key"])
+        if why:
+            raise TypeError(f"card() got an unexpected keyword argument {name!r}: {why}")
+    tensions = options.get("tensions_lb")
+    if tensions is not None and not isinstance(tensions, str):
+        if np.ndim(tensions) != 1 or not all(isinstance(t, numbers.Real) and not isinstance(t, bool) for t in tensions):
+            raise TypeError(f"card() argument tensions_lb takes a text (lo:hi:count) or a sequence of numbers, not {tensions!r}")
+        options["tensions_lb"] = ",".join(repr(float(t)) for t in tensions)
+    if out is not None:
+        out = os.fspath(out)
+        _native.card_files(out, None, None)
+    pairs = _pairs(params, "card")
+    (_, columns), header, paper, csv, png, diagnostics = _call(
+        "card", racket, config, pairs, _options("card", "card", options), progress
+    )
+    if out is not None:
+        _native.card_files(out, csv, bytes(png))
+    diagnostics = json.loads(diagnostics)
+    _warn(diagnostics)
+    return Card(_table(columns), list(header), None if paper is None else _table(paper[1]), bytes(png), diagnostics)
+
+
 class Uncertainty:
     """An impact's result fields under uncertain inputs (``uncertainty --vary``).
 
@@ -735,6 +787,25 @@ compare_tension_lb : float or two floats, optional
 {_RACKET_DOC}
 @PARAMETERS@
 """,
+    card: f"""What string tension does to one racket: power, sweet spot, control, comfort and spin against the tension (``card``).
+
+For a racket (``racket=``, or the paper's), a string (``string=``, data/strings) and a range of
+tensions, every panel computed as the command that computes it alone: the ball speeds as
+``speed``, the sweet spot from ``map``, the twist, vibration and contact time as ``simulate``,
+the spin as ``speed``'s stroke. Returns a :class:`Card` (its table, header block, the paper
+beside the model on the paper's racket, the PNG); with ``out`` its two files are written too,
+the CSV at ``out`` and the PNG beside it. Refused above ten minutes of estimated work unless
+``long=True``. The card sets the impact points, speeds, incidence and ``ks`` itself, so
+those are not keywords here.
+
+Parameters
+----------
+out : str or os.PathLike, optional
+    Write the card's CSV here and its PNG beside it (same stem), atomically.
+{_RACKET_DOC}
+@OPTIONS@
+@PARAMETERS@
+""",
     uncertainty: f"""An impact's result fields under uncertain inputs: quantiles and Sobol' indices.
 
 ``vary``: the uncertain inputs, each ``"KEY=DIST"`` (DIST ``uniform:LO:HI``,
@@ -760,7 +831,7 @@ seed : int, optional
 
 
 #: The command each function runs: its options are the library's declaration of them.
-_COMMAND_OF = {simulate: "simulate", sweep: "sweep"}
+_COMMAND_OF = {simulate: "simulate", sweep: "sweep", card: "card"}
 
 
 def _option_default(o: dict[str, Any]) -> Any:
@@ -806,8 +877,10 @@ def _signature(function, names: list[str]) -> inspect.Signature:
 #: The parameters a map sets itself, with why (the grid sets the impact point, the map its
 #: solver), as the library declares them.
 _MAP_SETS: dict[str, str] = dict(json.loads(_native.map_sets()))
+#: The parameters a card sets itself, with why.
+_CARD_SETS: dict[str, str] = dict(json.loads(_native.card_sets()))
 #: The parameters a function does not take.
-_EXCLUDED = {face_map: set(_MAP_SETS)}
+_EXCLUDED = {face_map: set(_MAP_SETS), card: set(_CARD_SETS)}
 
 
 def _taken(function) -> list[dict[str, Any]]:

@@ -143,6 +143,20 @@ def stub() -> str:
     parts.append(_function(ri.face_map, own, "FaceMap", _TYPES))
     parts.append(
         _class(
+            ri.Card,
+            [
+                f"    table: {table}",
+                "    header: list[str]",
+                f"    paper: {table} | None",
+                "    png: bytes",
+                "    diagnostics: list[dict[str, str]]",
+            ],
+        )
+    )
+    own = _RACKET + ",\n    out: str | os.PathLike[str] | None = None"
+    parts.append(_function(ri.card, own, "Card", _TYPES))
+    parts.append(
+        _class(
             ri.Uncertainty,
             [
                 f"    summary: {table}",

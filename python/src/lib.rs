@@ -350,6 +350,20 @@ fn call(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyAny>> {
             let diagnostics = serde_json::to_value(&diagnostics).map_err(|e| PyValueError::new_err(e.to_string()))?;
             Ok((columns_py(py, header, columns)?, json_text(&diagnostics)?).into_pyobject(py)?.into_any().unbind())
         }
+        "card" => {
+            let sources = sources(args, 3, (racket, config), "card")?;
+            let card = drive(py, reporter, move |ctl| {
+                let request = racket_impact::command::card::CardCommand::new(&sources, &given)?;
+                let card = execute(request, ctl)?;
+                let png = racket_impact::render::plot::sheet::sheet_png("card", &card.sheet()?)?;
+                Ok((card.table()?, card.header()?, card.paper_table()?, card.csv()?, png, card.diagnostics))
+            })?;
+            let (table, header, paper, csv, png, diagnostics) = card;
+            let paper = paper.map(|t| table_py(py, &t)).transpose()?;
+            let diagnostics = serde_json::to_value(&diagnostics).map_err(|e| PyValueError::new_err(e.to_string()))?;
+            let out = (table_py(py, &table)?, header, paper, csv, PyBytes::new(py, &png), json_text(&diagnostics)?);
+            Ok(out.into_pyobject(py)?.into_any().unbind())
+        }
         other => Err(PyValueError::new_err(format!("no command {other:?} in this package"))),
     }
 }
@@ -546,6 +560,34 @@ impl Typed {
     }
 }
 
+/// `card_files(out, csv, png)`: the card's two files, the CSV at `out` and the PNG beside it
+/// (same stem), written together and atomically; with `csv` and `png` None, only checked (a
+/// path the card cannot write, or an input of the run, refused before the work).
+fn card_files(args: &Bound<'_, PyTuple>) -> PyResult<()> {
+    let out: String = arg(args, 0)?;
+    let csv: Option<String> = arg(args, 1)?;
+    let png: Option<Vec<u8>> = arg(args, 2)?;
+    let outputs = racket_impact::render::map_files::Outputs::for_csv_of(
+        std::path::Path::new(&out),
+        "the card's CSV file (its PNG goes next to it with the same stem), e.g. card.csv",
+        "a card is two files (CSV and PNG with the same stem): give a file path, not a device or pipe",
+    )
+    .map_err(fail)?;
+    if let (Some(csv), Some(png)) = (csv, png) {
+        let mut staged = racket_impact::render::io::Staged::new();
+        staged.bytes(&outputs.csv, csv.as_bytes()).map_err(fail)?;
+        staged.bytes(&outputs.png, &png).map_err(fail)?;
+        staged.commit().map_err(fail)?;
+    }
+    Ok(())
+}
+
+/// The parameters a card sets itself, with why (as JSON pairs).
+fn card_sets() -> PyResult<String> {
+    let pairs: Vec<(&str, &str)> = racket_impact::study::card::CARD_SETS.iter().map(|(s, why)| (s.key, *why)).collect();
+    serde_json::to_string(&pairs).map_err(|e| PyValueError::new_err(e.to_string()))
+}
+
 /// `face_map(racket, config, pairs, quantity, nx, nr, compare_racket, compare_tension_lb)`:
 /// the map `map` computes, without its files: (metadata JSON, table, (x, r, values), diagnostics
 /// JSON).
@@ -683,6 +725,10 @@ fn module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     add(m, c"call", c"call(command, racket, config, pairs, options, reporter) -> the command's result", call)?;
     add(m, c"face_map", c"face_map(racket, config, pairs, quantity, nx, nr, compare_racket, tensions)", face_map)?;
     add(m, c"uncertainty", c"uncertainty(racket, config, pairs, vary, samples, seed) -> JSON", uncertainty)?;
+    add(m, c"card_sets", c"card_sets() -> JSON [(key, why)] of what a card sets itself", |_, _| card_sets())?;
+    add(m, c"card_files", c"card_files(out, csv, png): the card's files (None, None: checked only)", |_, a| {
+        card_files(a)
+    })?;
     add(m, c"presets", c"presets(segments) -> table", presets)?;
     add(m, c"racket", c"racket(source, segments) -> (name, JSON, fit table)", racket)?;
     add(m, c"strings", c"strings() -> JSON rows", |_, _| strings())?;

@@ -29,6 +29,8 @@ declared! {
     SimulateOptions = command::simulate::OPTIONS;
     /// `sweep`'s options.
     SweepOptions = command::sweep::OPTIONS;
+    /// `card`'s options.
+    CardOptions = command::card::OPTIONS;
 }
 
 /// The options of a command, as given on its command line.

@@ -9,6 +9,7 @@
 //! inputs, its options declared once ([`Request::OPTIONS`], from which the command line makes
 //! its flags and Python its keywords) and a line in [`ALL`].
 
+pub mod card;
 pub mod options;
 pub mod simulate;
 pub mod sweep;
@@ -101,6 +102,7 @@ pub struct Described {
 pub const ALL: &[Described] = &[
     Described { name: simulate::NAME, options: simulate::OPTIONS },
     Described { name: sweep::NAME, options: sweep::OPTIONS },
+    Described { name: card::NAME, options: card::OPTIONS },
 ];
 
 /// The options of the command `name`.
