@@ -117,12 +117,6 @@ pub fn diagnostics_json(diagnostics: &[Diagnostic]) -> Result<serde_json::Value>
     serde_json::to_value(diagnostics).map_err(|e| Error::io("<json>", e))
 }
 
-/// The clap value parser of every number option that is not a parameter flag (those read
-/// through the same function): a number as written, refused where it does not fit an f64.
-pub fn number(text: &str) -> std::result::Result<f64, String> {
-    racket_impact::params::number::parse_number(text).map_err(str::to_string)
-}
-
 /// Output format.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Format {
@@ -183,8 +177,6 @@ pub fn check_used<'a>(sources: &Sources, params: impl IntoIterator<Item = &'a Pa
 /// when dropped.
 pub struct Progress {
     bar: indicatif::ProgressBar,
-    /// When the run started.
-    pub started: std::time::Instant,
     /// Dropped to tell the watcher the run is over.
     stop: Option<std::sync::mpsc::Sender<()>>,
     /// Shows the bar once [`Progress::DELAY`] has passed.
@@ -194,11 +186,6 @@ pub struct Progress {
 impl Progress {
     /// How long a run goes before its progress is drawn.
     pub const DELAY: std::time::Duration = std::time::Duration::from_secs(1);
-
-    /// A bar over `total` impacts, with their rate and the time left.
-    pub fn new(total: u64) -> Self {
-        Self::start(total, "{bar:40} {pos}/{len} impacts, {per_sec}, eta {eta}")
-    }
 
     /// A bar over `total` steps named `unit` (`experiments`), each named as it starts
     /// ([`Progress::at`]), with the time elapsed.
@@ -220,9 +207,8 @@ impl Progress {
             indicatif::ProgressStyle::with_template(template)
                 .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
         );
-        let started = std::time::Instant::now();
         if !std::io::stderr().is_terminal() || QUIET.load(std::sync::atomic::Ordering::Relaxed) {
-            return Progress { bar, started, stop: None, watcher: None };
+            return Progress { bar, stop: None, watcher: None };
         }
         let (stop, stopped) = std::sync::mpsc::channel::<()>();
         let shown = bar.clone();
@@ -232,12 +218,7 @@ impl Progress {
                 shown.enable_steady_tick(std::time::Duration::from_millis(200));
             }
         });
-        Progress { bar, started, stop: Some(stop), watcher: Some(watcher) }
-    }
-
-    /// `done` of the total.
-    pub fn update(&self, done: u64) {
-        self.bar.set_position(done);
+        Progress { bar, stop: Some(stop), watcher: Some(watcher) }
     }
 
     /// Step `done` (0-based) of the total is `name`.

@@ -45,7 +45,7 @@ key_set! {
     /// `simulate`: every parameter.
     SimulateKeys = "simulate": |_key| true;
     /// `modes`: the free racket's modes depend only on its length, mass, stiffness and segments.
-    ModesKeys = "modes" (false): |key| keys::FREE_RACKET.iter().any(|s| s.key == key);
+    ModesKeys = "modes" (false): |key| racket_impact::command::modes::not_taken(key).is_none();
     /// `speed`: every parameter but the impact speed, incidence and spin, which the swing sets.
     SpeedKeys = "speed": |key| racket_impact::study::speed::set_by_speed(key).is_none();
     /// `map`: every parameter but the impact point (the grid sets it) and the solver and its
