@@ -345,6 +345,8 @@ fn what_the_card_sets_itself_and_bad_options_are_refused_before_any_file() {
         (vec!["--reference-lb", "-5"], "invalid reference-lb = -5"),
         (vec!["--racket", "tweener", "--compare", "tweener"], "invalid compare = tweener"),
         (vec!["--nx", "1"], "invalid nx = 1"),
+        (vec!["--tensions-lb", "1e300,60"], "tension 1e300 lb: each must satisfy"),
+        (vec!["--compare", "no-such-racket.toml"], "invalid compare = no-such-racket.toml"),
     ] {
         let mut a = vec!["card", "--out", &out];
         a.extend(args.iter());

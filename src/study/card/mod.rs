@@ -243,7 +243,10 @@ pub fn parse_tensions(spec: &str) -> Result<Vec<f64>> {
         spec.split(',').map(|t| number(t, "tension")).collect::<Result<_>>()?
     };
     if let Some(t) = values.iter().find(|t| !(t.is_finite() && **t > 0.0 && **t <= MAX_TENSION_LB)) {
-        return Err(bad(format!("tension {t} lb: each must satisfy 0 < T <= {MAX_TENSION_LB} lb")));
+        return Err(bad(format!(
+            "tension {} lb: each must satisfy 0 < T <= {MAX_TENSION_LB} lb",
+            crate::numfmt::sig(*t, 6)
+        )));
     }
     values.sort_by(f64::total_cmp);
     if values.windows(2).any(|w| w[0] == w[1]) {
@@ -281,7 +284,13 @@ impl CardRequest {
                     "is the card's own racket: a racket compared with itself differs nowhere",
                 ));
             }
-            variants.push(self.variant(Some(b))?);
+            // (a racket the card cannot read is named by the option that gave it)
+            variants.push(self.variant(Some(b)).map_err(|e| match e {
+                Error::InvalidParameter { field: "racket", value, allowed } => {
+                    Error::InvalidParameter { field: "compare", value, allowed }
+                }
+                other => other,
+            })?);
         }
         let reference = match self.reference_lb {
             Some(t) if !(t.is_finite() && t > 0.0 && t <= MAX_TENSION_LB) => {
