@@ -65,6 +65,30 @@ fn the_card_s_centre_e_a_and_twist_at_60_lb_are_simulate_s_bit_for_bit() {
 }
 
 #[test]
+fn the_card_s_comfort_impacts_at_60_lb_are_simulate_s_bit_for_bit() {
+    let c = card(Some("tweener"), "alu-power-16", "50,60");
+    let row = c.rows.iter().find(|r| r.who == Who::Variant(0) && r.tension_lb == 60.0).unwrap();
+    let points = c.prepared.variants[0].points;
+    let ks = ks_text(60.0);
+    let simulate = |x: f64| {
+        let x = format!("{x}");
+        let s =
+            sources(Some("tweener"), &[("string", "alu-power-16"), ("ks", &ks), ("v1", "30"), ("x", &x)], "simulate");
+        racket_impact::study::impact::Single::run(&s).unwrap().result
+    };
+    for (shot, x) in [(Shot::Tip, points.tip), (Shot::Throat, points.throat)] {
+        let (sim, card) = (simulate(x), row.impact(shot).unwrap());
+        assert_eq!(card.f_vib.to_bits(), sim.f_vib.to_bits(), "{shot:?}");
+        assert_eq!(card.e_a.to_bits(), sim.e_a.to_bits(), "{shot:?}");
+    }
+    // and the table's columns are those values, in %
+    let t = c.table().unwrap();
+    let k = t.rows.iter().position(|r| r[0].to_csv_field() == "tweener" && r[1].as_f64() == 60.0).unwrap();
+    assert_eq!(t.column("vib_tip_pct").unwrap()[k], 100.0 * row.impact(Shot::Tip).unwrap().f_vib);
+    assert_eq!(t.column("vib_throat_pct").unwrap()[k], 100.0 * row.impact(Shot::Throat).unwrap().f_vib);
+}
+
+#[test]
 fn the_command_line_card_and_simulate_agree_to_the_last_digit() {
     let s = Scratch::new("card-simulate");
     let out = run(&[
