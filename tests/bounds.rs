@@ -48,7 +48,7 @@ fn every_count_from_the_input_is_checked_before_any_work() {
         ),
         (vec!["map", "--nx", "100000"], "invalid nx", "<= 401"),
         (vec!["map", "--nr", "18446744073709551615"], "invalid nr", "<= 401"),
-        (vec!["modes", "--count", "1000000"], "invalid count", "<= min(20"),
+        (vec!["modes", "--count", "1000000"], "invalid count", "count <= 20"),
         (vec!["racket", "tweener", "--segments", "100000000"], "invalid segments", "<= 400"),
         (vec!["simulate", "--segments", "100000000"], "invalid segments", "<= 400"),
     ];

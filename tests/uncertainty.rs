@@ -150,7 +150,7 @@ fn bad_specs_are_refused_in_one_line_and_nothing_is_written() {
         (&["--vary", "ks=uniform:2e4:3e4", "--vary", "ks=uniform:3e4:4e4"], "ks is varied twice"),
         (
             &["--vary", "ks=uniform:2e4:3e4", "--samples", "0"],
-            "invalid samples = 0: must satisfy 1 <= samples <= 65536",
+            "invalid samples = 0: must be a whole number, 1 <= samples <= 65536",
         ),
         (&["--vary", "ks=uniform:2e4:3e4", "--samples", "100000"], "samples <= 65536"),
         (&["--vary", "ks=uniform:2e4:3e4", "--ks", "3e4"], "ks is both fixed (--ks) and varied"),

@@ -28,7 +28,9 @@ import inspect
 import json
 import numbers
 import os
+import re
 import sys
+import textwrap
 import warnings
 from typing import Any, NamedTuple
 
@@ -42,7 +44,10 @@ __all__ = [
     "simulate",
     "sweep",
     "face_map",
+    "card",
     "uncertainty",
+    "speed",
+    "modes",
     "presets",
     "strings",
     "experiments",
@@ -50,8 +55,10 @@ __all__ = [
     "parameters",
     "Impact",
     "FaceMap",
+    "Card",
     "Uncertainty",
     "Racket",
+    "Modes",
     "Experiment",
     "RacketImpactWarning",
     "UnusualValueWarning",
@@ -69,7 +76,11 @@ _FIELDS: list[dict[str, Any]] = json.loads(_native.result_fields())
 #: Every command's own options (not the parameters: ``nx``, ``samples``, ``long``, ...), as the
 #: library declares them: name (the flag), keyword, kind (switch, count, number, text, choice),
 #: range, choices, whether a list, default (as the flag takes it) and help.
-_COMMANDS: dict[str, list[dict[str, Any]]] = json.loads(_native.commands())
+_DECLARED: dict[str, dict[str, Any]] = json.loads(_native.commands())
+_COMMANDS: dict[str, list[dict[str, Any]]] = {name: d["options"] for name, d in _DECLARED.items()}
+#: The parameters each command does not take, with why (a map's grid sets the impact point, the
+#: swing sets a speed's ball speed, a free racket's modes need neither ball nor strings).
+_NOT_TAKEN: dict[str, dict[str, str]] = {name: d["not_taken"] for name, d in _DECLARED.items()}
 
 
 def _by_name() -> dict[str, dict[str, Any]]:
@@ -228,6 +239,8 @@ def _options(command: str, function: str, given: dict[str, Any]) -> list[tuple[s
     out = []
     for o in _COMMANDS[command]:
         if o["keyword"] not in given:
+            if o["required"]:
+                raise TypeError(f"{function}() missing required keyword argument: {o['keyword']!r}")
             continue
         value = given[o["keyword"]]
         if value is None:
@@ -246,6 +259,16 @@ def _split(command: str, kwargs: dict[str, Any]) -> tuple[dict[str, Any], dict[s
     """The keywords as (the command's options, the impact parameters)."""
     own = {o["keyword"] for o in _COMMANDS[command]}
     return {k: v for k, v in kwargs.items() if k in own}, {k: v for k, v in kwargs.items() if k not in own}
+
+
+def _command_pairs(command: str, function: str, params: dict[str, Any]) -> list[tuple[str, str]]:
+    """The parameters as ``_pairs``, a parameter the command does not take a ``TypeError`` that
+    says why (a map's grid sets the impact point)."""
+    for name in params:
+        why = _NOT_TAKEN[command].get(_param(name, function)["key"])
+        if why:
+            raise TypeError(f"{function}() got an unexpected keyword argument {name!r}: {_python_words(why)}")
+    return _pairs(params, function)
 
 
 def _call(command: str, racket, config, pairs, options, progress) -> Any:
@@ -429,32 +452,117 @@ class FaceMap:
         return f"FaceMap({self.quantity!r}, {len(self.x)} x {len(self.r)} grid, {np.isfinite(self.values).sum()} points)"
 
 
-def face_map(
-    *,
-    racket=None,
-    quantity: str = "power",
-    nx: int = 41,
-    nr: int = 21,
-    compare_racket=None,
-    compare_tension_lb=None,
-    config=None,
-    **params,
-) -> FaceMap:
-    # (the docstring is made from the parameters' declaration below)
-    for name in params:
-        why = _MAP_SETS.get(_param(name, "face_map")["key"])
-        if why:
-            raise TypeError(f"face_map() got an unexpected keyword argument {name!r}: {why}")
-    pairs = _pairs(params, "face_map")
-    tensions = [] if compare_tension_lb is None else [float(t) for t in np.atleast_1d(compare_tension_lb)]
-    metadata, (_, columns), (xs, rs, z), diagnostics = _native.face_map(
-        _source(racket), _path(config), pairs, quantity, int(nx), int(nr), _source(compare_racket), tensions
-    )
+def face_map(*, racket=None, config=None, progress=None, **kwargs) -> FaceMap:
+    # (the docstring is made from the parameters' and the options' declarations below)
+    options, params = _split("map", kwargs)
+    pairs = _command_pairs("map", "face_map", params)
+    texts = _options("map", "face_map", options)
+    metadata, (_, columns), (xs, rs, z), diagnostics = _call("map", racket, config, pairs, texts, progress)
     diagnostics = json.loads(diagnostics)
     _warn(diagnostics)
     x, r = np.frombuffer(xs, "<f8"), np.frombuffer(rs, "<f8")
     values = np.frombuffer(z, "<f8").reshape(len(x), len(r))
+    quantity = dict(texts).get("quantity", ["power"])[0]
     return FaceMap(quantity, json.loads(metadata), _table(columns), x, r, values, diagnostics)
+
+
+class Card:
+    """What string tension does to one racket (``card``).
+
+    ``table``: one row per racket and tension with every panel's numbers (the card's CSV
+    columns, at full precision); ``header``: the CSV's header block (the racket, tensions and
+    numerics, each panel's assumptions, what the spin law was validated on and what not, and on
+    the paper's racket the paper beside the model); ``paper``: the paper's conclusions beside the
+    model's as a table (the paper's racket only, else None); ``png``: the picture's bytes (a
+    notebook shows the card itself); ``diagnostics``."""
+
+    def __init__(self, table, header: list[str], paper, png: bytes, diagnostics: list[dict[str, str]]):
+        self.table = table
+        self.header = header
+        self.paper = paper
+        self.png = png
+        self.diagnostics = diagnostics
+
+    def _repr_png_(self) -> bytes:
+        return self.png
+
+    def __repr__(self) -> str:
+        return f"Card({self.header[0] if self.header else ''!r}, {len(self.table)} rows)"
+
+
+def card(*, racket=None, config=None, progress=None, out=None, **kwargs) -> Card:
+    # (the docstring is made from the parameters' and the options' declarations below)
+    options, params = _split("card", kwargs)
+    tensions = options.get("tensions_lb")
+    if tensions is not None and not isinstance(tensions, str):
+        if np.ndim(tensions) != 1 or not all(isinstance(t, numbers.Real) and not isinstance(t, bool) for t in tensions):
+            raise TypeError(f"card() argument tensions_lb takes a text (lo:hi:count) or a sequence of numbers, not {tensions!r}")
+        options["tensions_lb"] = ",".join(repr(float(t)) for t in tensions)
+    if out is not None:
+        out = os.fspath(out)
+        _native.card_files(out, None, None)
+    pairs = _command_pairs("card", "card", params)
+    (_, columns), header, paper, csv, png, diagnostics = _call(
+        "card", racket, config, pairs, _options("card", "card", options), progress
+    )
+    if out is not None:
+        _native.card_files(out, csv, bytes(png))
+    diagnostics = json.loads(diagnostics)
+    _warn(diagnostics)
+    return Card(_table(columns), list(header), None if paper is None else _table(paper[1]), bytes(png), diagnostics)
+
+
+class Uncertainty:
+    """An impact's result fields under uncertain inputs (``uncertainty --vary``).
+
+    ``summary``: one row per result field (unit, mean, sd, q05, q50, q95); ``first_order`` and
+    ``total_order``: the Sobol' indices, one row per result field and a column per input;
+    ``intervals``: every index with its bootstrap interval (output, input, order, value, lo, hi).
+    DataFrames where pandas is installed, else dicts of numpy arrays. ``to_dict()`` is the JSON
+    document of ``uncertainty --format json``."""
+
+    def __init__(self, document: dict[str, Any]):
+        self._doc = document
+        outputs = document["outputs"]
+        inputs = [i["key"] for i in document["inputs"]]
+        names = list(outputs)
+        f = lambda v: np.nan if v is None else float(v)  # noqa: E731  (an index of a constant output is null)
+        summary = [("output", "str", names), ("unit", "str", [outputs[n]["unit"] for n in names])]
+        for stat in ("mean", "sd", "q05", "q50", "q95"):
+            summary.append((stat, "f", [f(outputs[n][stat]) for n in names]))
+        self.summary = _frame(summary, "output")
+        for order in ("first_order", "total_order"):
+            cols = [("output", "str", names)] + [(i, "f", [f(outputs[n][order][i]) for n in names]) for i in inputs]
+            setattr(self, order, _frame(cols, "output"))
+        rows = [
+            (n, i, order.split("_")[0], f(outputs[n][order][i]), f(outputs[n][order + "_ci"][i][0]), f(outputs[n][order + "_ci"][i][1]))
+            for n in names
+            for i in inputs
+            for order in ("first_order", "total_order")
+        ]
+        cols = list(zip(*rows)) if rows else [[]] * 6
+        self.intervals = _frame(
+            [
+                ("output", "str", list(cols[0])),
+                ("input", "str", list(cols[1])),
+                ("order", "str", list(cols[2])),
+                ("value", "f", list(cols[3])),
+                ("lo", "f", list(cols[4])),
+                ("hi", "f", list(cols[5])),
+            ]
+        )
+        self.inputs = inputs
+        self.samples = document["samples"]
+        self.seed = document["seed"]
+        self.runs = document["runs"]
+        self.diagnostics = document["diagnostics"]
+
+    def to_dict(self) -> dict[str, Any]:
+        """The study as the JSON document of ``uncertainty --format json`` (a copy)."""
+        return copy.deepcopy(self._doc)
+
+    def __repr__(self) -> str:
+        return f"Uncertainty(inputs={self.inputs}, samples={self.samples}, runs={self.runs})"
 
 
 class Uncertainty:
@@ -523,19 +631,56 @@ def _frame(columns: list[tuple[str, str, list]], index: str | None = None):
     return frame.set_index(index) if index else frame
 
 
-def uncertainty(vary, *, samples: int | None = None, seed: int | None = None, racket=None, config=None, **params) -> Uncertainty:
-    # (the docstring is made from the parameters' declaration below)
-    if isinstance(vary, (str, dict)):
-        vary = [vary] if isinstance(vary, str) else [k if d is None else f"{k}={d}" for k, d in vary.items()]
-    texts = []
-    for v in vary:
-        name, sep, dist = str(v).partition("=")
-        p = _by_name().get(name.strip())
-        texts.append(f"{p['key'] if p else name}{sep}{dist}")
+def uncertainty(vary=None, *, racket=None, config=None, progress=None, **kwargs):
+    # (the docstring is made from the parameters' and the options' declarations below)
+    options, params = _split("uncertainty", kwargs)
+    if vary is not None:
+        if isinstance(vary, (str, dict)):
+            vary = [vary] if isinstance(vary, str) else [k if d is None else f"{k}={d}" for k, d in vary.items()]
+        texts = []
+        for v in vary:
+            name, sep, dist = str(v).partition("=")
+            p = _by_name().get(name.strip())
+            texts.append(f"{p['key'] if p else name}{sep}{dist}")
+        options["vary"] = texts
     pairs = _pairs(params, "uncertainty")
-    doc = json.loads(_native.uncertainty(_source(racket), _path(config), pairs, texts, samples, seed))
+    doc, claims, diagnostics = _call(
+        "uncertainty", racket, config, pairs, _options("uncertainty", "uncertainty", options), progress
+    )
+    if claims is not None:
+        _warn(json.loads(diagnostics))
+        return _table(claims[1])
+    doc = json.loads(doc)
     _warn(doc["diagnostics"])
     return Uncertainty(doc)
+
+
+def speed(*, racket=None, config=None, progress=None, **kwargs):
+    # (the docstring is made from the parameters' and the options' declarations below)
+    options, params = _split("speed", kwargs)
+    pairs = _command_pairs("speed", "speed", params)
+    table, _, diagnostics = _call("speed", racket, config, pairs, _options("speed", "speed", options), progress)
+    _warn(json.loads(diagnostics))
+    return _table(table[1])
+
+
+class Modes(NamedTuple):
+    """The free racket's modes (``modes``): the first flexible modes' frequencies (Hz), the
+    nodes of the fundamental (m from the tip), the beam's segments and the diagnostics."""
+
+    frequencies_hz: np.ndarray
+    mode1_nodes_m: np.ndarray
+    segments: int
+    diagnostics: list
+
+
+def modes(*, racket=None, config=None, progress=None, **kwargs) -> Modes:
+    # (the docstring is made from the parameters' and the options' declarations below)
+    options, params = _split("modes", kwargs)
+    pairs = _command_pairs("modes", "modes", params)
+    doc = json.loads(_call("modes", racket, config, pairs, _options("modes", "modes", options), progress))
+    _warn(doc["diagnostics"])
+    return Modes(np.array(doc["frequencies_hz"]), np.array(doc["mode1_nodes_m"]), doc["segments"], doc["diagnostics"])
 
 
 # --- rackets, strings, experiments ----------------------------------------------------------
@@ -695,6 +840,14 @@ Parameters
 {_RACKET_DOC}
 @OPTIONS@
 @PARAMETERS@
+
+Returns
+-------
+Impact
+    The result, every field an attribute (SI units unless the name says otherwise); a field
+    of an oblique or spinning ball only is absent at normal incidence:
+
+@FIELDS@
 """,
     sweep: f"""Every impact of the cartesian product of the values given, in parallel, as ``sweep``.
 
@@ -724,15 +877,51 @@ written. The grid sets the impact point and the map its solver, so ``x``, ``r``,
 
 Parameters
 ----------
-quantity : str
-    power (100 e_A, %), e_a, tau (ms), theta (deg), f_vib, spin (rpm) or rebound_angle (deg).
-nx, nr : int
-    Grid points along the racket (tip to the end of the face) and across it (2..=401).
-compare_racket : str, os.PathLike or Racket, optional
-    A difference map, B - A, against this racket (A: ``racket``).
-compare_tension_lb : float or two floats, optional
-    A difference map between string tensions, lb: T (A as given, B at T) or (T1, T2).
 {_RACKET_DOC}
+@OPTIONS@
+@PARAMETERS@
+""",
+    speed: f"""Outgoing ball speed for a swing and an incoming ball, compared across tensions or rackets.
+
+The command line's ``speed``: v_out = e_A v_in + (1 + e_A) v_racket, with e_A computed at the
+relative speed and the racket's swing speed at the impact point; a tilted swing path or an
+incoming spin makes the impact oblique. Returns a DataFrame where pandas is installed (else a
+dict of numpy arrays) with ``speed``'s CSV columns, one row per variant, the first the reference.
+
+Parameters
+----------
+{_RACKET_DOC}
+@OPTIONS@
+@PARAMETERS@
+""",
+    modes: f"""The free racket's flexible modes: frequencies and the nodes of the fundamental (``modes``).
+
+Returns a :class:`Modes`. Only the racket's length, mass, stiffness and segments matter: the
+other parameters are not keywords here.
+
+Parameters
+----------
+{_RACKET_DOC}
+@OPTIONS@
+@PARAMETERS@
+""",
+    card: f"""What string tension does to one racket: power, sweet spot, control, comfort and spin against the tension (``card``).
+
+For a racket (``racket=``, or the paper's), a string (``string=``, data/strings) and a range of
+tensions, every panel computed as the command that computes it alone: the ball speeds as
+``speed``, the sweet spot from ``map``, the twist, vibration and contact time as ``simulate``,
+the spin as ``speed``'s stroke. Returns a :class:`Card` (its table, header block, the paper
+beside the model on the paper's racket, the PNG); with ``out`` its two files are written too,
+the CSV at ``out`` and the PNG beside it. Refused above ten minutes of estimated work unless
+``long=True``. The card sets the impact points, speeds, incidence and ``ks`` itself, so
+those are not keywords here.
+
+Parameters
+----------
+out : str or os.PathLike, optional
+    Write the card's CSV here and its PNG beside it (same stem), atomically.
+{_RACKET_DOC}
+@OPTIONS@
 @PARAMETERS@
 """,
     uncertainty: f"""An impact's result fields under uncertain inputs: quantiles and Sobol' indices.
@@ -745,22 +934,56 @@ core with the GIL released, with the modal solver unless ``solver`` is given or 
 stiffening strings need fd. Returns an :class:`Uncertainty` (DataFrames of the quantiles and
 indices), equal to ``uncertainty --format json``.
 
+With ``claims=True`` (and no ``vary``): every paper claim under the declared uncertainty of the
+paper's inputs, as ``uncertainty --claims`` (its CSV's table).
+
 Parameters
 ----------
 vary : list of str or dict
     The uncertain inputs.
-samples : int, optional
-    Base samples N of the design, 1..=65536 (default 256).
-seed : int, optional
-    Seed of the sequence and the bootstrap (default 0).
 {_RACKET_DOC}
+@OPTIONS@
 @PARAMETERS@
 """,
 }
 
 
 #: The command each function runs: its options are the library's declaration of them.
-_COMMAND_OF = {simulate: "simulate", sweep: "sweep"}
+_COMMAND_OF = {
+    simulate: "simulate",
+    sweep: "sweep",
+    face_map: "map",
+    uncertainty: "uncertainty",
+    speed: "speed",
+    modes: "modes",
+    card: "card",
+}
+
+
+def _python_words(text: str) -> str:
+    """A text of the library in Python's words: a flag ``--angle-deg`` is the keyword
+    ``angle_deg``, a switch ``--long`` is ``long=True``."""
+    switches = {o["name"] for options in _COMMANDS.values() for o in options if o["kind"] == "switch"}
+    return re.sub(
+        r"--([a-z][a-z0-9-]*)", lambda m: m[1].replace("-", "_") + ("=True" if m[1] in switches else ""), text
+    )
+
+
+def _own(function) -> list[inspect.Parameter]:
+    """The function's own parameters, as written (kept before a signature made here replaces
+    what ``inspect`` sees)."""
+    if "_own_parameters" not in function.__dict__:
+        function._own_parameters = [
+            q for q in inspect.signature(function).parameters.values() if q.kind is not inspect.Parameter.VAR_KEYWORD
+        ]
+    return function._own_parameters
+
+
+def _command_options(function) -> list[dict[str, Any]]:
+    """The options of the function's command that are keywords of their own (not the
+    function's own parameters: ``uncertainty``'s ``vary`` comes first, positional)."""
+    own = {q.name for q in _own(function)}
+    return [o for o in _COMMANDS.get(_COMMAND_OF.get(function, ""), []) if o["keyword"] not in own]
 
 
 def _option_default(o: dict[str, Any]) -> Any:
@@ -777,7 +1000,8 @@ def _option_doc(o: dict[str, Any]) -> str:
     kind = {"switch": "bool", "count": "int", "number": "float", "text": "str", "choice": "str"}[o["kind"]]
     if o["many"]:
         kind = f"{kind} or sequence of {kind}"
-    lines = [f"{o['keyword']} : {kind}", f"    {o['help']}."]
+    lines = [f"{o['keyword']} : {kind}"]
+    lines += textwrap.wrap(_python_words(o["help"]) + ".", 92, initial_indent="    ", subsequent_indent="    ")
     if o["kind"] == "count":
         lines.append(f"    Allowed: {o['lo']} <= {o['keyword']} <= {o['hi']}.")
     if o["kind"] == "choice":
@@ -792,33 +1016,44 @@ def _signature(function, names: list[str]) -> inspect.Signature:
     """The function's own parameters, its command's options with their defaults, then every
     impact parameter as a keyword (default None: the default named in the docstring)."""
     options = [
-        inspect.Parameter(o["keyword"], inspect.Parameter.KEYWORD_ONLY, default=_option_default(o))
-        for o in _COMMANDS.get(_COMMAND_OF.get(function, ""), [])
+        inspect.Parameter(
+            o["keyword"],
+            inspect.Parameter.KEYWORD_ONLY,
+            default=inspect.Parameter.empty if o["required"] else _option_default(o),
+        )
+        for o in _command_options(function)
     ]
     extra = [inspect.Parameter(n, inspect.Parameter.KEYWORD_ONLY, default=None) for n in names]
-    # (the function's own, as written: not those a signature made earlier added)
-    added = {q.name for q in options + extra}
-    own = list(inspect.signature(function).parameters.values())
-    own = [q for q in own if q.kind is not inspect.Parameter.VAR_KEYWORD and q.name not in added]
-    return inspect.Signature(own + options + extra)
-
-
-#: The parameters a map sets itself, with why (the grid sets the impact point, the map its
-#: solver), as the library declares them.
-_MAP_SETS: dict[str, str] = dict(json.loads(_native.map_sets()))
-#: The parameters a function does not take.
-_EXCLUDED = {face_map: set(_MAP_SETS)}
+    return inspect.Signature(_own(function) + options + extra)
 
 
 def _taken(function) -> list[dict[str, Any]]:
-    """The parameters ``function`` takes as keywords."""
-    return [p for p in _PARAMS if p["key"] not in _EXCLUDED.get(function, ())]
+    """The parameters ``function`` takes as keywords: those its command takes."""
+    not_taken = _NOT_TAKEN.get(_COMMAND_OF.get(function, ""), {})
+    return [p for p in _PARAMS if p["key"] not in not_taken]
+
+
+def _fields_doc() -> str:
+    """Every result field of one impact as the returned :class:`Impact` has it: name, type and
+    unit, and what it is (the library's field table)."""
+    lines = []
+    for f in _FIELDS:
+        kind = {"number": "float", "flag": "bool"}[f["kind"]]
+        unit = f", {f['unit']}" if f["unit"] else ""
+        where = " (oblique or spinning ball only)" if f["oblique"] else ""
+        lines.append(f"    {f['key']} : {kind}{unit}{where}")
+        lines += textwrap.wrap(" ".join(f["doc"].split()), 88, initial_indent="        ", subsequent_indent="        ")
+    lines.append("    params : dict, f1_hz : float, diagnostics : list, series : DataFrame or None")
+    lines.append("        The parameters it ran with, the free racket's first bending frequency, the")
+    lines.append("        diagnostics (also given as warnings), the time series (``series=True``).")
+    return "\n".join(lines)
 
 
 def _docstring(function) -> str:
     """The function's docstring with every parameter it takes."""
-    options = "\n".join(_option_doc(o) for o in _COMMANDS.get(_COMMAND_OF.get(function, ""), []))
+    options = "\n".join(_option_doc(o) for o in _command_options(function))
     text = _DOCS[function].replace("@OPTIONS@\n", options + "\n" if options else "")
+    text = text.replace("@FIELDS@", _fields_doc())
     return text.replace("@PARAMETERS@", "\n".join(_param_doc(p) for p in _taken(function)))
 
 

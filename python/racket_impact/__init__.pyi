@@ -318,7 +318,8 @@ def simulate(
         error): by default once the call has run a second; False: never. Ctrl-C stops any call
         within a second (KeyboardInterrupt), with nothing kept.
     series : bool
-        Also record the impact's time series (t, F, y_b, Y_T, theta, every energy term); needs the fd solver.
+        Also record the impact's time series (t, F, y_b, Y_T, theta, every energy term); needs
+        the fd solver.
         Default: False.
     series_dt : float
         Sample spacing of the time series, s.
@@ -542,6 +543,118 @@ def simulate(
         Default: 78905.1 N/m.
         Used only for an oblique or spinning ball, with tangential = offset, radius or physical.
         Declared uncertainty: uniform:57971.1:113623 (nominal 78905.1).
+
+    Returns
+    -------
+    Impact
+        The result, every field an attribute (SI units unless the name says otherwise); a field
+        of an oblique or spinning ball only is absent at normal incidence:
+
+        e_a : float
+            Apparent coefficient of restitution `v2 / v1` (racket initially at rest).
+        tau_s : float, s
+            Impact duration, s.
+        theta_end_deg : float, deg
+            Rotation about the long axis at the end of the impact, degrees.
+        f_ball : float
+            Energy dissipated in the ball (Eq 11).
+        f_vib : float
+            Racket vibration energy after impact: racket energy minus its rigid-body energy.
+        f_vib_peak_pe : float
+            The paper's vibration measure: peak bending PE during two fundamental periods
+            after impact.
+        f_spin : float
+            Kinetic energy of twist about the long axis.
+        f_hand : float
+            Energy taken by the hand (`--grip hand`: its springs' energy plus what its
+            dampers dissipated) at separation; 0 for the paper's free racket.
+        f_rigid : float
+            Rigid-body kinetic energy of the racket (translation + rotation about the centre
+            of mass).
+        f_ke_ball : float
+            Rebound kinetic energy of the ball (= e_a^2), as a fraction of the incoming
+            kinetic energy; for an oblique or spinning ball that of the normal motion,
+            `(v2_n / v1_n)^2`, a fraction of the normal incoming KE `m_b (v1 cos angle)^2 /
+            2` only.
+        peak_force_n : float, N
+            Maximum contact force, N.
+        energy_error : float
+            Largest relative deviation of the total energy from its initial value, over the
+            run.
+        momentum_error : float
+            Largest relative deviation of the total linear momentum from `m_b v1`, over the
+            run.
+        x_load_m : float, m
+            Where the force really acted, m from the tip.
+        t_max_compression_s : float, s
+            Time of maximum total compression `Y_T`, s.
+        y0_m : float, m
+            Maximum ball compression `Y0`, m.
+        recontact : bool
+            True if the vibrating frame caught the ball again within the post-impact window.
+        dt_s : float, s
+            Time step used, s.
+        v2_n_m_per_s : float, m/s (oblique or spinning ball only)
+            Rebound velocity along the outward normal of the string plane, m/s (racket
+            initially at rest; `e_a` times the incoming normal speed): > 0 the ball rebounds
+            away from the strings, < 0 (where `e_a` < 0, near the tip) it moves on in its
+            incoming direction, slower than the recoiling frame it leaves. This and the
+            fields below are those of an oblique or spinning ball: NaN, and left out of the
+            JSON, at normal incidence without spin.
+        v2_t_m_per_s : float, m/s (oblique or spinning ball only)
+            Rebound velocity in the string plane along `t`, the in-plane direction the ball
+            came in along, m/s (negative: back the way it came).
+        spin_out_rpm : float, rpm (oblique or spinning ball only)
+            Outgoing spin, rpm, with the sign convention of `--spin-rpm`: positive is
+            topspin relative to the ball's incoming motion along the strings (the spin of a
+            ball rolling along the strings in the in-plane direction it came in along), not
+            the court's topspin (`speed` converts to the court's frame).
+        rebound_angle_deg : float, deg (oblique or spinning ball only)
+            Direction of the outgoing velocity from the outward normal of the string plane,
+            degrees, `atan2(v2_t, v2_n)` (positive: on along `t`). Over 90 degrees exactly
+            when `v2_n` < 0: the ball does not rebound but moves on in its incoming
+            direction, leaving the strings only because the frame recoils faster; the angle
+            is then still the direction it moves in, and the text output says so.
+        e_t : float (oblique or spinning ball only)
+            Tangential coefficient of restitution of the contact point, `-(w_out - u_out) /
+            w_in` (`w` the slip velocity of the ball's contact point, `u_out` the frame's
+            there); NaN (undefined: null in the JSON of an oblique or spinning impact, an
+            empty CSV field, `undefined` in the text) when the contact point arrives with a
+            slip below [`crate::solve::oblique::E_T_MIN_SLIP_FRACTION`] of the incident
+            speed.
+        slip_fraction : float (oblique or spinning ball only)
+            Share of the contact time in which the ball slid on the strings.
+        f_friction : float (oblique or spinning ball only)
+            Energy dissipated by friction, as a fraction of the ball's whole incoming
+            kinetic energy (translation at `v1` and spin; the normal fractions above are of
+            the normal part `m_b (v1 cos angle)^2 / 2`, as at normal incidence at that
+            speed).
+        f_ball_spin : float (oblique or spinning ball only)
+            Spin kinetic energy of the ball after impact (fraction of the whole incoming
+            kinetic energy).
+        f_racket_inplane : float (oblique or spinning ball only)
+            In-plane kinetic energy of the racket after impact (translation in and rotation
+            about the normal of the string plane; fraction of the whole incoming kinetic
+            energy).
+        f_tangential_damping : float (oblique or spinning ball only)
+            Energy dissipated in the ball's tangential damper (mechanism `loss`; fraction of
+            the whole incoming kinetic energy). NaN (left out) under the elastic law.
+        f_string_sliding : float (oblique or spinning ball only)
+            Energy dissipated by the strings sliding over each other (mechanism `bed`;
+            fraction of the whole incoming kinetic energy). NaN (left out) under the elastic
+            law.
+        f_rolling : float (oblique or spinning ball only)
+            Energy dissipated by the offset torque against the spin (mechanism `offset`;
+            fraction of the whole incoming kinetic energy). NaN (left out) under the elastic
+            law.
+        tangential_chatter : bool
+            True if the tangential contact's switch between the ball gripping at the
+            friction limit and sliding chattered until a force piece reached its cap of
+            switches (SPEC.md section 6, "Known limit"; `bed` and `physical` only): the
+            outcome then hangs on the solver's piece length, and fd's is the reference.
+        params : dict, f1_hz : float, diagnostics : list, series : DataFrame or None
+            The parameters it ran with, the free racket's first bending frequency, the
+            diagnostics (also given as warnings), the time series (``series=True``).
     """
 
 def sweep(
@@ -616,7 +729,8 @@ def sweep(
         error): by default once the call has run a second; False: never. Ctrl-C stops any call
         within a second (KeyboardInterrupt), with nothing kept.
     long : bool
-        Run even when the work is estimated above ten minutes, which is refused without it (a run estimated above a minute says so before it starts).
+        Run even when the work is estimated above ten minutes, which is refused without it (a
+        run estimated above a minute says so before it starts).
         Default: False.
     x : float, m [Impact]
         Impact distance from the tip, m (0 <= x <= length).
@@ -854,12 +968,14 @@ class FaceMap(object):
 def face_map(
     *,
     racket: str | os.PathLike[str] | Racket | None = None,
+    config: str | os.PathLike[str] | None = None,
+    progress: bool | None = None,
     quantity: str = 'power',
     nx: int = 41,
     nr: int = 21,
-    compare_racket: str | os.PathLike[str] | Racket | None = None,
+    compare_racket: str | os.PathLike[str] | None = None,
     compare_tension_lb: float | Sequence[float] | None = None,
-    config: str | os.PathLike[str] | None = None,
+    long: bool = False,
     ks: float | None = None,
     ei: float | None = None,
     mass: float | None = None,
@@ -904,14 +1020,6 @@ def face_map(
 
     Parameters
     ----------
-    quantity : str
-        power (100 e_A, %), e_a, tau (ms), theta (deg), f_vib, spin (rpm) or rebound_angle (deg).
-    nx, nr : int
-        Grid points along the racket (tip to the end of the face) and across it (2..=401).
-    compare_racket : str, os.PathLike or Racket, optional
-        A difference map, B - A, against this racket (A: ``racket``).
-    compare_tension_lb : float or two floats, optional
-        A difference map between string tensions, lb: T (A as given, B at T) or (T1, T2).
     racket : str, os.PathLike or Racket, optional
         A preset name (see presets()) or a racket file (TOML, player units); its values replace
         the paper's racket, strings and ball, and the impact moves to the centre of its head.
@@ -921,6 +1029,30 @@ def face_map(
         Show the call's progress (tqdm's bar where tqdm is installed, else a line on standard
         error): by default once the call has run a second; False: never. Ctrl-C stops any call
         within a second (KeyboardInterrupt), with nothing kept.
+    quantity : str
+        The quantity shown in the heat map (the table has every one): e_a, tau (impact duration,
+        ms), theta (twist at the end of the impact, deg), f_vib (vibration energy, fraction of
+        the ball's incident KE), power (100 e_A, %), spin (outgoing spin, rpm) or rebound_angle
+        (deg; these two of an oblique or spinning ball).
+        One of: e_a, tau, theta, f_vib, power, spin, rebound_angle.
+        Default: 'power'.
+    nx : int
+        Grid points along the racket, from the tip to the end of the face.
+        Allowed: 2 <= nx <= 401.
+        Default: 41.
+    nr : int
+        Grid points across the face, from -half-width to +half-width.
+        Allowed: 2 <= nr <= 401.
+        Default: 21.
+    compare_racket : str
+        Difference map against this racket (file or preset): B - A with A = the racket.
+    compare_tension_lb : float or sequence of float
+        Difference map between string tensions, lb: T (A = the configuration as given, B = at T)
+        or T1,T2 (A at T1, B at T2); k_s = 4e4 N/m * T / 60 lb.
+    long : bool
+        Run even when the work is estimated above ten minutes, which is refused without it (a
+        run estimated above a minute says so before it starts).
+        Default: False.
     ks : float, N/m [Strings]
         String-plane stiffness, N/m (1 ..= 1e12).
         Allowed: 1 <= ks <= 1e12 N/m.
@@ -1120,6 +1252,312 @@ def face_map(
         Declared uncertainty: uniform:57971.1:113623 (nominal 78905.1).
     """
 
+class Card(object):
+    """
+    What string tension does to one racket (``card``).
+
+    ``table``: one row per racket and tension with every panel's numbers (the card's CSV
+    columns, at full precision); ``header``: the CSV's header block (the racket, tensions and
+    numerics, each panel's assumptions, what the spin law was validated on and what not, and on
+    the paper's racket the paper beside the model); ``paper``: the paper's conclusions beside the
+    model's as a table (the paper's racket only, else None); ``png``: the picture's bytes (a
+    notebook shows the card itself); ``diagnostics``.
+    """
+    table: pd.DataFrame | dict[str, np.ndarray]
+    header: list[str]
+    paper: pd.DataFrame | dict[str, np.ndarray] | None
+    png: bytes
+    diagnostics: list[dict[str, str]]
+
+def card(
+    *,
+    racket: str | os.PathLike[str] | Racket | None = None,
+    config: str | os.PathLike[str] | None = None,
+    out: str | os.PathLike[str] | None = None,
+    progress: bool | None = None,
+    tensions_lb: str | Sequence[float] = '45:65:9',
+    reference_lb: float | None = None,
+    compare: str | os.PathLike[str] | Racket | None = None,
+    serve_kmh: float = 151.2,
+    forehand_kmh: float = 90.0,
+    swing_rad_per_s: float = 30.0,
+    sweet_within: float = 0.1,
+    nx: int = 81,
+    nr: int = 41,
+    long: bool = False,
+    ei: float | None = None,
+    mass: float | None = None,
+    length: float | None = None,
+    ix: float | None = None,
+    half_width: float | None = None,
+    mb: float | None = None,
+    k1: float | None = None,
+    p: float | None = None,
+    segments: int | None = None,
+    load: str | None = None,
+    dt: float | None = None,
+    solver: str | None = None,
+    frame: str | None = None,
+    grip: str | None = None,
+    strings: str | None = None,
+    string_stiffening: float | None = None,
+    stiffening_deflection: float | None = None,
+    hand_stiffness: float | None = None,
+    hand_damping: float | None = None,
+    grip_length: float | None = None,
+    mu: float | None = None,
+    mu_scale: float | None = None,
+    kt: float | None = None,
+    tangential: str | None = None,
+    mu_ss: float | None = None,
+    string: str | None = None,
+    ball_radius: float | None = None,
+    ball_inertia_factor: float | None = None,
+    ball_ex: float | None = None,
+    ball_kdyn: float | None = None,
+) -> Card:
+    """
+    What string tension does to one racket: power, sweet spot, control, comfort and spin against the tension (``card``).
+
+    For a racket (``racket=``, or the paper's), a string (``string=``, data/strings) and a range of
+    tensions, every panel computed as the command that computes it alone: the ball speeds as
+    ``speed``, the sweet spot from ``map``, the twist, vibration and contact time as ``simulate``,
+    the spin as ``speed``'s stroke. Returns a :class:`Card` (its table, header block, the paper
+    beside the model on the paper's racket, the PNG); with ``out`` its two files are written too,
+    the CSV at ``out`` and the PNG beside it. Refused above ten minutes of estimated work unless
+    ``long=True``. The card sets the impact points, speeds, incidence and ``ks`` itself, so
+    those are not keywords here.
+
+    Parameters
+    ----------
+    out : str or os.PathLike, optional
+        Write the card's CSV here and its PNG beside it (same stem), atomically.
+    racket : str, os.PathLike or Racket, optional
+        A preset name (see presets()) or a racket file (TOML, player units); its values replace
+        the paper's racket, strings and ball, and the impact moves to the centre of its head.
+    config : str or os.PathLike, optional
+        A TOML file with any parameter key (as the command line's --config); keywords win.
+    progress : bool, optional
+        Show the call's progress (tqdm's bar where tqdm is installed, else a line on standard
+        error): by default once the call has run a second; False: never. Ctrl-C stops any call
+        within a second (KeyboardInterrupt), with nothing kept.
+    tensions_lb : str
+        The tensions, lb: lo:hi:count (both ends included) or a list T1,T2,...; k_s = 4e4 N/m *
+        T / 60 lb.
+        Default: '45:65:9'.
+    reference_lb : float
+        The tension the power changes count from, lb (default: the racket's own, from its k_s;
+        added to the tensions if it is not one of them).
+    compare : str
+        A second racket (file or preset) drawn beside the first, dashed (e.g. paper-
+        widebody-200hz).
+    serve_kmh : float
+        Racket speed at the impact point on the serve, km/h (ball at rest).
+        Default: 151.2.
+    forehand_kmh : float
+        Racket speed at the impact point on the forehand, and the incoming ball's, km/h.
+        Default: 90.0.
+    swing_rad_per_s : float
+        The racket's angular speed for the swing angle during the contact, rad/s.
+        Default: 30.0.
+    sweet_within : float
+        The sweet spot: the face area where e_A is within this fraction of its best (0 < f < 1).
+        Default: 0.1.
+    nx : int
+        Map grid points along the face, from the tip.
+        Allowed: 2 <= nx <= 401.
+        Default: 81.
+    nr : int
+        Map grid points across the face.
+        Allowed: 2 <= nr <= 401.
+        Default: 41.
+    long : bool
+        Run even when the work is estimated above ten minutes, which is refused without it (a
+        run estimated above a minute says so before it starts).
+        Default: False.
+    ei : float, N m^2 [Racket]
+        Frame bending stiffness EI, N m^2 (1e-2 ..= 1e9).
+        Allowed: 0.01 <= ei <= 1e9 N m^2.
+        Default: 150 N m^2 (the paper's; with racket=, the racket file's).
+        Used only with frame = beam.
+        Declared uncertainty: uniform:121.5:181.5 (nominal 150).
+    mass : float, kg [Racket]
+        Racket mass, kg (1e-3 ..= 1e6).
+        Allowed: 0.001 <= mass <= 1000000 kg.
+        Usual: 0.15 .. 1 kg (outside: a warning).
+        Default: 0.34 kg (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:0.32:0.36 (nominal 0.34).
+    length : float, m [Racket]
+        Racket length, m (0.05 ..= 5).
+        Allowed: 0.05 <= length <= 5 m.
+        Usual: 0.4 .. 1 m (outside: a warning).
+        Default: 0.71 m (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:0.686:0.737 (nominal 0.71).
+    ix : float, kg m^2 [Racket]
+        Moment of inertia about the long axis, kg m^2 (1e-7 ..= 1e4).
+        Allowed: 1e-7 <= ix <= 10000 kg m^2.
+        Usual: 0.0003 .. 0.006 kg m^2 (outside: a warning).
+        Default: 0.0015 kg m^2 (the paper's; with racket=, the racket file's).
+        Used only off the long axis (r != 0) or for an oblique ball.
+        Declared uncertainty: uniform:0.0012:0.0018 (nominal 0.0015).
+    half_width : float, m [Racket]
+        Half-width of the string face, m (1e-3 ..= 1): the largest |r|.
+        Allowed: 0.001 <= half_width <= 1 m.
+        Usual: 0.05 .. 0.2 m (outside: a warning).
+        Default: 0.125 m (the paper's; with racket=, the racket file's).
+        Used only off the long axis (r != 0).
+    mb : float, kg [Ball]
+        Ball mass, kg (1e-4 ..= 10).
+        Allowed: 0.0001 <= mb <= 10 kg.
+        Usual: 0.02 .. 0.2 kg (outside: a warning).
+        Default: 0.057 kg (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:0.0558:0.0576 (nominal 0.057).
+    k1 : float, N/m [Ball]
+        Ball compression stiffness k1, N/m (1 ..= 1e9).
+        Allowed: 1 <= k1 <= 1e9 N/m.
+        Usual: 5000 .. 200000 N/m (outside: a warning).
+        Default: 30000 N/m (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:24000:36000 (nominal 30000).
+    p : float [Ball]
+        Ball hysteresis exponent p (1 < p <= 10).
+        Allowed: 1 < p <= 10.
+        Usual: 1.2 .. 5 (outside: a warning).
+        Default: 2.55 (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:2.44445:2.7737 (nominal 2.55).
+    segments : int [Numerics]
+        Number of beam segments N (4..=400).
+        Allowed: 4 <= segments <= 400.
+        Default: 39.
+    load : str [Numerics]
+        Load rule: node (the paper's) or hat.
+        ``node``: The paper's scheme: the whole force on the node nearest x (ties go to the higher index)
+        ``hat``: Linear (hat) sharing between the two nodes around x; converges as O(N^-2)
+        Default: hat.
+    dt : float, s [Numerics]
+        Time step, s (must be below the stability limit).
+        Allowed: 0 < dt, below the stability limit of the beam.
+        Default: auto (the converged automatic step).
+        Used only with frame = beam and solver = fd.
+    solver : str [Numerics]
+        Solver: fd (explicit time stepping, the reference) or modal (modal superposition).
+        ``fd``: Explicit finite differences in time (velocity Verlet), the reference
+        ``modal``: Modal superposition with exact modal propagation and a contact-sized step
+        Default: fd.
+        Used only with frame = beam.
+    frame : str [Racket]
+        Frame model: beam (the paper's flexible beam) or rigid (closed-form rigid racket).
+        ``beam``: The paper's flexible beam
+        ``rigid``: The textbook rigid racket (effective mass at the impact point, plus twist), in closed form
+        Default: beam.
+    grip : str [Racket]
+        Grip: free (the paper's) or hand (springs and dampers over the grip length).
+        ``free``: The paper's freely suspended racket
+        ``hand``: A hand: springs and dampers spread over the grip length from the butt
+        Default: free.
+    strings : str [Strings]
+        String law: linear (the paper's) or stiffening.
+        ``linear``: The paper's constant `k_s`
+        ``stiffening``: `F = k_s Y_s (1 + s (Y_s / d)^2)`: the secant stiffness grows by the fraction `s` at the deflection `d` (the paper quotes about 10 % for large deflections)
+        Default: linear.
+    string_stiffening : float [Strings]
+        Stiffening fraction s at the stiffening deflection (0 ..= 10).
+        Allowed: 0 <= string_stiffening <= 10.
+        Default: 0.1.
+        Used only with strings = stiffening.
+    stiffening_deflection : float, m [Strings]
+        Deflection at which the strings are stiffer by s, m (1e-4 ..= 1).
+        Allowed: 0.0001 <= stiffening_deflection <= 1 m.
+        Default: 0.04 m.
+        Used only with strings = stiffening.
+    hand_stiffness : float, N/m [Racket]
+        Total hand stiffness, N/m (0 ..= 1e7).
+        Allowed: 0 <= hand_stiffness <= 1e7 N/m.
+        Default: 5000 N/m.
+        Used only with grip = hand.
+    hand_damping : float, N s/m [Racket]
+        Total hand damping, N s/m (0 ..= 1e4).
+        Allowed: 0 <= hand_damping <= 10000 N s/m.
+        Default: 10 N s/m.
+        Used only with grip = hand.
+    grip_length : float, m [Racket]
+        Grip length from the butt, m (up to half the racket).
+        Allowed: 1e-3 <= grip_length <= length / 2.
+        Default: 0.15 m.
+        Used only with grip = hand.
+    mu : float [Oblique impact]
+        Friction coefficient of ball on strings (0 ..= 2).
+        Allowed: 0 <= mu <= 2.
+        Usual: 0 .. 1 (outside: a warning).
+        Default: 0.4.
+        Used only for an oblique or spinning ball.
+    mu_scale : float [Oblique impact]
+        Ratio of the ball's sliding friction on the strings during an impact to the coefficient in use (mu, or the string's TWU database COF) (0.05 ..= 3).
+        Allowed: 0.05 <= mu_scale <= 3.
+        Usual: 0.3 .. 1.5 (outside: a warning).
+        Default: 1.
+        Used only for an oblique or spinning ball.
+    kt : float, N/m [Oblique impact]
+        Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
+        Allowed: 1 <= kt <= 1e9 N/m.
+        Usual: 5000 .. 1e6 N/m (outside: a warning).
+        Default: 118000 N/m.
+        Used only for an oblique or spinning ball.
+    tangential : str [Oblique impact]
+        Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism).
+        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
+        ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)
+        ``offset``: Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin
+        ``bed``: Elastic plus strings that slide sideways over each other against string-to-string friction and snap back
+        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)
+        ``physical``: Every mechanism above at once
+        Default: radius.
+        Used only for an oblique or spinning ball.
+    mu_ss : float [Strings]
+        String-to-string friction coefficient (0 ..= 2).
+        Allowed: 0 <= mu_ss <= 2.
+        Usual: 0 .. 0.5 (outside: a warning).
+        Default: 0.08.
+        Used only for an oblique or spinning ball, with tangential = bed or physical.
+    string : str [Strings]
+        The string, from data/strings: sets mu and mu-ss (its TWU database values).
+        ``none``: No string named: mu and mu-ss as given (the default)
+        ``tonic-gut-16``: Babolat Tonic Gut 16 (gut; no friction row of its own: the TWU gut median)
+        ``alu-power-16``: Luxilon ALU Power 16 (polyester)
+        ``alu-rough-16``: Luxilon ALU Rough 16 (polyester)
+        ``original-16``: Luxilon Original 16 (polyester)
+        ``tcs-16``: Polyfibre TCS 16 (polyester)
+        ``nrg2-16``: Tecnifibre NRG2 16 (nylon)
+        ``nxt-16``: Wilson NXT 16 (nylon)
+        Default: none.
+        Used only for an oblique or spinning ball.
+    ball_radius : float, m [Ball]
+        Ball radius, m (1e-3 ..= 1).
+        Allowed: 0.001 <= ball_radius <= 1 m.
+        Usual: 0.015 .. 0.05 m (outside: a warning).
+        Default: 0.033 m.
+        Used only for an oblique or spinning ball.
+    ball_inertia_factor : float [Ball]
+        Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55).
+        Allowed: 0.1 <= ball_inertia_factor <= 2/3.
+        Usual: 0.4 .. 0.67 (outside: a warning).
+        Default: 0.55.
+        Used only for an oblique or spinning ball.
+    ball_ex : float [Ball]
+        The ball's tangential restitution in a gripping bounce e_x (0.01 ..= 0.99).
+        Allowed: 0.01 <= ball_ex <= 0.99.
+        Usual: 0.05 .. 0.5 (outside: a warning).
+        Default: 0.135.
+        Used only for an oblique or spinning ball, with tangential = loss or physical.
+        Declared uncertainty: uniform:0.1:0.17 (nominal 0.135).
+    ball_kdyn : float, N/m [Ball]
+        The ball's dynamic compression stiffness for the contact geometry, N/m (1e3 ..= 1e9).
+        Allowed: 1000 <= ball_kdyn <= 1e9 N/m.
+        Usual: 10000 .. 300000 N/m (outside: a warning).
+        Default: 78905.1 N/m.
+        Used only for an oblique or spinning ball, with tangential = offset, radius or physical.
+        Declared uncertainty: uniform:57971.1:113623 (nominal 78905.1).
+    """
+
 class Uncertainty(object):
     """
     An impact's result fields under uncertain inputs (``uncertainty --vary``).
@@ -1145,12 +1583,15 @@ class Uncertainty(object):
         """
 
 def uncertainty(
-    vary: str | Sequence[str] | dict[str, str | None],
+    vary: str | Sequence[str] | dict[str, str | None] | None = None,
     *,
-    samples: int | None = None,
-    seed: int | None = None,
     racket: str | os.PathLike[str] | Racket | None = None,
     config: str | os.PathLike[str] | None = None,
+    progress: bool | None = None,
+    samples: int | None = None,
+    seed: int | None = None,
+    claims: bool = False,
+    long: bool = False,
     x: float | None = None,
     r: float | None = None,
     ks: float | None = None,
@@ -1188,7 +1629,7 @@ def uncertainty(
     ball_inertia_factor: float | None = None,
     ball_ex: float | None = None,
     ball_kdyn: float | None = None,
-) -> Uncertainty:
+) -> Uncertainty | pd.DataFrame | dict[str, np.ndarray]:
     """
     An impact's result fields under uncertain inputs: quantiles and Sobol' indices.
 
@@ -1200,14 +1641,13 @@ def uncertainty(
     stiffening strings need fd. Returns an :class:`Uncertainty` (DataFrames of the quantiles and
     indices), equal to ``uncertainty --format json``.
 
+    With ``claims=True`` (and no ``vary``): every paper claim under the declared uncertainty of the
+    paper's inputs, as ``uncertainty --claims`` (its CSV's table).
+
     Parameters
     ----------
     vary : list of str or dict
         The uncertain inputs.
-    samples : int, optional
-        Base samples N of the design, 1..=65536 (default 256).
-    seed : int, optional
-        Seed of the sequence and the bootstrap (default 0).
     racket : str, os.PathLike or Racket, optional
         A preset name (see presets()) or a racket file (TOML, player units); its values replace
         the paper's racket, strings and ball, and the impact moves to the centre of its head.
@@ -1217,6 +1657,22 @@ def uncertainty(
         Show the call's progress (tqdm's bar where tqdm is installed, else a line on standard
         error): by default once the call has run a second; False: never. Ctrl-C stops any call
         within a second (KeyboardInterrupt), with nothing kept.
+    samples : int
+        Base samples N of the Saltelli design: N (d + 2) impacts for d inputs (with claims=True
+        at most 32768, each verdict checked again at 2N) [default: 256; with claims=True 128].
+        Allowed: 1 <= samples <= 65536.
+    seed : int
+        Seed of the scrambled Sobol' sequence and of the bootstrap [default: 0; with claims=True
+        2000].
+        Allowed: 0 <= seed <= 4294967295.
+    claims : bool
+        Every paper claim under the declared uncertainty of the paper's inputs (the robustness
+        experiment); takes only samples, seed and the output's options.
+        Default: False.
+    long : bool
+        Run even when the work is estimated above ten minutes, which is refused without it (a
+        run estimated above a minute says so before it starts).
+        Default: False.
     x : float, m [Impact]
         Impact distance from the tip, m (0 <= x <= length).
         Allowed: 0 <= x <= length.
@@ -1433,6 +1889,358 @@ def uncertainty(
         Default: 78905.1 N/m.
         Used only for an oblique or spinning ball, with tangential = offset, radius or physical.
         Declared uncertainty: uniform:57971.1:113623 (nominal 78905.1).
+    """
+
+def speed(
+    *,
+    racket: str | os.PathLike[str] | Racket | None = None,
+    config: str | os.PathLike[str] | None = None,
+    progress: bool | None = None,
+    swing: float,
+    incoming: float = 0.0,
+    unit: str = 'kmh',
+    compare_tension_lb: float | Sequence[float] | None = None,
+    compare_racket: str | os.PathLike[str] | Sequence[str | os.PathLike[str]] | None = None,
+    swing_path_deg: float = 0.0,
+    incoming_spin_rpm: float = 0.0,
+    x: float | None = None,
+    r: float | None = None,
+    ks: float | None = None,
+    ei: float | None = None,
+    mass: float | None = None,
+    length: float | None = None,
+    ix: float | None = None,
+    half_width: float | None = None,
+    mb: float | None = None,
+    k1: float | None = None,
+    p: float | None = None,
+    segments: int | None = None,
+    load: str | None = None,
+    dt: float | None = None,
+    solver: str | None = None,
+    frame: str | None = None,
+    grip: str | None = None,
+    strings: str | None = None,
+    string_stiffening: float | None = None,
+    stiffening_deflection: float | None = None,
+    hand_stiffness: float | None = None,
+    hand_damping: float | None = None,
+    grip_length: float | None = None,
+    mu: float | None = None,
+    mu_scale: float | None = None,
+    kt: float | None = None,
+    tangential: str | None = None,
+    mu_ss: float | None = None,
+    string: str | None = None,
+    ball_radius: float | None = None,
+    ball_inertia_factor: float | None = None,
+    ball_ex: float | None = None,
+    ball_kdyn: float | None = None,
+) -> pd.DataFrame | dict[str, np.ndarray]:
+    """
+    Outgoing ball speed for a swing and an incoming ball, compared across tensions or rackets.
+
+    The command line's ``speed``: v_out = e_A v_in + (1 + e_A) v_racket, with e_A computed at the
+    relative speed and the racket's swing speed at the impact point; a tilted swing path or an
+    incoming spin makes the impact oblique. Returns a DataFrame where pandas is installed (else a
+    dict of numpy arrays) with ``speed``'s CSV columns, one row per variant, the first the reference.
+
+    Parameters
+    ----------
+    racket : str, os.PathLike or Racket, optional
+        A preset name (see presets()) or a racket file (TOML, player units); its values replace
+        the paper's racket, strings and ball, and the impact moves to the centre of its head.
+    config : str or os.PathLike, optional
+        A TOML file with any parameter key (as the command line's --config); keywords win.
+    progress : bool, optional
+        Show the call's progress (tqdm's bar where tqdm is installed, else a line on standard
+        error): by default once the call has run a second; False: never. Ctrl-C stops any call
+        within a second (KeyboardInterrupt), with nothing kept.
+    swing : float
+        Racket speed at the impact point, towards the ball (in unit).
+    incoming : float
+        Incoming ball speed, towards the racket (in unit); 0 for a serve.
+        Default: 0.0.
+    unit : str
+        Unit of the speeds: kilometres per hour (kmh, also kph, km/h), miles per hour (mph),
+        metres per second (ms, also m/s, mps).
+        One of: kmh, mph, ms, kph, km/h, m/s, mps.
+        Default: 'kmh'.
+    compare_tension_lb : float or sequence of float
+        Compare string tensions, lb: T (A = the configuration as given, against A at T) or
+        T1,T2,... (A at T1, against A at each other tension); k_s = 4e4 N/m * T / 60 lb.
+    compare_racket : str or sequence of str
+        Compare against these rackets (files or presets, e.g. light,players): each against A =
+        the racket (or the paper's), which is the first row.
+    swing_path_deg : float
+        Swing path angle above the horizontal, degrees (-80..=80): > 0 brushes up the back of
+        the ball for topspin; the face stands vertical and the ball comes in horizontally.
+        Default: 0.0.
+    incoming_spin_rpm : float
+        Spin of the incoming ball in its own flight, rpm (court frame: > 0 topspin, its top
+        moving forward).
+        Default: 0.0.
+    x : float, m [Impact]
+        Impact distance from the tip, m (0 <= x <= length).
+        Allowed: 0 <= x <= length.
+        Default: 0.16 m (the centre of the string face; with racket=, the centre of its head).
+    r : float, m [Impact]
+        Impact distance from the long axis, m (|r| <= half-width).
+        Allowed: |r| <= half-width.
+        Default: 0 m (on the long axis).
+    ks : float, N/m [Strings]
+        String-plane stiffness, N/m (1 ..= 1e12).
+        Allowed: 1 <= ks <= 1e12 N/m.
+        Usual: 5000 .. 200000 N/m (outside: a warning).
+        Default: 40000 N/m (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:36000:44000 (nominal 40000).
+    ei : float, N m^2 [Racket]
+        Frame bending stiffness EI, N m^2 (1e-2 ..= 1e9).
+        Allowed: 0.01 <= ei <= 1e9 N m^2.
+        Default: 150 N m^2 (the paper's; with racket=, the racket file's).
+        Used only with frame = beam.
+        Declared uncertainty: uniform:121.5:181.5 (nominal 150).
+    mass : float, kg [Racket]
+        Racket mass, kg (1e-3 ..= 1e6).
+        Allowed: 0.001 <= mass <= 1000000 kg.
+        Usual: 0.15 .. 1 kg (outside: a warning).
+        Default: 0.34 kg (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:0.32:0.36 (nominal 0.34).
+    length : float, m [Racket]
+        Racket length, m (0.05 ..= 5).
+        Allowed: 0.05 <= length <= 5 m.
+        Usual: 0.4 .. 1 m (outside: a warning).
+        Default: 0.71 m (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:0.686:0.737 (nominal 0.71).
+    ix : float, kg m^2 [Racket]
+        Moment of inertia about the long axis, kg m^2 (1e-7 ..= 1e4).
+        Allowed: 1e-7 <= ix <= 10000 kg m^2.
+        Usual: 0.0003 .. 0.006 kg m^2 (outside: a warning).
+        Default: 0.0015 kg m^2 (the paper's; with racket=, the racket file's).
+        Used only off the long axis (r != 0) or for an oblique ball.
+        Declared uncertainty: uniform:0.0012:0.0018 (nominal 0.0015).
+    half_width : float, m [Racket]
+        Half-width of the string face, m (1e-3 ..= 1): the largest |r|.
+        Allowed: 0.001 <= half_width <= 1 m.
+        Usual: 0.05 .. 0.2 m (outside: a warning).
+        Default: 0.125 m (the paper's; with racket=, the racket file's).
+        Used only off the long axis (r != 0).
+    mb : float, kg [Ball]
+        Ball mass, kg (1e-4 ..= 10).
+        Allowed: 0.0001 <= mb <= 10 kg.
+        Usual: 0.02 .. 0.2 kg (outside: a warning).
+        Default: 0.057 kg (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:0.0558:0.0576 (nominal 0.057).
+    k1 : float, N/m [Ball]
+        Ball compression stiffness k1, N/m (1 ..= 1e9).
+        Allowed: 1 <= k1 <= 1e9 N/m.
+        Usual: 5000 .. 200000 N/m (outside: a warning).
+        Default: 30000 N/m (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:24000:36000 (nominal 30000).
+    p : float [Ball]
+        Ball hysteresis exponent p (1 < p <= 10).
+        Allowed: 1 < p <= 10.
+        Usual: 1.2 .. 5 (outside: a warning).
+        Default: 2.55 (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:2.44445:2.7737 (nominal 2.55).
+    segments : int [Numerics]
+        Number of beam segments N (4..=400).
+        Allowed: 4 <= segments <= 400.
+        Default: 39.
+    load : str [Numerics]
+        Load rule: node (the paper's) or hat.
+        ``node``: The paper's scheme: the whole force on the node nearest x (ties go to the higher index)
+        ``hat``: Linear (hat) sharing between the two nodes around x; converges as O(N^-2)
+        Default: hat.
+    dt : float, s [Numerics]
+        Time step, s (must be below the stability limit).
+        Allowed: 0 < dt, below the stability limit of the beam.
+        Default: auto (the converged automatic step).
+        Used only with frame = beam and solver = fd.
+    solver : str [Numerics]
+        Solver: fd (explicit time stepping, the reference) or modal (modal superposition).
+        ``fd``: Explicit finite differences in time (velocity Verlet), the reference
+        ``modal``: Modal superposition with exact modal propagation and a contact-sized step
+        Default: fd.
+        Used only with frame = beam.
+    frame : str [Racket]
+        Frame model: beam (the paper's flexible beam) or rigid (closed-form rigid racket).
+        ``beam``: The paper's flexible beam
+        ``rigid``: The textbook rigid racket (effective mass at the impact point, plus twist), in closed form
+        Default: beam.
+    grip : str [Racket]
+        Grip: free (the paper's) or hand (springs and dampers over the grip length).
+        ``free``: The paper's freely suspended racket
+        ``hand``: A hand: springs and dampers spread over the grip length from the butt
+        Default: free.
+    strings : str [Strings]
+        String law: linear (the paper's) or stiffening.
+        ``linear``: The paper's constant `k_s`
+        ``stiffening``: `F = k_s Y_s (1 + s (Y_s / d)^2)`: the secant stiffness grows by the fraction `s` at the deflection `d` (the paper quotes about 10 % for large deflections)
+        Default: linear.
+    string_stiffening : float [Strings]
+        Stiffening fraction s at the stiffening deflection (0 ..= 10).
+        Allowed: 0 <= string_stiffening <= 10.
+        Default: 0.1.
+        Used only with strings = stiffening.
+    stiffening_deflection : float, m [Strings]
+        Deflection at which the strings are stiffer by s, m (1e-4 ..= 1).
+        Allowed: 0.0001 <= stiffening_deflection <= 1 m.
+        Default: 0.04 m.
+        Used only with strings = stiffening.
+    hand_stiffness : float, N/m [Racket]
+        Total hand stiffness, N/m (0 ..= 1e7).
+        Allowed: 0 <= hand_stiffness <= 1e7 N/m.
+        Default: 5000 N/m.
+        Used only with grip = hand.
+    hand_damping : float, N s/m [Racket]
+        Total hand damping, N s/m (0 ..= 1e4).
+        Allowed: 0 <= hand_damping <= 10000 N s/m.
+        Default: 10 N s/m.
+        Used only with grip = hand.
+    grip_length : float, m [Racket]
+        Grip length from the butt, m (up to half the racket).
+        Allowed: 1e-3 <= grip_length <= length / 2.
+        Default: 0.15 m.
+        Used only with grip = hand.
+    mu : float [Oblique impact]
+        Friction coefficient of ball on strings (0 ..= 2).
+        Allowed: 0 <= mu <= 2.
+        Usual: 0 .. 1 (outside: a warning).
+        Default: 0.4.
+        Used only for an oblique or spinning ball.
+    mu_scale : float [Oblique impact]
+        Ratio of the ball's sliding friction on the strings during an impact to the coefficient in use (mu, or the string's TWU database COF) (0.05 ..= 3).
+        Allowed: 0.05 <= mu_scale <= 3.
+        Usual: 0.3 .. 1.5 (outside: a warning).
+        Default: 1.
+        Used only for an oblique or spinning ball.
+    kt : float, N/m [Oblique impact]
+        Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
+        Allowed: 1 <= kt <= 1e9 N/m.
+        Usual: 5000 .. 1e6 N/m (outside: a warning).
+        Default: 118000 N/m.
+        Used only for an oblique or spinning ball.
+    tangential : str [Oblique impact]
+        Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism).
+        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
+        ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)
+        ``offset``: Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin
+        ``bed``: Elastic plus strings that slide sideways over each other against string-to-string friction and snap back
+        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)
+        ``physical``: Every mechanism above at once
+        Default: radius.
+        Used only for an oblique or spinning ball.
+    mu_ss : float [Strings]
+        String-to-string friction coefficient (0 ..= 2).
+        Allowed: 0 <= mu_ss <= 2.
+        Usual: 0 .. 0.5 (outside: a warning).
+        Default: 0.08.
+        Used only for an oblique or spinning ball, with tangential = bed or physical.
+    string : str [Strings]
+        The string, from data/strings: sets mu and mu-ss (its TWU database values).
+        ``none``: No string named: mu and mu-ss as given (the default)
+        ``tonic-gut-16``: Babolat Tonic Gut 16 (gut; no friction row of its own: the TWU gut median)
+        ``alu-power-16``: Luxilon ALU Power 16 (polyester)
+        ``alu-rough-16``: Luxilon ALU Rough 16 (polyester)
+        ``original-16``: Luxilon Original 16 (polyester)
+        ``tcs-16``: Polyfibre TCS 16 (polyester)
+        ``nrg2-16``: Tecnifibre NRG2 16 (nylon)
+        ``nxt-16``: Wilson NXT 16 (nylon)
+        Default: none.
+        Used only for an oblique or spinning ball.
+    ball_radius : float, m [Ball]
+        Ball radius, m (1e-3 ..= 1).
+        Allowed: 0.001 <= ball_radius <= 1 m.
+        Usual: 0.015 .. 0.05 m (outside: a warning).
+        Default: 0.033 m.
+        Used only for an oblique or spinning ball.
+    ball_inertia_factor : float [Ball]
+        Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55).
+        Allowed: 0.1 <= ball_inertia_factor <= 2/3.
+        Usual: 0.4 .. 0.67 (outside: a warning).
+        Default: 0.55.
+        Used only for an oblique or spinning ball.
+    ball_ex : float [Ball]
+        The ball's tangential restitution in a gripping bounce e_x (0.01 ..= 0.99).
+        Allowed: 0.01 <= ball_ex <= 0.99.
+        Usual: 0.05 .. 0.5 (outside: a warning).
+        Default: 0.135.
+        Used only for an oblique or spinning ball, with tangential = loss or physical.
+        Declared uncertainty: uniform:0.1:0.17 (nominal 0.135).
+    ball_kdyn : float, N/m [Ball]
+        The ball's dynamic compression stiffness for the contact geometry, N/m (1e3 ..= 1e9).
+        Allowed: 1000 <= ball_kdyn <= 1e9 N/m.
+        Usual: 10000 .. 300000 N/m (outside: a warning).
+        Default: 78905.1 N/m.
+        Used only for an oblique or spinning ball, with tangential = offset, radius or physical.
+        Declared uncertainty: uniform:57971.1:113623 (nominal 78905.1).
+    """
+
+class Modes(tuple):
+    """
+    The free racket's modes (``modes``): the first flexible modes' frequencies (Hz), the
+    nodes of the fundamental (m from the tip), the beam's segments and the diagnostics.
+    """
+    frequencies_hz: np.ndarray
+    mode1_nodes_m: np.ndarray
+    segments: int
+    diagnostics: list
+
+def modes(
+    *,
+    racket: str | os.PathLike[str] | Racket | None = None,
+    config: str | os.PathLike[str] | None = None,
+    progress: bool | None = None,
+    count: int = 4,
+    ei: float | None = None,
+    mass: float | None = None,
+    length: float | None = None,
+    segments: int | None = None,
+) -> Modes:
+    """
+    The free racket's flexible modes: frequencies and the nodes of the fundamental (``modes``).
+
+    Returns a :class:`Modes`. Only the racket's length, mass, stiffness and segments matter: the
+    other parameters are not keywords here.
+
+    Parameters
+    ----------
+    racket : str, os.PathLike or Racket, optional
+        A preset name (see presets()) or a racket file (TOML, player units); its values replace
+        the paper's racket, strings and ball, and the impact moves to the centre of its head.
+    config : str or os.PathLike, optional
+        A TOML file with any parameter key (as the command line's --config); keywords win.
+    progress : bool, optional
+        Show the call's progress (tqdm's bar where tqdm is installed, else a line on standard
+        error): by default once the call has run a second; False: never. Ctrl-C stops any call
+        within a second (KeyboardInterrupt), with nothing kept.
+    count : int
+        Number of flexible modes to list (at most N-1).
+        Allowed: 1 <= count <= 20.
+        Default: 4.
+    ei : float, N m^2 [Racket]
+        Frame bending stiffness EI, N m^2 (1e-2 ..= 1e9).
+        Allowed: 0.01 <= ei <= 1e9 N m^2.
+        Default: 150 N m^2 (the paper's; with racket=, the racket file's).
+        Used only with frame = beam.
+        Declared uncertainty: uniform:121.5:181.5 (nominal 150).
+    mass : float, kg [Racket]
+        Racket mass, kg (1e-3 ..= 1e6).
+        Allowed: 0.001 <= mass <= 1000000 kg.
+        Usual: 0.15 .. 1 kg (outside: a warning).
+        Default: 0.34 kg (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:0.32:0.36 (nominal 0.34).
+    length : float, m [Racket]
+        Racket length, m (0.05 ..= 5).
+        Allowed: 0.05 <= length <= 5 m.
+        Usual: 0.4 .. 1 m (outside: a warning).
+        Default: 0.71 m (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:0.686:0.737 (nominal 0.71).
+    segments : int [Numerics]
+        Number of beam segments N (4..=400).
+        Allowed: 4 <= segments <= 400.
+        Default: 39.
     """
 
 def presets(segments: int = 39) -> pd.DataFrame | dict[str, np.ndarray]:

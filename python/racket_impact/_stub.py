@@ -18,7 +18,13 @@ import racket_impact as ri
 #: A parameter's type as a keyword: a value of its kind (a text is not a number: ``TypeError``).
 _TYPES = {"number": "float", "count": "int", "choice": "str"}
 #: A command option's type.
-_OPTION = {"switch": "bool", "count": "int", "number": "float", "text": "str", "choice": "str"}
+_OPTION = {"switch": "bool", "count": "int", "number": "float", "text": "str | os.PathLike[str]", "choice": "str"}
+#: An option whose Python type is not its kind's: the card's tensions (a spec or the numbers),
+#: the racket it compares with (as ``racket``).
+_OPTION_OWN = {
+    ("card", "tensions_lb"): "str | Sequence[float]",
+    ("card", "compare"): "str | os.PathLike[str] | Racket",
+}
 #: A swept parameter's type: values, one value, or a spec string.
 _AXIS = {"number": "float | str | Sequence[float] | np.ndarray", "count": "int | str | Sequence[int]", "choice": "str | Sequence[str]"}
 #: A result field's Python type.
@@ -37,12 +43,15 @@ def _options(f) -> str:
     if f not in ri._COMMAND_OF:
         return ""
     lines = ["    progress: bool | None = None"]
-    for o in ri._COMMANDS[ri._COMMAND_OF[f]]:
-        kind = _OPTION[o["kind"]]
+    for o in ri._command_options(f):
+        kind = _OPTION_OWN.get((ri._COMMAND_OF[f], o["keyword"]), _OPTION[o["kind"]])
         if o["many"]:
             kind = f"{kind} | Sequence[{kind}]"
         default = ri._option_default(o)
-        lines.append(f"    {o['keyword']}: {kind}{' | None' if default is None else ''} = {default!r}")
+        if o["required"]:
+            lines.append(f"    {o['keyword']}: {kind}")
+        else:
+            lines.append(f"    {o['keyword']}: {kind}{' | None' if default is None else ''} = {default!r}")
     return ",\n" + ",\n".join(lines)
 
 
@@ -135,12 +144,21 @@ def stub() -> str:
             ],
         )
     )
-    own = (
-        "    *,\n    racket: str | os.PathLike[str] | Racket | None = None,\n    quantity: str = 'power',\n"
-        "    nx: int = 41,\n    nr: int = 21,\n    compare_racket: str | os.PathLike[str] | Racket | None = None,\n"
-        "    compare_tension_lb: float | Sequence[float] | None = None,\n    config: str | os.PathLike[str] | None = None"
+    parts.append(_function(ri.face_map, _RACKET, "FaceMap", _TYPES))
+    parts.append(
+        _class(
+            ri.Card,
+            [
+                f"    table: {table}",
+                "    header: list[str]",
+                f"    paper: {table} | None",
+                "    png: bytes",
+                "    diagnostics: list[dict[str, str]]",
+            ],
+        )
     )
-    parts.append(_function(ri.face_map, own, "FaceMap", _TYPES))
+    own = _RACKET + ",\n    out: str | os.PathLike[str] | None = None"
+    parts.append(_function(ri.card, own, "Card", _TYPES))
     parts.append(
         _class(
             ri.Uncertainty,
@@ -159,11 +177,16 @@ def stub() -> str:
             ],
         )
     )
-    own = (
-        "    vary: str | Sequence[str] | dict[str, str | None],\n    *,\n    samples: int | None = None,\n"
-        "    seed: int | None = None,\n" + _RACKET.replace("    *,\n", "")
+    own = "    vary: str | Sequence[str] | dict[str, str | None] | None = None,\n" + _RACKET
+    parts.append(_function(ri.uncertainty, own, "Uncertainty | pd.DataFrame | dict[str, np.ndarray]", _TYPES))
+    parts.append(_function(ri.speed, _RACKET, table, _TYPES))
+    parts.append(
+        _class(
+            ri.Modes,
+            ["    frequencies_hz: np.ndarray", "    mode1_nodes_m: np.ndarray", "    segments: int", "    diagnostics: list"],
+        )
     )
-    parts.append(_function(ri.uncertainty, own, "Uncertainty", _TYPES))
+    parts.append(_function(ri.modes, _RACKET, "Modes", _TYPES))
     parts += [f"def presets(segments: int = 39) -> {table}:", _doc(ri.presets.__doc__, "    "), ""]
     parts.append(
         _class(

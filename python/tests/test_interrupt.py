@@ -20,10 +20,11 @@ HELD = {"grip": "hand", "mass": 1e6}
 LONG_CALLS = {
     "simulate, one long impact": lambda: ri.simulate(**HELD),
     "sweep": lambda: ri.sweep(x=np.linspace(0.1, 0.2, 8), long=True, **HELD),
-    "face_map, held": lambda: ri.face_map(nx=61, nr=21, **HELD),
+    "face_map, held": lambda: ri.face_map(nx=61, nr=21, long=True, **HELD),
     "face_map, modal": lambda: ri.face_map(nx=401, nr=401),
-    "uncertainty": lambda: ri.uncertainty("ks", samples=64, **HELD),
+    "uncertainty": lambda: ri.uncertainty("ks", samples=64, long=True, **HELD),
     "run_experiment": lambda: ri.run_experiment("robustness"),
+    "card, held": lambda: ri.card(tensions_lb=[50, 60], long=True, out="c.csv", **HELD),
 }
 
 

@@ -83,7 +83,7 @@ def test_a_new_option_row_reaches_the_keyword_its_type_check_the_help_and_the_st
     # nothing else is written for it, yet it is a keyword with its default, checked for its type,
     # passed to the library as its flag's text, in the help and in the stub
     row = dict(name="max-twist-deg", keyword="max_twist_deg", kind="number", lo=None, hi=None, choices=[],
-               many=False, default="5", help="A made-up limit on the twist, degrees")
+               many=False, default="5", required=False, help="A made-up limit on the twist, degrees")
     monkeypatch.setitem(ri._COMMANDS, "sweep", ri._COMMANDS["sweep"] + [row])
     options, axes = ri._split("sweep", {"max_twist_deg": 2.5, "x": [0.1]})
     assert axes == {"x": [0.1]}
@@ -93,3 +93,13 @@ def test_a_new_option_row_reaches_the_keyword_its_type_check_the_help_and_the_st
     assert ri._signature(ri.sweep, []).parameters["max_twist_deg"].default == 5.0
     assert "max_twist_deg : float\n    A made-up limit on the twist, degrees.\n    Default: 5.0." in ri._docstring(ri.sweep)
     assert "    max_twist_deg: float = 5.0," in _stub.stub()
+
+
+def test_the_help_of_simulate_lists_every_returned_field():
+    # (issue 48: help(racket_impact.simulate) did not list the returned fields)
+    text = pydoc.render_doc(ri.simulate, renderer=pydoc.plaintext)
+    returns = text.split("Returns\n", 1)[1]
+    for f in ri._FIELDS:
+        unit = f", {f['unit']}" if f["unit"] else ""
+        assert f"{f['key']} : {dict(number='float', flag='bool')[f['kind']]}{unit}" in returns, f["key"]
+    assert "series : DataFrame or None" in returns

@@ -128,7 +128,9 @@ pub fn run(a: CalibrateArgs) -> Result<()> {
     }
     let (rows, source) = match &a.measurements {
         Some(path) => {
-            let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+            // (recorded as an input of the run: no output may replace it)
+            let max = racket_impact::params::limits::MAX_MEASUREMENTS_BYTES;
+            let text = racket_impact::params::inputs::read_text(path, "a measurements CSV", max)?;
             let name = path.display().to_string();
             (measured::parse(&text, &name)?, name)
         }
@@ -171,8 +173,18 @@ pub fn run(a: CalibrateArgs) -> Result<()> {
         HoldOutArg::Row => HoldOut::Row,
         HoldOutArg::None => HoldOut::None,
     };
-    for path in [&a.plot, &a.out].into_iter().flatten() {
+    if let Some(path) = &a.plot {
+        racket_impact::render::io::check_output_dir("plot", path)?;
+    }
+    if let Some(path) = &a.out {
         racket_impact::render::io::check_output_dir("out", path)?;
+        if let Some(plot) = a.plot.as_deref().filter(|plot| racket_impact::render::io::same_output(path, plot)) {
+            return Err(Error::invalid(
+                "out",
+                path.display(),
+                format!("is the same file as --plot {}", plot.display()),
+            ));
+        }
     }
     // a flag every fitted row sets from its own columns reaches none of them
     for key in sources.flags.given() {
@@ -208,13 +220,20 @@ pub fn run(a: CalibrateArgs) -> Result<()> {
         Format::Json => racket_impact::render::json::pretty(&write::json(&outcome, &source, weights))?,
         Format::Text | Format::Csv => write::text(&outcome, &source, weights),
     };
+    // the plot and the text published together, all or none
+    let mut staged = racket_impact::render::io::Staged::new();
     if let Some(path) = &a.plot {
-        racket_impact::render::plot::render_png("calibrate", &write::chart(&outcome, &source), path)?;
+        racket_impact::render::plot::stage_png(&mut staged, "calibrate", &write::chart(&outcome, &source), path)?;
     }
-    match &a.out {
-        Some(p) => racket_impact::render::io::write_atomic(p, text.as_bytes())?,
-        None => out!("{text}"),
+    if let Some(path) = &a.out {
+        staged.bytes(path, text.as_bytes())?;
     }
+    staged.publish(|| {
+        if a.out.is_none() {
+            out!("{text}");
+        }
+        Ok(())
+    })?;
     print_diagnostics(&noted);
     Ok(())
 }

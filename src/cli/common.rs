@@ -74,11 +74,19 @@ pub fn stream_stdout(bytes: &[u8]) -> Result<()> {
 
 /// One line on stderr. A stderr that cannot be written (`2> /dev/full`, a closed pipe) is
 /// not an error of the command (nothing is left to report it on), and never the panic of
-/// `eprintln!`: the command's result and exit code stand.
+/// `eprintln!`: the command's result and exit code stand. The last guard of every message: a
+/// control character in it is escaped (a raw NUL or line break from the user's input never
+/// reaches the terminal) and the line is cut at [`STDERR_LINE_CHARS`], saying how much was cut
+/// (each quoted value is capped where it is quoted, `numfmt::quoted`; this catches the rest).
 pub fn stderr_line(line: &str) {
     use std::io::Write;
+    let line = racket_impact::numfmt::quoted_up_to(line, STDERR_LINE_CHARS);
     let _ = writeln!(std::io::stderr().lock(), "{line}");
 }
+
+/// The longest line [`stderr_line`] prints, in characters: several times the longest message
+/// the commands write (a work estimate with its reasons, about 500).
+pub const STDERR_LINE_CHARS: usize = 4000;
 
 /// Set by the global `--quiet`: no warnings.
 static QUIET: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
@@ -115,12 +123,6 @@ pub fn print_diagnostics<'a>(diagnostics: impl IntoIterator<Item = &'a Diagnosti
 /// The diagnostics as the JSON outputs carry them, under the key `diagnostics`.
 pub fn diagnostics_json(diagnostics: &[Diagnostic]) -> Result<serde_json::Value> {
     serde_json::to_value(diagnostics).map_err(|e| Error::io("<json>", e))
-}
-
-/// The clap value parser of every number option that is not a parameter flag (those read
-/// through the same function): a number as written, refused where it does not fit an f64.
-pub fn number(text: &str) -> std::result::Result<f64, String> {
-    racket_impact::params::number::parse_number(text).map_err(str::to_string)
 }
 
 /// Output format.
@@ -183,8 +185,6 @@ pub fn check_used<'a>(sources: &Sources, params: impl IntoIterator<Item = &'a Pa
 /// when dropped.
 pub struct Progress {
     bar: indicatif::ProgressBar,
-    /// When the run started.
-    pub started: std::time::Instant,
     /// Dropped to tell the watcher the run is over.
     stop: Option<std::sync::mpsc::Sender<()>>,
     /// Shows the bar once [`Progress::DELAY`] has passed.
@@ -194,11 +194,6 @@ pub struct Progress {
 impl Progress {
     /// How long a run goes before its progress is drawn.
     pub const DELAY: std::time::Duration = std::time::Duration::from_secs(1);
-
-    /// A bar over `total` impacts, with their rate and the time left.
-    pub fn new(total: u64) -> Self {
-        Self::start(total, "{bar:40} {pos}/{len} impacts, {per_sec}, eta {eta}")
-    }
 
     /// A bar over `total` steps named `unit` (`experiments`), each named as it starts
     /// ([`Progress::at`]), with the time elapsed.
@@ -220,9 +215,8 @@ impl Progress {
             indicatif::ProgressStyle::with_template(template)
                 .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
         );
-        let started = std::time::Instant::now();
         if !std::io::stderr().is_terminal() || QUIET.load(std::sync::atomic::Ordering::Relaxed) {
-            return Progress { bar, started, stop: None, watcher: None };
+            return Progress { bar, stop: None, watcher: None };
         }
         let (stop, stopped) = std::sync::mpsc::channel::<()>();
         let shown = bar.clone();
@@ -232,12 +226,7 @@ impl Progress {
                 shown.enable_steady_tick(std::time::Duration::from_millis(200));
             }
         });
-        Progress { bar, started, stop: Some(stop), watcher: Some(watcher) }
-    }
-
-    /// `done` of the total.
-    pub fn update(&self, done: u64) {
-        self.bar.set_position(done);
+        Progress { bar, stop: Some(stop), watcher: Some(watcher) }
     }
 
     /// Step `done` (0-based) of the total is `name`.

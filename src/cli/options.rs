@@ -29,6 +29,16 @@ declared! {
     SimulateOptions = command::simulate::OPTIONS;
     /// `sweep`'s options.
     SweepOptions = command::sweep::OPTIONS;
+    /// `card`'s options.
+    CardOptions = command::card::OPTIONS;
+    /// `map`'s options.
+    MapOptions = command::map::OPTIONS;
+    /// `uncertainty`'s options.
+    UncertaintyOptions = command::uncertainty::OPTIONS;
+    /// `speed`'s options.
+    SpeedOptions = command::speed::OPTIONS;
+    /// `modes`'s options.
+    ModesOptions = command::modes::OPTIONS;
 }
 
 /// The options of a command, as given on its command line.
@@ -58,7 +68,7 @@ fn arg(opt: &Opt) -> Arg {
     if let Some(d) = opt.default {
         help += &format!(" [default: {d}]");
     }
-    let arg = Arg::new(id(opt)).long(opt.name).help(help);
+    let arg = Arg::new(id(opt)).long(opt.name).help(help).required(opt.required);
     let arg = match opt.heading {
         Some(h) => arg.help_heading(h),
         None => arg,

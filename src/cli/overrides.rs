@@ -45,7 +45,7 @@ key_set! {
     /// `simulate`: every parameter.
     SimulateKeys = "simulate": |_key| true;
     /// `modes`: the free racket's modes depend only on its length, mass, stiffness and segments.
-    ModesKeys = "modes" (false): |key| keys::FREE_RACKET.iter().any(|s| s.key == key);
+    ModesKeys = "modes" (false): |key| racket_impact::command::modes::not_taken(key).is_none();
     /// `speed`: every parameter but the impact speed, incidence and spin, which the swing sets.
     SpeedKeys = "speed": |key| racket_impact::study::speed::set_by_speed(key).is_none();
     /// `map`: every parameter but the impact point (the grid sets it) and the solver and its
@@ -54,6 +54,9 @@ key_set! {
     MapKeys = "map": |key| racket_impact::study::map::set_by_map(key).is_none();
     /// `uncertainty`: every parameter, as `simulate` (its solver default is the modal one).
     UncertaintyKeys = "uncertainty": |_key| true;
+    /// `card`: every parameter but the impact points, ball speeds, incidence and k_s, which the
+    /// card sets itself (from its strokes and tensions).
+    CardKeys = "card": |key| racket_impact::study::card::set_by_card(key).is_none();
     /// `calibrate`: every parameter but the shot's speed, incidence, incoming spin and grip,
     /// which each measured row sets.
     CalibrateKeys = "calibrate": |key| !racket_impact::study::calibrate::shot::ROW_SETS.contains(&key);

@@ -5,42 +5,25 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use racket_impact::command::uncertainty::{Uncertain, Uncertainty};
+use racket_impact::command::{execute, Control};
 use racket_impact::experiments::robustness;
 use racket_impact::params::keys;
-use racket_impact::study::sensitivity::Design;
-use racket_impact::study::uncertainty::{few_samples, Study, DEFAULT_SAMPLES};
-use racket_impact::{Error, Result};
+use racket_impact::Result;
 
-use super::common::{out, print_diagnostics, warn, Common, Format, Progress};
+use super::common::{out, print_diagnostics, Common, Format, Reporter};
+use super::options::{Options, UncertaintyOptions};
 use super::overrides::UncertaintyKeys;
 
 #[derive(Args, Debug)]
 pub struct UncertaintyArgs {
     #[command(flatten)]
     pub common: Common<UncertaintyKeys>,
-    /// An uncertain input, KEY=DIST (repeatable): KEY any real-valued parameter, DIST
-    /// uniform:LO:HI, normal:MEAN:SD or loguniform:LO:HI; every sample must be a valid value.
-    /// KEY alone draws the distribution declared with the parameter (see the long help)
-    #[arg(long = "vary", value_name = "KEY=DIST")]
-    pub vary: Vec<String>,
-    /// Base samples N of the Saltelli design, 1..=65536: N (d + 2) impacts for d inputs (with
-    /// --claims at most 32768, each verdict checked again at 2N) [default: 256; with --claims 128]
-    #[arg(long)]
-    pub samples: Option<u64>,
-    /// Seed of the scrambled Sobol' sequence and of the bootstrap [default: 0; with --claims 2000]
-    #[arg(long)]
-    pub seed: Option<u32>,
+    #[command(flatten)]
+    pub options: Options<UncertaintyOptions>,
     /// Write the output (in --format) to this file, atomically, instead of standard output
     #[arg(long, help_heading = "Output")]
     pub out: Option<PathBuf>,
-    /// Every paper claim under the declared uncertainty of the paper's inputs (the robustness
-    /// experiment); takes only --samples, --seed, --format and --out
-    #[arg(long)]
-    pub claims: bool,
-    /// Run even when the work is estimated above ten minutes, which is refused without it (a run
-    /// estimated above a minute says so before it starts)
-    #[arg(long)]
-    pub long: bool,
 }
 
 /// The long help: what is computed and the declared uncertainties `--claims` uses.
@@ -76,82 +59,60 @@ pub fn long_about() -> String {
 
 /// Run the study and write its output.
 pub fn run(a: UncertaintyArgs) -> Result<()> {
-    if a.claims {
-        return run_claims(a);
-    }
-    let samples = a.samples.unwrap_or(DEFAULT_SAMPLES);
-    let study = Study::from_sources(&a.common.sources(), &a.vary, samples, a.seed.unwrap_or(0))?;
+    let request = Uncertainty::new(&a.common.sources(), &a.options.0)?;
     match &a.out {
         Some(path) => racket_impact::render::io::check_output_dir("out", path)?,
         None => super::common::check_stdout()?,
     }
-    if let Some(note) = study.estimate(rayon::current_num_threads()).check("samples", samples, a.long)? {
-        warn(&note);
-    }
-    let progress = Progress::new(study.design.runs() as u64);
-    let outputs = study.run(|done| progress.update(done as u64))?;
-    drop(progress);
-    let text = match a.common.format {
-        Format::Json => json_text(&study.json(&outputs))?,
-        Format::Csv => study.csv(&outputs),
-        Format::Text => study.text(&outputs),
+    let formats = [Format::Text, Format::Csv, Format::Json];
+    let which = formats.iter().position(|&f| f == a.common.format).unwrap_or(0);
+    let (text, diagnostics) = match request {
+        Uncertainty::Claims { samples, seed } => {
+            // (depends on nothing but the build, the sample count and the seed: kept where
+            // RACKET_IMPACT_CACHE says, its three formats from one run, super::cache)
+            let names = formats.map(|f| format!("claims-{samples}-{seed}-{}", format!("{f:?}").to_lowercase()));
+            let text =
+                super::cache::texts(&names.each_ref().map(String::as_str), which, || match run_request(request)? {
+                    Uncertain::Claims { rows, samples, seed, .. } => claims_texts(&rows, samples, seed),
+                    Uncertain::Fields { .. } => Ok(vec![]),
+                })?;
+            (text, Uncertainty::claims_diagnostics(samples))
+        }
+        Uncertainty::Fields { .. } => match run_request(request)? {
+            Uncertain::Fields { study, outputs, diagnostics } => {
+                let text = match a.common.format {
+                    Format::Json => json_text(&study.json(&outputs))?,
+                    Format::Csv => study.csv(&outputs),
+                    Format::Text => study.text(&outputs),
+                };
+                (text, diagnostics)
+            }
+            Uncertain::Claims { rows, samples, seed, diagnostics } => {
+                (claims_texts(&rows, samples, seed)?.swap_remove(which), diagnostics)
+            }
+        },
     };
     emit(a.out.as_ref(), &text)?;
-    print_diagnostics(&study.diagnostics());
+    print_diagnostics(&diagnostics);
     Ok(())
 }
 
-/// `--claims`: the robustness table of every paper claim.
-fn run_claims(a: UncertaintyArgs) -> Result<()> {
-    let refuse = |what: String| {
-        Err(Error::invalid("claims", what, "--claims uses the paper's inputs and their declared uncertainty; it takes only --samples, --seed, --format and --out"))
-    };
-    if let Some(v) = a.vary.first() {
-        return refuse(format!("--vary {v}"));
-    }
-    if let Some(k) = a.common.overrides.0.given().first() {
-        return refuse(format!("--{k}"));
-    }
-    if a.long {
-        return refuse("--long".into());
-    }
-    if a.common.racket.is_some() || a.common.config.is_some() {
-        return refuse(if a.common.racket.is_some() { "--racket".into() } else { "--config".into() });
-    }
-    let samples = a.samples.unwrap_or(robustness::SAMPLES);
-    let seed = a.seed.unwrap_or(robustness::SEED);
-    let inputs = robustness::inputs();
-    Design::new(samples, inputs.len(), seed)?; // the count first, before anything else
-    let most = racket_impact::study::sensitivity::MAX_SAMPLES / 2;
-    if samples > most {
-        return Err(Error::invalid(
-            "samples",
-            samples,
-            format!("with --claims must be at most {most} (every verdict is checked again at twice the samples)"),
-        ));
-    }
-    match &a.out {
-        Some(path) => racket_impact::render::io::check_output_dir("out", path)?,
-        None => super::common::check_stdout()?,
-    }
-    // twice the samples too, as the report does: a verdict that changes there is borderline,
-    // counted apart (the first half are the same runs)
-    let doubled = Design::new(2 * samples, inputs.len(), seed)?;
-    let progress = Progress::new(doubled.runs() as u64);
-    let rows = robustness::study(&racket_impact::experiments::Context::paper(), samples, seed, true, None, |done| {
-        progress.update(done as u64)
-    })?;
-    drop(progress);
-    let text = match a.common.format {
-        Format::Csv => robustness::table(&rows)?.to_csv(),
-        Format::Text => robustness::text(&rows, samples, seed),
-        Format::Json => json_text(&robustness::json(&rows, samples, seed)?)?,
-    };
-    emit(a.out.as_ref(), &text)?;
-    if let Some(line) = few_samples(samples) {
-        warn(&line);
-    }
-    Ok(())
+/// The claims' study in each of [`Format::Text`], [`Format::Csv`] and [`Format::Json`].
+fn claims_texts(rows: &[robustness::ClaimRobustness], samples: u64, seed: u32) -> Result<Vec<String>> {
+    Ok(vec![
+        robustness::text(rows, samples, seed),
+        robustness::table(rows)?.to_csv(),
+        json_text(&robustness::json(rows, samples, seed)?)?,
+    ])
+}
+
+/// Run `request` with its progress reported.
+fn run_request(request: Uncertainty) -> Result<Uncertain> {
+    let ctl = Control::new();
+    let reporter = Reporter::start(&ctl);
+    let done = execute(request, &ctl);
+    drop(reporter);
+    done
 }
 
 fn json_text(v: &serde_json::Value) -> Result<String> {

@@ -9,9 +9,14 @@
 //! inputs, its options declared once ([`Request::OPTIONS`], from which the command line makes
 //! its flags and Python its keywords) and a line in [`ALL`].
 
+pub mod card;
+pub mod map;
+pub mod modes;
 pub mod options;
 pub mod simulate;
+pub mod speed;
 pub mod sweep;
+pub mod uncertainty;
 
 pub use crate::control::{Control, Status, Unit};
 pub use options::{Given, Kind, Many, Opt, LONG};
@@ -95,17 +100,35 @@ pub struct Described {
     pub name: &'static str,
     /// Its options (with [`LONG`] where its work is estimated).
     pub options: &'static [Opt],
+    /// Why it does not take the parameter `key` (it sets it itself, or its result does not
+    /// depend on it), where it does not: the parameters of a command.
+    pub not_taken: fn(&str) -> Option<&'static str>,
+}
+
+/// Every parameter is taken.
+fn every(_key: &str) -> Option<&'static str> {
+    None
 }
 
 /// Every command on the layer, with its options.
 pub const ALL: &[Described] = &[
-    Described { name: simulate::NAME, options: simulate::OPTIONS },
-    Described { name: sweep::NAME, options: sweep::OPTIONS },
+    Described { name: simulate::NAME, options: simulate::OPTIONS, not_taken: every },
+    Described { name: sweep::NAME, options: sweep::OPTIONS, not_taken: every },
+    Described { name: map::NAME, options: map::OPTIONS, not_taken: crate::study::map::set_by_map },
+    Described { name: uncertainty::NAME, options: uncertainty::OPTIONS, not_taken: every },
+    Described { name: speed::NAME, options: speed::OPTIONS, not_taken: crate::study::speed::set_by_speed },
+    Described { name: modes::NAME, options: modes::OPTIONS, not_taken: modes::not_taken },
+    Described { name: card::NAME, options: card::OPTIONS, not_taken: crate::study::card::set_by_card },
 ];
 
 /// The options of the command `name`.
 pub fn options_of(name: &str) -> Option<&'static [Opt]> {
     ALL.iter().find(|d| d.name == name).map(|d| d.options)
+}
+
+/// The command `name` as [`ALL`] describes it.
+pub fn described(name: &str) -> Option<&'static Described> {
+    ALL.iter().find(|d| d.name == name)
 }
 
 #[cfg(test)]

@@ -59,12 +59,19 @@ pub struct Opt {
     pub cli: bool,
     /// The heading the command line's help lists it under (`None`: the command's own options).
     pub heading: Option<&'static str>,
+    /// Whether it must be given (it then has no default).
+    pub required: bool,
 }
 
 impl Opt {
     /// An option with one value, on both front ends.
     pub const fn new(name: &'static str, kind: Kind, default: Option<&'static str>, help: &'static str) -> Opt {
-        Opt { name, kind, many: Many::One, default, help, cli: true, heading: None }
+        Opt { name, kind, many: Many::One, default, help, cli: true, heading: None, required: false }
+    }
+
+    /// The option, which must be given.
+    pub const fn required(self) -> Opt {
+        Opt { required: true, ..self }
     }
 
     /// The option listed under `heading` in the command line's help.
@@ -191,6 +198,12 @@ impl Given {
         texts.iter().map(|t| count(opt, t)).collect()
     }
 
+    /// A finite number that must be given (a required option: [`Opt::required`]).
+    pub fn required_number(&self, name: &str) -> Result<f64> {
+        let opt = self.opt(name);
+        self.number(name)?.ok_or_else(|| Error::invalid(opt.name, "(not given)", format!("is required: {}", opt.help)))
+    }
+
     /// A finite number: given, else the default, else `None`.
     pub fn number(&self, name: &str) -> Result<Option<f64>> {
         let (opt, text) = self.one(name);
@@ -240,7 +253,8 @@ fn count(opt: &Opt, text: &str) -> Result<u64> {
         Kind::Count { lo, hi } => (lo, hi),
         _ => (0, u64::MAX),
     };
-    let bad = || Error::invalid(opt.name, text, opt.allowed());
+    // (the value as given, digits and all: `18446744073709551616`, not rounded as a number)
+    let bad = || Error::InvalidParameter { field: opt.name, value: text.to_string(), allowed: opt.allowed() };
     let t = text.trim();
     // (digits only: no sign, no point, no exponent; a number beyond u64 is out of range too)
     if t.is_empty() || !t.bytes().all(|b| b.is_ascii_digit()) {
@@ -289,10 +303,11 @@ mod tests {
         assert_eq!(g.choice("quantity").unwrap(), Some("power"));
         assert_eq!(g.set("nx", "8").unwrap_err().to_string(), "invalid nx = 8: is given twice");
         for bad in ["2.5", "-1", "1", "402", "18446744073709551616", "1e2", ""] {
+            // (shown as given)
             let mut g = Given::new(OPTS);
             g.set("nx", bad).unwrap();
             let msg = g.count("nx").unwrap_err().to_string();
-            assert!(msg.ends_with(": must be a whole number, 2 <= nx <= 401"), "{bad}: {msg}");
+            assert_eq!(msg, format!("invalid nx = {bad}: must be a whole number, 2 <= nx <= 401"));
         }
         let mut g = Given::new(OPTS);
         g.set("compare-tension-lb", "NaN").unwrap();
