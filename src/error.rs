@@ -150,7 +150,7 @@ pub enum Error {
     /// ([`crate::racket::RacketSpec::from_toml_bytes`]).
     #[error("{} problems: {}", .0.len(), one_line(.0))]
     Several(Vec<Error>),
-    /// An unknown experiment id was requested.
+    /// An unknown experiment id was requested (quoted: [`crate::numfmt::quoted`]).
     #[error("unknown experiment id '{0}' (see `racket-impact figures --list`)")]
     UnknownExperiment(String),
     /// The run was stopped (Ctrl-C in Python, [`crate::control::Control::cancel`]) before it ended.
@@ -209,7 +209,12 @@ impl Error {
         let reason = match err.kind() {
             csv::ErrorKind::Deserialize { err, .. } => {
                 let column = err.field().and_then(|i| headers.get(i as usize)).unwrap_or("?");
-                format!("column {column}: {}", err.kind())
+                // (the cell may be quoted in the reason: `unknown variant ...`)
+                format!(
+                    "column {}: {}",
+                    crate::numfmt::quoted(column),
+                    crate::numfmt::quoted_up_to(&err.kind().to_string(), 300)
+                )
             }
             csv::ErrorKind::UnequalLengths { expected_len, len, .. } => {
                 format!("{len} fields where the header has {expected_len}")

@@ -2,7 +2,8 @@
 //! crate, so every layer, the error type included, may use it):
 //!
 //! - in messages: [`sig`] (rounded to some significant digits), [`readable`] (exact), and
-//!   [`shown`] (a value given as text, as an error message shows it);
+//!   [`shown`] (a value given as text, as an error message shows it), with [`quoted`] (any text
+//!   from the user's input, escaped and capped);
 //! - in tables, CSV files, plots and the report: [`fmt_sig`] (C's `%g` without trailing zeros);
 //! - in the exact columns of a sweep and of the uncertainty table: [`exact`] and
 //!   [`exact_finite`] (the shortest text that reads back as the same `f64`);
@@ -47,8 +48,38 @@ pub fn readable(v: f64) -> String {
 pub fn shown(text: &str) -> String {
     match text.parse::<f64>() {
         Ok(v) if v.is_finite() && (text.contains('.') || text.len() > 15) => sig(v, MESSAGE_DIGITS),
-        _ => text.to_string(),
+        _ => quoted(text),
     }
+}
+
+/// The most characters of a text a message quotes ([`quoted`]): a parameter's value, a CSV cell,
+/// a name; room for any real one, where an 8 MiB cell echoed whole made 8 MB of standard error.
+pub const QUOTED_CHARS: usize = 80;
+
+/// Text from the user's input as a message quotes it: every control character escaped as Rust
+/// writes it (a NUL byte as `\u{0}`, a tab as `\t`: never raw on a terminal), and no more than
+/// [`QUOTED_CHARS`] characters, the rest said by its count (`LLL... (8388528 more characters)`).
+pub fn quoted(text: &str) -> String {
+    quoted_up_to(text, QUOTED_CHARS)
+}
+
+/// [`quoted`] with at most `max` characters: for a message of a library below that may quote a
+/// cell in it (a CSV reader's reason).
+pub fn quoted_up_to(text: &str, max: usize) -> String {
+    let mut out = String::new();
+    let mut chars = text.chars();
+    for c in chars.by_ref().take(max) {
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    let rest = chars.count();
+    if rest > 0 {
+        out.push_str(&format!("... ({rest} more character{})", if rest == 1 { "" } else { "s" }));
+    }
+    out
 }
 
 /// Seconds in words: "0.05 s", "42 s", "27 min", "3.1 h".
@@ -176,6 +207,22 @@ pub fn in_words(n: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn quoted_text_is_escaped_and_capped_with_the_count_cut() {
+        assert_eq!(quoted("free"), "free");
+        assert_eq!(quoted("fr\0ee\tx\n"), "fr\\u{0}ee\\tx\\n");
+        let long = "L".repeat(8 << 20);
+        let q = quoted(&long);
+        assert_eq!(q, format!("{}... ({} more characters)", "L".repeat(QUOTED_CHARS), (8 << 20) - QUOTED_CHARS));
+        // characters, not bytes: a multi-byte text is cut between characters
+        let wide = "é".repeat(QUOTED_CHARS + 1);
+        assert_eq!(quoted(&wide), format!("{}... (1 more character)", "é".repeat(QUOTED_CHARS)));
+        assert_eq!(quoted(&"x".repeat(QUOTED_CHARS)), "x".repeat(QUOTED_CHARS));
+        // a value given as text goes through it; a number is shown as a number
+        assert_eq!(shown("a\u{0}b"), "a\\u{0}b");
+        assert_eq!(shown("0.30000000000000004"), "0.3");
+    }
 
     #[test]
     fn counts_in_words_up_to_twelve_then_digits() {

@@ -45,12 +45,18 @@
 //! [`a_config_key_of_another_command_says_where_it_goes`],
 //! [`a_warning_shows_the_digits_given`]; raw bytes of a config file escaped:
 //! `src/params/overrides.rs` (`an_unknown_key_says_what_a_config_holds_and_raw_bytes_are_escaped`).
+//!
+//! Issue 48 (the first hour, second pass), item 7, at the end of this file: every output path
+//! checked before the work ([`an_output_path_ending_in_a_slash_is_refused_before_the_work`]), one
+//! rule for every input ([`calibrate_never_replaces_its_measurements`]), messages that cap and
+//! escape what they quote ([`messages_cap_and_escape_what_they_quote`]; `numfmt::quoted`), and a
+//! measurements header read as written ([`measurement_headers_named_twice_or_with_spaces_are_refused`]).
 
 #![cfg(unix)]
 
 mod common;
 
-use common::{bin, Scratch};
+use common::{bin, names_in, Scratch};
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
@@ -621,4 +627,139 @@ fn a_warning_shows_the_digits_given() {
     let o = s.run(&["simulate", "--p", "1.000001"]);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(stderr(&o).contains("warning: p = 1.000001 is outside the usual 1.2..5"), "{}", stderr(&o));
+}
+
+// ---- Issue 48 (the first hour, second pass), item 7: nothing learnt only after the work ----
+
+/// The lab rows of the option tests (free racket, oblique shots), written into `s` as `name`.
+fn lab_csv(s: &Scratch, name: &str) -> String {
+    s.file(name, std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/calibrate_lab.csv")).unwrap())
+}
+
+/// An output path that can only name a directory (`sub/`, `new/`, `sub/.`) is refused before the
+/// work by every command that writes one, naming its option: `sweep --out new/` ran the whole
+/// sweep and then failed with "Not a directory", as `calibrate --out` and `--plot` did (and
+/// `--plot` was named `out`). The message is the pre-work check's (`invalid <option> = ...`; the
+/// late failure named the path alone), and nothing is left.
+#[test]
+fn an_output_path_ending_in_a_slash_is_refused_before_the_work() {
+    let s = Scratch::new("traps");
+    std::fs::create_dir(s.path("sub")).unwrap();
+    let lab = lab_csv(&s, "lab.csv");
+    for path in ["sub/", "new/", "sub/.", "m.csv/"] {
+        let cases: Vec<(Vec<&str>, &str)> = vec![
+            (vec!["sweep", "--out", path, "--x", "0.1,0.2"], "out"),
+            (vec!["calibrate", &lab, "--fit", "kt", "--hold-out", "none", "--out", path], "out"),
+            (vec!["calibrate", &lab, "--fit", "kt", "--hold-out", "none", "--plot", path], "plot"),
+            (vec!["map", "--nx", "3", "--nr", "2", "--out", path], "out"),
+            (vec!["simulate", "--solver", "fd", "--series", path], "series"),
+            (vec!["uncertainty", "--vary", "v1=uniform:6:8", "--samples", "8", "--out", path], "out"),
+            (vec!["report", "--out", path], "out"),
+        ];
+        for (args, field) in cases {
+            let o = s.run(&args);
+            refused(&o, &format!("invalid {field} = {path}: "));
+            assert!(stderr(&o).contains("give a file name"), "{args:?}: {}", stderr(&o));
+        }
+    }
+    assert_eq!(s.names(), ["lab.csv", "sub"]);
+    assert!(names_in(&s.path("sub")).is_empty());
+}
+
+/// Every input of every command is protected by one rule: `calibrate`'s measurements CSV is an
+/// input as a config or racket file is (`--plot lab.csv` replaced the lab's data with a PNG, and
+/// an `--out` that was a link to it replaced it with the fit), so an output that is the same file
+/// (spelled otherwise, a symbolic or hard link) is refused before the work; and the command's two
+/// outputs cannot be one file.
+#[test]
+fn calibrate_never_replaces_its_measurements() {
+    let s = Scratch::new("traps");
+    let lab = lab_csv(&s, "lab.csv");
+    let before = std::fs::read(&lab).unwrap();
+    std::os::unix::fs::symlink("lab.csv", s.path("link.csv")).unwrap();
+    std::fs::hard_link(&lab, s.path("hard.csv")).unwrap();
+    for (option, out) in [("--plot", "lab.csv"), ("--out", "./lab.csv"), ("--out", "link.csv"), ("--plot", "hard.csv")]
+    {
+        let o = s.run(&["calibrate", "lab.csv", "--fit", "kt", "--hold-out", "none", option, out]);
+        refused(&o, &format!("invalid {} = {out}: is the same file as lab.csv, an input", &option[2..]));
+        assert_eq!(std::fs::read(&lab).unwrap(), before, "{option} {out} changed the measurements");
+    }
+    let o = s.run(&[
+        "calibrate",
+        "lab.csv",
+        "--fit",
+        "kt",
+        "--hold-out",
+        "none",
+        "--out",
+        "./fit.txt",
+        "--plot",
+        "fit.txt",
+    ]);
+    refused(&o, "invalid out = ./fit.txt: is the same file as --plot fit.txt");
+    assert_eq!(s.names(), ["hard.csv", "lab.csv", "link.csv"]);
+    // two files, written together
+    let o =
+        s.run(&["calibrate", "lab.csv", "--fit", "kt", "--hold-out", "none", "--out", "fit.txt", "--plot", "fit.png"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(std::fs::read_to_string(s.path("fit.txt")).unwrap().starts_with("calibrate: "));
+    assert!(std::fs::read(s.path("fit.png")).unwrap().starts_with(b"\x89PNG"));
+}
+
+/// What a message quotes from the user's input is escaped and capped, saying how much it cut: an
+/// 8 MiB CSV cell came back as 8.4 MB of standard error, a NUL byte in a cell was printed raw, a
+/// list of ten thousand ids was echoed whole.
+#[test]
+fn messages_cap_and_escape_what_they_quote() {
+    let s = Scratch::new("traps");
+    let header = "id,role,quantity,value,uncertainty,unit,ball_speed_m_s,angle_deg,spin_in_rpm,string_tension_lb,string,support\n";
+    let row = |support: &str| format!("L01,calibration,spin_out_rpm,1720,20,rpm,20,30,0,,,{support}\n");
+    let huge = "x".repeat(8 << 20);
+    s.file("huge.csv", format!("{header}{}", row(&huge)));
+    s.file("nul.csv", format!("{header}{}", row("fr\0ee")));
+    s.file("huge_unit.csv", format!("{header}{}", row("free").replace(",rpm,", &format!(",{huge},"))));
+    let ids = vec!["modes"; 10_000].join(",");
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["calibrate", "huge.csv", "--fit", "kt"], "more characters)"),
+        (vec!["calibrate", "huge_unit.csv", "--fit", "kt"], "more characters)"),
+        (vec!["calibrate", "nul.csv", "--fit", "kt"], "support 'fr\\u{0}ee' has no racket"),
+        (vec!["figures", "--only", &ids], "more characters)"),
+    ];
+    for (args, says) in cases {
+        let o = s.run(&args);
+        let e = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{}", &e[..e.len().min(500)]);
+        assert!(e.len() < 1000, "{:?}: {} bytes of stderr: {}", &args[..2], e.len(), &e[..500]);
+        assert_eq!(e.lines().count(), 1, "{e}");
+        assert!(e.contains(says), "'{says}' expected in: {e}");
+        assert!(!e.trim_end().chars().any(char::is_control), "a raw control character: {e:?}");
+    }
+    // the count cut is said: 8 MiB less what is shown
+    let o = s.run(&["calibrate", "huge.csv", "--fit", "kt"]);
+    assert!(stderr(&o).contains(&format!("x... ({} more characters)", (8 << 20) - 80)), "{}", stderr(&o));
+}
+
+/// A measurements CSV whose header names a column twice is refused, naming it and both columns
+/// (it was read from one of them without a word, or refused as a "duplicate field" of column
+/// `?`); a header name with a space at its end (`support `) is refused naming it (every row was
+/// refused instead with "no support").
+#[test]
+fn measurement_headers_named_twice_or_with_spaces_are_refused() {
+    let s = Scratch::new("traps");
+    let lab = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/calibrate_lab.csv")).unwrap();
+    let (header, rows) = lab.split_once('\n').unwrap();
+    let (header, rows): (&str, Vec<&str>) = (header.trim_end(), rows.lines().collect());
+    let with = |extra: &str| rows.iter().map(|r| format!("{r},{extra}\n")).collect::<String>();
+    s.file("twice.csv", format!("{header},support\n{}", with("free")));
+    s.file("notes.csv", format!("{header},notes\n{}", with("again")));
+    s.file("space.csv", format!("{}\n{}\n", header.replace("support", "support "), rows.join("\n")));
+    refused(
+        &s.run(&["calibrate", "twice.csv", "--fit", "kt"]),
+        "invalid measurements = twice.csv: column 'support' is named twice in the header (columns 12 and 14)",
+    );
+    refused(&s.run(&["calibrate", "notes.csv", "--fit", "kt"]), "column 'notes' is named twice in the header");
+    refused(
+        &s.run(&["calibrate", "space.csv", "--fit", "kt"]),
+        "column 12 of the header, 'support ', has a space at its start or end: name it 'support'",
+    );
 }

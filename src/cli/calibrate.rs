@@ -72,14 +72,26 @@ pub fn run(a: CalibrateArgs) -> Result<()> {
     if a.common.format == Format::Csv {
         return Err(Error::invalid("format", "csv", "calibrate writes text or json"));
     }
-    for path in [&a.plot, &a.out].into_iter().flatten() {
-        racket_impact::render::io::check_output_dir("out", path)?;
-    }
+    // (the request reads the measurements, recorded as an input of the run: no output may
+    // replace it, checked here before the work)
     let mut given = a.options.0.clone();
     if let Some(path) = &a.measurements {
         given.set("measurements", path.to_string_lossy())?;
     }
     let request = Calibrate::new(&a.common.sources(), &given)?;
+    if let Some(path) = &a.plot {
+        racket_impact::render::io::check_output_dir("plot", path)?;
+    }
+    if let Some(path) = &a.out {
+        racket_impact::render::io::check_output_dir("out", path)?;
+        if let Some(plot) = a.plot.as_deref().filter(|plot| racket_impact::render::io::same_output(path, plot)) {
+            return Err(Error::invalid(
+                "out",
+                path.display(),
+                format!("is the same file as --plot {}", plot.display()),
+            ));
+        }
+    }
     let ctl = Control::new();
     let reporter = Reporter::start(&ctl);
     let done = execute(request, &ctl);
@@ -89,13 +101,20 @@ pub fn run(a: CalibrateArgs) -> Result<()> {
         Format::Json => racket_impact::render::json::pretty(&write::json(&outcome, &source, weights))?,
         Format::Text | Format::Csv => write::text(&outcome, &source, weights),
     };
+    // the plot and the text published together, all or none
+    let mut staged = racket_impact::render::io::Staged::new();
     if let Some(path) = &a.plot {
-        racket_impact::render::plot::render_png("calibrate", &write::chart(&outcome, &source), path)?;
+        racket_impact::render::plot::stage_png(&mut staged, "calibrate", &write::chart(&outcome, &source), path)?;
     }
-    match &a.out {
-        Some(p) => racket_impact::render::io::write_atomic(p, text.as_bytes())?,
-        None => out!("{text}"),
+    if let Some(path) = &a.out {
+        staged.bytes(path, text.as_bytes())?;
     }
+    staged.publish(|| {
+        if a.out.is_none() {
+            out!("{text}");
+        }
+        Ok(())
+    })?;
     print_diagnostics(&noted);
     Ok(())
 }

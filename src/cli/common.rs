@@ -73,11 +73,19 @@ pub fn stream_stdout(bytes: &[u8]) -> Result<()> {
 
 /// One line on stderr. A stderr that cannot be written (`2> /dev/full`, a closed pipe) is
 /// not an error of the command (nothing is left to report it on), and never the panic of
-/// `eprintln!`: the command's result and exit code stand.
+/// `eprintln!`: the command's result and exit code stand. The last guard of every message: a
+/// control character in it is escaped (a raw NUL or line break from the user's input never
+/// reaches the terminal) and the line is cut at [`STDERR_LINE_CHARS`], saying how much was cut
+/// (each quoted value is capped where it is quoted, `numfmt::quoted`; this catches the rest).
 pub fn stderr_line(line: &str) {
     use std::io::Write;
+    let line = racket_impact::numfmt::quoted_up_to(line, STDERR_LINE_CHARS);
     let _ = writeln!(std::io::stderr().lock(), "{line}");
 }
+
+/// The longest line [`stderr_line`] prints, in characters: several times the longest message
+/// the commands write (a work estimate with its reasons, about 500).
+pub const STDERR_LINE_CHARS: usize = 4000;
 
 /// Set by the global `--quiet`: no warnings.
 static QUIET: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);

@@ -69,6 +69,7 @@ pub fn unknown_flag(e: &clap::Error, command: &str) -> Option<String> {
             .map(|s| format!("did you mean {s}?"))
     });
     let command = if command.is_empty() { "racket-impact".to_string() } else { format!("racket-impact {command}") };
+    let given = racket_impact::numfmt::quoted(given);
     Some(match hint {
         Some(h) => format!("error: {command} has no option '{given}': {h}"),
         None => format!("error: {command} has no option '{given}' (see {command} --help)"),

@@ -109,7 +109,9 @@ impl Calibrate {
         }
         let (rows, source) = match given.text("measurements").map(std::path::PathBuf::from) {
             Some(path) => {
-                let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+                // (recorded as an input of the run: no output may replace it)
+                let max = crate::params::limits::MAX_MEASUREMENTS_BYTES;
+                let text = crate::params::inputs::read_text(&path, "a measurements CSV", max)?;
                 let name = path.display().to_string();
                 (measured::parse(&text, &name)?, name)
             }

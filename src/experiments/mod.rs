@@ -118,7 +118,7 @@ crate::each_experiment!(declare);
 
 /// The experiment with this id.
 pub fn find(id: &str) -> Result<Experiment> {
-    registry().into_iter().find(|e| e.id == id).ok_or_else(|| Error::UnknownExperiment(id.to_string()))
+    registry().into_iter().find(|e| e.id == id).ok_or_else(|| Error::UnknownExperiment(crate::numfmt::quoted(id)))
 }
 
 /// The files one experiment writes in `out`: `<id>.csv` and `<id>.png`.

@@ -1,9 +1,9 @@
-//! The input files this run has read (config and racket files), kept so that no output of the
+//! The input files this run has read (config and racket files, a measurements CSV), kept so that no output of the
 //! same run replaces one of them (`sweep --config c.toml --out c.toml`): an output path is
 //! compared with them by identity (device and inode, after following links), not spelling, so
 //! `./c.toml`, an absolute path, a hard link and a symbolic link to it are all the same file.
 //!
-//! Every input is read through `super::read_file`, which records it here; the output side
+//! Every input is read through `super::read_file` or [`read_text`], which record it here; the output side
 //! ([`crate::render::io`]) asks [`same_as_input`] before any work and again when it stages a
 //! file. Hand-written rather than the `same-file` crate: its handles open the file, which
 //! blocks on a FIFO output (`--out /dev/stdout` into a pipe) and changes nothing for a path
@@ -11,6 +11,8 @@
 
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
+
+use crate::error::{Error, Result};
 
 /// What identifies a file on this system.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -40,6 +42,24 @@ pub(crate) fn record(path: &Path) {
             read.push((path.to_path_buf(), id));
         }
     }
+}
+
+/// Read the input file at `path` whole, as text, and record it as an input of this run: the
+/// measurements CSV of `calibrate` (config and racket files go through `super::read_file`, which
+/// records them too), so that no output of the run replaces it (`--plot` onto the CSV, an
+/// `--out` that is a link to it). A file larger than `max_bytes` (`/dev/zero`, or a CSV of
+/// gigabytes) is refused instead of read; `what` names the file in that message.
+pub fn read_text(path: &Path, what: &str, max_bytes: u64) -> Result<String> {
+    use std::io::Read;
+    let mut bytes = Vec::new();
+    let file = std::fs::File::open(path).map_err(|e| Error::io(path, e))?;
+    file.take(max_bytes + 1).read_to_end(&mut bytes).map_err(|e| Error::io(path, e))?;
+    if bytes.len() as u64 > max_bytes {
+        return Err(Error::io(path, format!("is larger than {} MiB, the most {what} may be", max_bytes >> 20)));
+    }
+    let text = String::from_utf8(bytes).map_err(|_| Error::io(path, "is not a UTF-8 text file"))?;
+    record(path);
+    Ok(text)
 }
 
 /// The input (as it was named) that the file at `output` is, if any; `None` for an output

@@ -16,6 +16,10 @@ pub const MAX_COMPARED: usize = 50;
 /// Bytes of one config or racket file: a few hundred keys at most, so 1 MiB is far beyond any
 /// real one, and `--config /dev/zero` (or a file of gigabytes) is refused instead of read.
 pub const MAX_INPUT_FILE_BYTES: u64 = 1 << 20;
+/// Bytes of one measurements CSV (`calibrate`): a row is about 100 bytes, so 64 MiB is over half
+/// a million rows, far beyond any lab's table, and `calibrate /dev/zero` is refused instead of
+/// read until memory runs out.
+pub const MAX_MEASUREMENTS_BYTES: u64 = 64 << 20;
 
 /// Refuse a count `n` (given as a float, so that an overflowing product is caught too) above
 /// `max`, as an invalid value of `field`: "`what` must be at most `max`".

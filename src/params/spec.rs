@@ -454,7 +454,7 @@ macro_rules! declare_params {
                     _ => {
                         return Err(Error::Config {
                             path: "<sweep>".into(),
-                            message: format!("unknown parameter '{key}' (known: {})", Self::KEYS.join(", ")),
+                            message: format!("unknown parameter '{}' (known: {})", crate::numfmt::quoted(key), Self::KEYS.join(", ")),
                         })
                     }
                 }

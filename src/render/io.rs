@@ -48,6 +48,31 @@ fn parent_dir(path: &Path) -> &Path {
     }
 }
 
+/// Whether `path` as written can only name a directory: it ends in a separator (`sub/`) or in
+/// `.` or `..` (`sub/.`), which `Path::file_name` reads past (`sub/` has the file name `sub`).
+fn names_a_directory(path: &Path) -> bool {
+    let text = path.as_os_str().to_string_lossy();
+    let last = text.rsplit(std::path::is_separator).next().unwrap_or_default();
+    text.ends_with(std::path::is_separator) || last == "." || last == ".."
+}
+
+/// Whether the outputs `a` and `b` of one command are the same file: the same target once
+/// symbolic links are followed, its directory compared by identity (`./x.csv` and `x.csv`, a
+/// link to the other). A path that does not resolve is compared as written.
+pub fn same_output(a: &Path, b: &Path) -> bool {
+    let target = |p: &Path| -> PathBuf {
+        let at = match resolve(p) {
+            Ok(Resolved::File(f)) | Ok(Resolved::Through(f)) => f,
+            Err(_) => p.to_path_buf(),
+        };
+        match (fs::canonicalize(parent_dir(&at)), at.file_name()) {
+            (Ok(dir), Some(name)) => dir.join(name),
+            _ => at,
+        }
+    };
+    target(a) == target(b)
+}
+
 /// How an output path is written, once its symbolic links are followed.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Resolved {
@@ -68,8 +93,8 @@ impl Resolved {
 /// the output is written; a directory (or a link to one), a link loop or a missing directory
 /// is an error naming `path`.
 pub fn resolve(path: &Path) -> Result<Resolved> {
-    if path.file_name().is_none() {
-        return Err(Error::io(path, "not a file path (no file name)"));
+    if path.file_name().is_none() || names_a_directory(path) {
+        return Err(Error::io(path, "names a directory (it ends in a path separator): give a file name"));
     }
     // What the system's own link following ends at: a device, FIFO or socket is written
     // through the path as given, whose links may pass through names that are not paths

@@ -4,6 +4,7 @@
 //! model or law chosen on); every other row is `validation`, judged and never fitted (SPEC.md
 //! section 7; the protocol that chose them is in data/measured/README.md).
 
+use crate::numfmt::quoted;
 use serde::Deserialize;
 
 use crate::error::{Error, Result};
@@ -96,6 +97,30 @@ pub fn parse(text: &str, file: &str) -> Result<Vec<Measured>> {
     let mut rdr = csv::Reader::from_reader(text.as_bytes());
     let headers =
         rdr.headers().map_err(|e| Error::csv_row("measurements", file, text, &csv::StringRecord::new(), &e))?.clone();
+    // a column named twice would be read from one of them (or refused by the reader as a
+    // "duplicate field" of no column), and a name with a space around it is another name
+    // (`support ` left every row with no support): both refused, the header named
+    for (i, name) in headers.iter().enumerate() {
+        if let Some(j) = headers.iter().take(i).position(|earlier| earlier == name) {
+            return Err(Error::invalid(
+                "measurements",
+                file,
+                format!("column '{}' is named twice in the header (columns {} and {})", quoted(name), j + 1, i + 1),
+            ));
+        }
+        if name != name.trim() {
+            return Err(Error::invalid(
+                "measurements",
+                file,
+                format!(
+                    "column {} of the header, '{}', has a space at its start or end: name it '{}'",
+                    i + 1,
+                    quoted(name),
+                    quoted(name.trim())
+                ),
+            ));
+        }
+    }
     for needed in ["id", "quantity", "value"] {
         if !headers.iter().any(|h| h == needed) {
             return Err(Error::invalid("measurements", file, format!("no column '{needed}' in the header")));
@@ -116,10 +141,9 @@ pub fn parse(text: &str, file: &str) -> Result<Vec<Measured>> {
         }
         if let Some(at) = role_column {
             let given = record.get(at).unwrap_or("");
-            row.role = Some(
-                Role::parse(given)
-                    .ok_or_else(|| bad(format!("column role: '{given}' is neither 'calibration' nor 'validation'")))?,
-            );
+            row.role = Some(Role::parse(given).ok_or_else(|| {
+                bad(format!("column role: '{}' is neither 'calibration' nor 'validation'", quoted(given)))
+            })?);
         }
         out.push(row);
     }

@@ -5,6 +5,7 @@
 //! variant for, a string without friction data) is refused with the reason.
 
 use crate::error::{Error, Result};
+use crate::numfmt::quoted;
 use crate::params::{ks_from_tension_lb, strings, Grip, Params, SolverKind, StringName};
 use crate::solve::outcome::{Field, FIELDS};
 use crate::study::measured::Measured;
@@ -64,7 +65,11 @@ pub fn string_of(row: &Measured) -> Result<StringName> {
         let known: Vec<&str> = strings::all().iter().map(|e| e.id.as_str()).collect();
         refuse(
             row,
-            format!("string '{text}' is not in data/strings (its friction is unknown; known: {})", known.join(", ")),
+            format!(
+                "string '{}' is not in data/strings (its friction is unknown; known: {})",
+                quoted(text),
+                known.join(", ")
+            ),
         )
     })?;
     strings::parse(&entry.id)
@@ -80,7 +85,7 @@ pub fn field_of(row: &Measured) -> Result<&'static Field> {
                 "quantity '{}' is not a result of one impact (a ratio, threshold or statistic over several impacts \
                  or strokes is not a shot the model can run); give one of the result fields, e.g. spin_out_rpm, \
                  rebound_angle_deg, e_a, e_t",
-                row.quantity
+                quoted(&row.quantity)
             ),
         )
     })?;
@@ -88,7 +93,7 @@ pub fn field_of(row: &Measured) -> Result<&'static Field> {
     let unit = row.unit.trim();
     if !(unit == field.unit || (field.unit.is_empty() && pure(unit))) {
         let want = if field.unit.is_empty() { "empty, 1 or ratio" } else { field.unit };
-        return Err(refuse(row, format!("unit '{unit}' is not the unit of {} ({want})", field.key)));
+        return Err(refuse(row, format!("unit '{}' is not the unit of {} ({want})", quoted(unit), field.key)));
     }
     Ok(field)
 }
@@ -128,7 +133,7 @@ pub fn shot(base: &Params, row: &Measured) -> Result<Params> {
         other => {
             return Err(refuse(
                 row,
-                format!("support '{other}' has no racket in the model (it has {})", SUPPORTS.join(", ")),
+                format!("support '{}' has no racket in the model (it has {})", quoted(other), SUPPORTS.join(", ")),
             ))
         }
     }

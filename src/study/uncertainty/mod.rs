@@ -15,6 +15,7 @@ use super::sensitivity::{self, Design, Summary};
 use crate::diagnostic::{Diagnostic, Kind};
 use crate::error::{Error, Result};
 use crate::intake::Sources;
+use crate::numfmt::quoted;
 use crate::numfmt::{readable, sig};
 use crate::params::spec::{Check, Values};
 use crate::params::uncertainty::Dist;
@@ -57,7 +58,11 @@ pub struct Input {
 pub fn parse_vary(text: &str, base: &Params) -> Result<Input> {
     let (key, dist) = text.split_once('=').unwrap_or((text, ""));
     let spec = keys::find(key.trim()).ok_or_else(|| {
-        Error::invalid("vary", text, format!("unknown parameter '{key}' (known: {})", Overrides::KEYS.join(", ")))
+        Error::invalid(
+            "vary",
+            text,
+            format!("unknown parameter '{}' (known: {})", quoted(key), Overrides::KEYS.join(", ")),
+        )
     })?;
     if spec.values != Values::Number {
         let numeric: Vec<&str> = keys::ALL.iter().filter(|s| s.values == Values::Number).map(|s| s.key).collect();
