@@ -206,7 +206,8 @@ fn impact_line(rng: &mut Rng) -> Option<String> {
         samples = m.free_vibration_work();
     }
     let prepared = racket_impact::solve::prepared::PreparedImpact::new(&p).ok()?;
-    let tau_f1 = prepared.time_limit_s / racket_impact::solve::prepared::IMPACT_TIME_LIMIT_HALF_PERIODS * prepared.f1_hz;
+    let tau_f1 =
+        prepared.time_limit_s / racket_impact::solve::prepared::IMPACT_TIME_LIMIT_HALF_PERIODS * prepared.f1_hz;
     let t0 = cpu_s();
     let r = racket_impact::solve::simulate(&p).ok()?;
     let t1 = cpu_s();

@@ -162,7 +162,6 @@ impl<K: KeySet> Common<K> {
             set_by_options: Vec::new(),
         }
     }
-
 }
 
 /// A progress bar (or spinner) on stderr for long runs: drawn only on a terminal, without

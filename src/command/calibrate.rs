@@ -30,10 +30,20 @@ pub const OPTIONS: &[Opt] = &[
     )
     .many(Many::List)
     .required(),
-    Opt::new("range", Kind::Text, None, "Search KEY within LO..HI instead of its declared range, KEY=LO:HI (repeatable; within its valid range)")
-        .many(Many::Repeated),
-    Opt::new("rows", Kind::Text, None, "Only these rows, ID[,ID...] (a range M001-M014 of ids alike but for their number)")
-        .many(Many::List),
+    Opt::new(
+        "range",
+        Kind::Text,
+        None,
+        "Search KEY within LO..HI instead of its declared range, KEY=LO:HI (repeatable; within its valid range)",
+    )
+    .many(Many::Repeated),
+    Opt::new(
+        "rows",
+        Kind::Text,
+        None,
+        "Only these rows, ID[,ID...] (a range M001-M014 of ids alike but for their number)",
+    )
+    .many(Many::List),
     Opt::new(
         "weights",
         Kind::Choice(&["none", "uncertainty"]),
@@ -128,7 +138,12 @@ impl Calibrate {
         let mut params = Vec::new();
         // (a list from Python may hold "kt,mu" as one text, as the command line's flag would)
         let split = |name: &str| -> Vec<String> {
-            given.texts(name).iter().flat_map(|t| t.split(',').map(|s| s.trim().to_string())).filter(|s| !s.is_empty()).collect()
+            given
+                .texts(name)
+                .iter()
+                .flat_map(|t| t.split(',').map(|s| s.trim().to_string()))
+                .filter(|s| !s.is_empty())
+                .collect()
         };
         for key in split("fit") {
             let range = ranges.iter().find(|(k, _)| k == key.trim()).map(|(_, r)| *r);

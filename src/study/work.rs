@@ -181,7 +181,8 @@ impl Estimate {
         let heaviest = works.iter().copied().max_by(|a, b| a.cpu_s.total_cmp(&b.cpu_s));
         // (and once, the run's set-up on the largest beam sampled)
         let nodes = picks.iter().filter_map(|&i| params_of(i)).map(|p| p.numerics.segments + 1).max().unwrap_or(0);
-        let set_up = if works.is_empty() { 0.0 } else { SET_UP_SECONDS + SECONDS_PER_CUBED_NODE * (nodes as f64).powi(3) };
+        let set_up =
+            if works.is_empty() { 0.0 } else { SET_UP_SECONDS + SECONDS_PER_CUBED_NODE * (nodes as f64).powi(3) };
         Estimate { impacts, cpu_s: mean * impacts as f64 + set_up, threads: threads.max(1), heaviest }
     }
 
@@ -290,7 +291,11 @@ mod tests {
         let tau_f1 = model.impact.time_limit_s / IMPACT_TIME_LIMIT_HALF_PERIODS * model.impact.f1_hz;
         let share = search_share(tau_f1, FD_SEARCH_FLOOR);
         assert!(share < 0.5, "the paper's impact, 4 ms against a 10 ms period, narrows its search: {share}");
-        assert_relative_eq!(w.cpu_s, contact * per_step + searched * SECONDS_PER_MODE_SAMPLE * share, max_relative = 1e-12);
+        assert_relative_eq!(
+            w.cpu_s,
+            contact * per_step + searched * SECONDS_PER_MODE_SAMPLE * share,
+            max_relative = 1e-12
+        );
         // each step of a stiffening string law and of an oblique ball costs more
         let mut stiff = p;
         stiff.variants.strings = crate::params::StringLaw::Stiffening;
