@@ -58,14 +58,19 @@ python-stub: build
 	PYTHONPATH=$(CURDIR)/target/python "$$py" -m racket_impact._stub > python/racket_impact/__init__.pyi
 
 # The string-face maps (CSV + PNG + JSON each; tests/map.rs checks the committed ones against
-# these lines). The report of this build is kept in target/tmp/cache (src/cli/cache.rs), where
-# the tests' runs of the binary find it instead of computing it again.
+# these lines), then the cards (CSV + PNG; tests/card.rs checks them likewise), built again first:
+# a card compiles in figures/validation_spin.csv (what its spin law was validated on), which
+# `figures` has just written. The report of this build is kept in target/tmp/cache
+# (src/cli/cache.rs), where the tests' runs of the binary find it instead of computing it again.
 figures: export RACKET_IMPACT_CACHE := $(CURDIR)/target/tmp/cache
 figures: build
 	$(BIN) figures --out figures
 	$(BIN) map --racket paper-125hz --load node --quantity power --out figures/map_paper_power.csv
 	$(BIN) map --racket tweener --quantity power --out figures/map_tweener_power.csv
 	$(BIN) map --racket tweener --quantity power --compare-tension-lb 50,60 --out figures/map_tweener_50_vs_60lb.csv
+	$(CARGO) build --release --locked
+	$(BIN) card --racket tweener --string alu-power-16 --out figures/card_tweener.csv
+	$(BIN) card --compare paper-widebody-200hz --out figures/card_paper.csv
 	$(BIN) report --summary
 
 report: export RACKET_IMPACT_CACHE := $(CURDIR)/target/tmp/cache

@@ -321,7 +321,8 @@ fn an_experiment_given_twice_runs_once() {
 /// its own beside the `[default: ...]` the command line adds.
 #[test]
 fn no_option_states_its_default_twice() {
-    for command in ["simulate", "modes", "speed", "sweep", "map", "uncertainty", "figures", "report", "racket"] {
+    for command in ["simulate", "modes", "speed", "sweep", "map", "uncertainty", "figures", "report", "racket", "card"]
+    {
         for flag in ["-h", "--help"] {
             let o = run(&[command, flag]);
             assert_eq!(o.status.code(), Some(0), "{command} {flag}");
@@ -339,7 +340,8 @@ fn no_option_states_its_default_twice() {
 /// short (issue 40: `uncertainty` and `speed` opened with one long paragraph).
 #[test]
 fn long_helps_come_in_short_paragraphs() {
-    for command in ["simulate", "modes", "speed", "sweep", "map", "uncertainty", "figures", "report", "racket"] {
+    for command in ["simulate", "modes", "speed", "sweep", "map", "uncertainty", "figures", "report", "racket", "card"]
+    {
         let o = run(&[command, "--help"]);
         assert_eq!(o.status.code(), Some(0), "{command}");
         let help = String::from_utf8(o.stdout).unwrap();

@@ -209,6 +209,7 @@ fn base(command: &str) -> Vec<&'static str> {
         "speed" => vec!["--swing", "100", "--format", "json"],
         "map" => vec!["--nx", "7", "--nr", "5", "--format", "json"],
         "sweep" => vec!["--x", "0.1,0.2"],
+        "card" => vec!["--tensions-lb", "50,60", "--nx", "5", "--nr", "5", "--format", "json"],
         "uncertainty" => vec!["--vary", "v1=uniform:6:8", "--samples", "8", "--format", "json"],
         // normal incidence: a frame of either kind runs it, and an oblique ball's parameters are
         // noted as not exercised (the probes of the oblique fit run over LAB)
@@ -265,6 +266,26 @@ const PROBES: &[(&str, &str, &[&str], &[&str])] = &[
         &["--nx", "7", "--nr", "5", "--compare-tension-lb", "50"],
         &["--nx", "7", "--nr", "5"],
     ),
+    ("card", "quiet", &["--tensions-lb", "50,60", "--nx", "5", "--nr", "5", "--quiet"], CARD),
+    ("card", "racket", &["--tensions-lb", "50,60", "--nx", "5", "--nr", "5", "--racket", "tweener"], CARD),
+    ("card", "config", &["--tensions-lb", "50,60", "--nx", "5", "--nr", "5", "--config", "cfg.toml"], CARD),
+    ("card", "format", &["--tensions-lb", "50,60", "--nx", "5", "--nr", "5", "--format", "json"], CARD),
+    ("card", "tensions_lb", &["--tensions-lb", "50,55", "--nx", "5", "--nr", "5"], CARD),
+    ("card", "reference_lb", &["--tensions-lb", "50,60", "--nx", "5", "--nr", "5", "--reference-lb", "50"], CARD),
+    ("card", "compare", &["--tensions-lb", "50,60", "--nx", "5", "--nr", "5", "--compare", "light"], CARD),
+    ("card", "serve_kmh", &["--tensions-lb", "50,60", "--nx", "5", "--nr", "5", "--serve-kmh", "140"], CARD),
+    ("card", "forehand_kmh", &["--tensions-lb", "50,60", "--nx", "5", "--nr", "5", "--forehand-kmh", "100"], CARD),
+    ("card", "swing_rad_per_s", &["--tensions-lb", "50,60", "--nx", "5", "--nr", "5", "--swing-rad-per-s", "20"], CARD),
+    (
+        "card",
+        "sweet_within",
+        &["--tensions-lb", "50,60", "--nx", "11", "--nr", "7", "--sweet-within", "0.3"],
+        &["--tensions-lb", "50,60", "--nx", "11", "--nr", "7"],
+    ),
+    ("card", "nx", &["--tensions-lb", "50,60", "--nx", "6", "--nr", "5"], CARD),
+    ("card", "nr", &["--tensions-lb", "50,60", "--nx", "5", "--nr", "6"], CARD),
+    ("card", "out", &["--tensions-lb", "50,60", "--nx", "5", "--nr", "5", "--out", "c.csv"], CARD),
+    ("card", "long", &["--tensions-lb", "50,60", "--nx", "5", "--nr", "5", "--long"], CARD),
     ("sweep", "racket", &["--racket", "tweener", "--x", "0.1,0.2"], &["--x", "0.1,0.2"]),
     ("sweep", "config", &["--config", "cfg.toml", "--x", "0.1,0.2"], &["--x", "0.1,0.2"]),
     ("sweep", "out", &["--out", "s.csv", "--x", "0.1,0.2"], &["--x", "0.1,0.2"]),
@@ -398,6 +419,9 @@ const PROBES: &[(&str, &str, &[&str], &[&str])] = &[
     ("racket", "quiet", &["--quiet", "--list"], &["--list"]),
 ];
 
+/// The small card the `card` probes run over: two tensions, a 5 x 5 grid.
+const CARD: &[&str] = &["--tensions-lb", "50,60", "--nx", "5", "--nr", "5"];
+
 /// The small study most `uncertainty` probes run over: v1 drawn, 8 base samples.
 const UNCERTAINTY_STUDY: &[&str] = &["--vary", "v1=uniform:6:8", "--samples", "8"];
 
@@ -480,6 +504,8 @@ fn context(command: &str, key: &str) -> Vec<String> {
         // calibrate's base rows set the shot (its point, incidence and grip are theirs)
         UsedWhen::Oblique | UsedWhen::OffAxis | UsedWhen::Twisted if command == "calibrate" => vec![],
         UsedWhen::Always => vec![],
+        // a card's twist impact is off the axis and its spin shot oblique
+        UsedWhen::OffAxis | UsedWhen::Twisted | UsedWhen::Oblique if command == "card" => vec![],
         UsedWhen::Oblique if command == "speed" => strings(&["--swing-path-deg", "20"]),
         UsedWhen::Oblique => strings(&["--angle-deg", "30"]),
         // a map's grid is off the long axis; elsewhere the twist needs r != 0 and the face's
@@ -523,7 +549,7 @@ fn every_option_changes_the_output_or_is_refused(runs: &Runs) -> (usize, Vec<Str
         for (id, long) in options {
             let table = probes.iter().find(|(c, o, _, _)| *c == command && *o == id).or_else(|| {
                 probes.iter().find(|(c, o, _, _)| {
-                    *c == "*" && *o == id && !["speed", "map", "sweep", "uncertainty"].contains(&&*command)
+                    *c == "*" && *o == id && !["speed", "map", "sweep", "uncertainty", "card"].contains(&&*command)
                 })
             });
             let (with, without, bare) = match (table, keys::find(&id)) {

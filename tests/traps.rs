@@ -168,10 +168,19 @@ fn an_output_that_is_an_input_is_refused_before_any_work() {
         ),
         (vec!["map", "--config", "m.json", "--nx", "3", "--nr", "3", "--out", "m.csv"], "m.json"),
         (vec!["map", "--racket", "h.csv", "--nx", "3", "--nr", "3", "--out", "h.csv"], "h.csv"),
+        (
+            vec!["card", "--racket", "h.csv", "--tensions-lb", "50,60", "--nx", "3", "--nr", "3", "--out", "h.csv"],
+            "h.csv",
+        ),
+        (
+            vec!["card", "--config", "m.png", "--tensions-lb", "50,60", "--nx", "3", "--nr", "3", "--out", "m.csv"],
+            "m.png",
+        ),
     ];
     for (args, input) in cases {
         s.file("c.toml", CONFIG);
         s.file("m.json", CONFIG);
+        s.file("m.png", CONFIG);
         s.file("g.toml", RACKET);
         s.file("h.csv", RACKET);
         let before = std::fs::read(s.path(input)).unwrap();

@@ -44,6 +44,7 @@ __all__ = [
     "simulate",
     "sweep",
     "face_map",
+    "card",
     "uncertainty",
     "speed",
     "modes",
@@ -55,6 +56,7 @@ __all__ = [
     "parameters",
     "Impact",
     "FaceMap",
+    "Card",
     "Uncertainty",
     "Racket",
     "Modes",
@@ -465,6 +467,105 @@ def face_map(*, racket=None, config=None, progress=None, **kwargs) -> FaceMap:
     return FaceMap(quantity, json.loads(metadata), _table(columns), x, r, values, diagnostics)
 
 
+class Card:
+    """What string tension does to one racket (``card``).
+
+    ``table``: one row per racket and tension with every panel's numbers (the card's CSV
+    columns, at full precision); ``header``: the CSV's header block (the racket, tensions and
+    numerics, each panel's assumptions, what the spin law was validated on and what not, and on
+    the paper's racket the paper beside the model); ``paper``: the paper's conclusions beside the
+    model's as a table (the paper's racket only, else None); ``png``: the picture's bytes (a
+    notebook shows the card itself); ``diagnostics``."""
+
+    def __init__(self, table, header: list[str], paper, png: bytes, diagnostics: list[dict[str, str]]):
+        self.table = table
+        self.header = header
+        self.paper = paper
+        self.png = png
+        self.diagnostics = diagnostics
+
+    def _repr_png_(self) -> bytes:
+        return self.png
+
+    def __repr__(self) -> str:
+        return f"Card({self.header[0] if self.header else ''!r}, {len(self.table)} rows)"
+
+
+def card(*, racket=None, config=None, progress=None, out=None, **kwargs) -> Card:
+    # (the docstring is made from the parameters' and the options' declarations below)
+    options, params = _split("card", kwargs)
+    tensions = options.get("tensions_lb")
+    if tensions is not None and not isinstance(tensions, str):
+        if np.ndim(tensions) != 1 or not all(isinstance(t, numbers.Real) and not isinstance(t, bool) for t in tensions):
+            raise TypeError(f"card() argument tensions_lb takes a text (lo:hi:count) or a sequence of numbers, not {tensions!r}")
+        options["tensions_lb"] = ",".join(repr(float(t)) for t in tensions)
+    if out is not None:
+        out = os.fspath(out)
+        _native.card_files(out, None, None)
+    pairs = _command_pairs("card", "card", params)
+    (_, columns), header, paper, csv, png, diagnostics = _call(
+        "card", racket, config, pairs, _options("card", "card", options), progress
+    )
+    if out is not None:
+        _native.card_files(out, csv, bytes(png))
+    diagnostics = json.loads(diagnostics)
+    _warn(diagnostics)
+    return Card(_table(columns), list(header), None if paper is None else _table(paper[1]), bytes(png), diagnostics)
+
+
+class Uncertainty:
+    """An impact's result fields under uncertain inputs (``uncertainty --vary``).
+
+    ``summary``: one row per result field (unit, mean, sd, q05, q50, q95); ``first_order`` and
+    ``total_order``: the Sobol' indices, one row per result field and a column per input;
+    ``intervals``: every index with its bootstrap interval (output, input, order, value, lo, hi).
+    DataFrames where pandas is installed, else dicts of numpy arrays. ``to_dict()`` is the JSON
+    document of ``uncertainty --format json``."""
+
+    def __init__(self, document: dict[str, Any]):
+        self._doc = document
+        outputs = document["outputs"]
+        inputs = [i["key"] for i in document["inputs"]]
+        names = list(outputs)
+        f = lambda v: np.nan if v is None else float(v)  # noqa: E731  (an index of a constant output is null)
+        summary = [("output", "str", names), ("unit", "str", [outputs[n]["unit"] for n in names])]
+        for stat in ("mean", "sd", "q05", "q50", "q95"):
+            summary.append((stat, "f", [f(outputs[n][stat]) for n in names]))
+        self.summary = _frame(summary, "output")
+        for order in ("first_order", "total_order"):
+            cols = [("output", "str", names)] + [(i, "f", [f(outputs[n][order][i]) for n in names]) for i in inputs]
+            setattr(self, order, _frame(cols, "output"))
+        rows = [
+            (n, i, order.split("_")[0], f(outputs[n][order][i]), f(outputs[n][order + "_ci"][i][0]), f(outputs[n][order + "_ci"][i][1]))
+            for n in names
+            for i in inputs
+            for order in ("first_order", "total_order")
+        ]
+        cols = list(zip(*rows)) if rows else [[]] * 6
+        self.intervals = _frame(
+            [
+                ("output", "str", list(cols[0])),
+                ("input", "str", list(cols[1])),
+                ("order", "str", list(cols[2])),
+                ("value", "f", list(cols[3])),
+                ("lo", "f", list(cols[4])),
+                ("hi", "f", list(cols[5])),
+            ]
+        )
+        self.inputs = inputs
+        self.samples = document["samples"]
+        self.seed = document["seed"]
+        self.runs = document["runs"]
+        self.diagnostics = document["diagnostics"]
+
+    def to_dict(self) -> dict[str, Any]:
+        """The study as the JSON document of ``uncertainty --format json`` (a copy)."""
+        return copy.deepcopy(self._doc)
+
+    def __repr__(self) -> str:
+        return f"Uncertainty(inputs={self.inputs}, samples={self.samples}, runs={self.runs})"
+
+
 class Uncertainty:
     """An impact's result fields under uncertain inputs (``uncertainty --vary``).
 
@@ -838,6 +939,25 @@ measurements : str or os.PathLike, optional
 @OPTIONS@
 @PARAMETERS@
 """,
+    card: f"""What string tension does to one racket: power, sweet spot, control, comfort and spin against the tension (``card``).
+
+For a racket (``racket=``, or the paper's), a string (``string=``, data/strings) and a range of
+tensions, every panel computed as the command that computes it alone: the ball speeds as
+``speed``, the sweet spot from ``map``, the twist, vibration and contact time as ``simulate``,
+the spin as ``speed``'s stroke. Returns a :class:`Card` (its table, header block, the paper
+beside the model on the paper's racket, the PNG); with ``out`` its two files are written too,
+the CSV at ``out`` and the PNG beside it. Refused above ten minutes of estimated work unless
+``long=True``. The card sets the impact points, speeds, incidence and ``ks`` itself, so
+those are not keywords here.
+
+Parameters
+----------
+out : str or os.PathLike, optional
+    Write the card's CSV here and its PNG beside it (same stem), atomically.
+{_RACKET_DOC}
+@OPTIONS@
+@PARAMETERS@
+""",
     uncertainty: f"""An impact's result fields under uncertain inputs: quantiles and Sobol' indices.
 
 ``vary``: the uncertain inputs, each ``"KEY=DIST"`` (DIST ``uniform:LO:HI``,
@@ -871,6 +991,7 @@ _COMMAND_OF = {
     speed: "speed",
     modes: "modes",
     calibrate: "calibrate",
+    card: "card",
 }
 
 

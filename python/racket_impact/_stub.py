@@ -19,6 +19,12 @@ import racket_impact as ri
 _TYPES = {"number": "float", "count": "int", "choice": "str"}
 #: A command option's type.
 _OPTION = {"switch": "bool", "count": "int", "number": "float", "text": "str | os.PathLike[str]", "choice": "str"}
+#: An option whose Python type is not its kind's: the card's tensions (a spec or the numbers),
+#: the racket it compares with (as ``racket``).
+_OPTION_OWN = {
+    ("card", "tensions_lb"): "str | Sequence[float]",
+    ("card", "compare"): "str | os.PathLike[str] | Racket",
+}
 #: A swept parameter's type: values, one value, or a spec string.
 _AXIS = {"number": "float | str | Sequence[float] | np.ndarray", "count": "int | str | Sequence[int]", "choice": "str | Sequence[str]"}
 #: A result field's Python type.
@@ -38,7 +44,7 @@ def _options(f) -> str:
         return ""
     lines = ["    progress: bool | None = None"]
     for o in ri._command_options(f):
-        kind = _OPTION[o["kind"]]
+        kind = _OPTION_OWN.get((ri._COMMAND_OF[f], o["keyword"]), _OPTION[o["kind"]])
         if o["many"]:
             kind = f"{kind} | Sequence[{kind}]"
         default = ri._option_default(o)
@@ -139,6 +145,20 @@ def stub() -> str:
         )
     )
     parts.append(_function(ri.face_map, _RACKET, "FaceMap", _TYPES))
+    parts.append(
+        _class(
+            ri.Card,
+            [
+                f"    table: {table}",
+                "    header: list[str]",
+                f"    paper: {table} | None",
+                "    png: bytes",
+                "    diagnostics: list[dict[str, str]]",
+            ],
+        )
+    )
+    own = _RACKET + ",\n    out: str | os.PathLike[str] | None = None"
+    parts.append(_function(ri.card, own, "Card", _TYPES))
     parts.append(
         _class(
             ri.Uncertainty,

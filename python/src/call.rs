@@ -5,7 +5,7 @@
 
 use pyo3::exceptions::{PySystemError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyTuple;
+use pyo3::types::{PyBytes, PyTuple};
 
 use racket_impact::params::keys;
 
@@ -262,6 +262,20 @@ pub(crate) fn call(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyA
             let diagnostics =
                 serde_json::to_string(&done.diagnostics).map_err(|e| PyValueError::new_err(e.to_string()))?;
             Ok((doc, diagnostics).into_pyobject(py)?.into_any().unbind())
+        }
+        "card" => {
+            let sources = sources(args, 3, (racket, config), "card")?;
+            let card = drive(py, reporter, move |ctl| {
+                let request = racket_impact::command::card::CardCommand::new(&sources, &given)?;
+                let card = execute(request, ctl)?;
+                let png = racket_impact::render::plot::sheet::sheet_png("card", &card.sheet()?)?;
+                Ok((card.table()?, card.header()?, card.paper_table()?, card.csv()?, png, card.diagnostics))
+            })?;
+            let (table, header, paper, csv, png, diagnostics) = card;
+            let paper = paper.map(|t| table_py(py, &t)).transpose()?;
+            let diagnostics = serde_json::to_value(&diagnostics).map_err(|e| PyValueError::new_err(e.to_string()))?;
+            let out = (table_py(py, &table)?, header, paper, csv, PyBytes::new(py, &png), json_text(&diagnostics)?);
+            Ok(out.into_pyobject(py)?.into_any().unbind())
         }
         other => Err(PyValueError::new_err(format!("no command {other:?} in this package"))),
     }

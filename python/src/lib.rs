@@ -163,6 +163,28 @@ fn result_fields() -> PyResult<String> {
     json_text(&serde_json::Value::Array(rows))
 }
 
+/// `card_files(out, csv, png)`: the card's two files, the CSV at `out` and the PNG beside it
+/// (same stem), written together and atomically; with `csv` and `png` None, only checked (a
+/// path the card cannot write, or an input of the run, refused before the work).
+fn card_files(args: &Bound<'_, PyTuple>) -> PyResult<()> {
+    let out: String = arg(args, 0)?;
+    let csv: Option<String> = arg(args, 1)?;
+    let png: Option<Vec<u8>> = arg(args, 2)?;
+    let outputs = racket_impact::render::map_files::Outputs::for_csv_of(
+        std::path::Path::new(&out),
+        "the card's CSV file (its PNG goes next to it with the same stem), e.g. card.csv",
+        "a card is two files (CSV and PNG with the same stem): give a file path, not a device or pipe",
+    )
+    .map_err(fail)?;
+    if let (Some(csv), Some(png)) = (csv, png) {
+        let mut staged = racket_impact::render::io::Staged::new();
+        staged.bytes(&outputs.csv, csv.as_bytes()).map_err(fail)?;
+        staged.bytes(&outputs.png, &png).map_err(fail)?;
+        staged.commit().map_err(fail)?;
+    }
+    Ok(())
+}
+
 /// `presets(segments)`: the presets' table (`racket --list`).
 fn presets(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyAny>> {
     let segments: usize = arg(args, 0)?;
@@ -245,6 +267,9 @@ fn module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     add(m, c"result_fields", c"result_fields() -> JSON of every result field", |_, _| result_fields())?;
     add(m, c"commands", c"commands() -> JSON of every command's options", |_, _| commands())?;
     add(m, c"call", c"call(command, racket, config, pairs, options, reporter) -> the command's result", call)?;
+    add(m, c"card_files", c"card_files(out, csv, png): the card's files (None, None: checked only)", |_, a| {
+        card_files(a)
+    })?;
     add(m, c"presets", c"presets(segments) -> table", presets)?;
     add(m, c"racket", c"racket(source, segments) -> (name, JSON, fit table)", racket)?;
     add(m, c"strings", c"strings() -> JSON rows", |_, _| strings())?;

@@ -24,6 +24,7 @@ LONG_CALLS = {
     "face_map, modal": lambda: ri.face_map(nx=401, nr=401),
     "uncertainty": lambda: ri.uncertainty("ks", samples=64, long=True, **HELD),
     "run_experiment": lambda: ri.run_experiment("robustness"),
+    "card, held": lambda: ri.card(tensions_lb=[50, 60], long=True, out="c.csv", **HELD),
 }
 
 

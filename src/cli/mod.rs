@@ -7,6 +7,7 @@ use clap::{Parser, Subcommand};
 
 pub mod cache;
 pub mod calibrate;
+pub mod card;
 pub mod common;
 pub mod figures;
 pub mod hints;
@@ -115,6 +116,25 @@ pub enum Command {
     /// An impact's result fields under uncertain inputs, or every paper claim under the declared uncertainty
     #[command(long_about = uncertainty::long_about())]
     Uncertainty(uncertainty::UncertaintyArgs),
+    /// What string tension does to one racket: power, sweet spot, control, comfort and spin, one PNG and one CSV
+    ///
+    /// Example: racket-impact card --racket tweener --string alu-power-16
+    ///
+    /// For a racket (preset, file or flags), a string (--string, data/strings) and a range of
+    /// tensions (--tensions-lb, default 45:65:9 lb), five panels against the tension, each
+    /// computed as the command that computes it alone: speed's conversions for the ball speeds,
+    /// map for the sweet spot, simulate for the twist, vibration and contact time, speed's stroke
+    /// for the spin.
+    ///
+    /// Each panel's assumptions are in the CSV's header block (# lines) and under the panel in
+    /// the PNG; the spin panel says what its law was validated on and what not. --compare draws a
+    /// second racket beside the first (dashed). On the paper's racket the card sets the paper's
+    /// own conclusions beside the model's.
+    ///
+    /// Files: --out (default card.csv) and the PNG next to it (same stem). The card sets the
+    /// impact points, ball speeds, incidence and k_s itself: --x, --r, --v1, --angle-deg,
+    /// --azimuth-deg, --spin-rpm and --ks are not its flags.
+    Card(card::CardArgs),
     /// Fit parameters with a declared range to measured rows: intervals, correlation, held-out error
     #[command(long_about = calibrate::long_about())]
     Calibrate(calibrate::CalibrateArgs),
@@ -133,5 +153,6 @@ pub fn run(command: Command) -> racket_impact::Result<()> {
         Command::Map(a) => map::run(a),
         Command::Uncertainty(a) => uncertainty::run(a),
         Command::Calibrate(a) => calibrate::run(a),
+        Command::Card(a) => card::run(a),
     }
 }

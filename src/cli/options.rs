@@ -29,6 +29,8 @@ declared! {
     SimulateOptions = command::simulate::OPTIONS;
     /// `sweep`'s options.
     SweepOptions = command::sweep::OPTIONS;
+    /// `card`'s options.
+    CardOptions = command::card::OPTIONS;
     /// `map`'s options.
     MapOptions = command::map::OPTIONS;
     /// `uncertainty`'s options.

@@ -54,6 +54,9 @@ key_set! {
     MapKeys = "map": |key| racket_impact::study::map::set_by_map(key).is_none();
     /// `uncertainty`: every parameter, as `simulate` (its solver default is the modal one).
     UncertaintyKeys = "uncertainty": |_key| true;
+    /// `card`: every parameter but the impact points, ball speeds, incidence and k_s, which the
+    /// card sets itself (from its strokes and tensions).
+    CardKeys = "card": |key| racket_impact::study::card::set_by_card(key).is_none();
     /// `calibrate`: every parameter but the shot's speed, incidence, incoming spin and grip,
     /// which each measured row sets.
     CalibrateKeys = "calibrate": |key| !racket_impact::study::calibrate::shot::ROW_SETS.contains(&key);

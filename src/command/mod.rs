@@ -10,6 +10,7 @@
 //! its flags and Python its keywords) and a line in [`ALL`].
 
 pub mod calibrate;
+pub mod card;
 pub mod map;
 pub mod modes;
 pub mod options;
@@ -119,6 +120,7 @@ pub const ALL: &[Described] = &[
     Described { name: speed::NAME, options: speed::OPTIONS, not_taken: crate::study::speed::set_by_speed },
     Described { name: modes::NAME, options: modes::OPTIONS, not_taken: modes::not_taken },
     Described { name: calibrate::NAME, options: calibrate::OPTIONS, not_taken: every },
+    Described { name: card::NAME, options: card::OPTIONS, not_taken: crate::study::card::set_by_card },
 ];
 
 /// The options of the command `name`.

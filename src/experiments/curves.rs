@@ -76,28 +76,7 @@ pub fn paper_label(what: &str) -> String {
     format!("paper: {what}")
 }
 
-/// An axis range that fits `values` (non-finite ones skipped): from their smallest (or 0 when
-/// `from_zero` and none is negative) to their largest, padded by 5 % of the span and widened
-/// outwards to a multiple of a round step (1, 2 or 5 times a power of ten, about a sixth of the
-/// span), so the axis neither cuts a curve off nor runs far past the data. `None` without a
-/// finite value.
-pub fn fit_range(values: impl IntoIterator<Item = f64>, from_zero: bool) -> Option<(f64, f64)> {
-    let (mut lo, mut hi) = values
-        .into_iter()
-        .filter(|v| v.is_finite())
-        .fold(None, |acc: Option<(f64, f64)>, v| Some(acc.map_or((v, v), |(l, h)| (l.min(v), h.max(v)))))?;
-    if from_zero && lo >= 0.0 {
-        lo = 0.0;
-    }
-    let span = if hi > lo { hi - lo } else { hi.abs().max(1.0) };
-    let pad = 0.05 * span;
-    let raw = (span + 2.0 * pad) / 6.0;
-    let mag = 10f64.powf(raw.log10().floor());
-    let step = [1.0, 2.0, 5.0, 10.0].into_iter().map(|k| k * mag).find(|s| *s >= raw).unwrap_or(10.0 * mag);
-    let low = if from_zero && lo == 0.0 { 0.0 } else { ((lo - pad) / step).floor() * step };
-    hi = ((hi + pad) / step).ceil() * step;
-    Some((low, hi))
-}
+pub use crate::render::plot::fit_range;
 
 #[cfg(test)]
 mod tests {

@@ -61,6 +61,12 @@ pub fn ks_from_tension_lb(tension_lb: f64) -> f64 {
     4.0e4 * tension_lb / 60.0
 }
 
+/// The tension of a string bed `ks` (N/m) by the same calibration, lb (the inverse of
+/// [`ks_from_tension_lb`]).
+pub fn tension_lb_from_ks(ks: f64) -> f64 {
+    60.0 * ks / 4.0e4
+}
+
 /// Everything one impact needs.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
 #[serde(deny_unknown_fields)]

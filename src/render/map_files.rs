@@ -30,29 +30,27 @@ impl Outputs {
     /// target's); the directory must exist and neither the path nor what it links to may end
     /// in `.png` or `.json` (the CSV would be overwritten by a sibling).
     pub fn for_csv(path: &std::path::Path) -> Result<Outputs> {
+        Outputs::for_csv_of(
+            path,
+            "the CSV file of the map (the PNG and JSON go next to it with the same stem), e.g. map.csv",
+            "a map is three files (CSV, PNG and JSON with the same stem): give a file path, not a device or pipe (--format csv prints the table)",
+        )
+    }
+
+    /// [`Outputs::for_csv`] for another command's files, with its own words for a path that
+    /// names a sibling (`sibling`) and for a device or pipe (`through`).
+    pub fn for_csv_of(path: &std::path::Path, sibling: &str, through: &str) -> Result<Outputs> {
         let sibling_named = |p: &std::path::Path| {
             let ext = p.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
             ext == "png" || ext == "json" || p.file_name().is_none()
         };
-        let refuse = || {
-            Error::invalid(
-                "out",
-                path.display(),
-                "the CSV file of the map (the PNG and JSON go next to it with the same stem), e.g. map.csv",
-            )
-        };
+        let refuse = || Error::invalid("out", path.display(), sibling);
         if sibling_named(path) {
             return Err(refuse());
         }
         crate::render::io::check_output_dir("out", path)?;
         let target = match resolve(path)? {
-            Resolved::Through(_) => {
-                return Err(Error::invalid(
-                    "out",
-                    path.display(),
-                    "a map is three files (CSV, PNG and JSON with the same stem): give a file path, not a device or pipe (--format csv prints the table)",
-                ))
-            }
+            Resolved::Through(_) => return Err(Error::invalid("out", path.display(), through)),
             Resolved::File(target) if sibling_named(&target) => return Err(refuse()),
             Resolved::File(target) => target,
         };

@@ -9,6 +9,7 @@
 //! told of a value no impact uses).
 
 pub mod calibrate;
+pub mod card;
 pub mod choice;
 pub mod impact;
 pub mod map;

@@ -319,6 +319,13 @@ fn draw_curves<XC: Ranged<ValueType = f64>>(
                 draw_on!(cc, on_right, lines.into_iter().map(move |p| PathElement::new(p, style)));
                 Glyph::Line(style)
             }
+            LineStyle::Guide => {
+                let (r, g, b) = super::GUIDE_COLOR;
+                let style = RGBColor(r, g, b).stroke_width(2);
+                let lines = bounds.polylines(&curve.x, &curve.y);
+                draw_on!(cc, on_right, lines.into_iter().map(move |p| DashedPathElement::new(p, 6, 6, style)));
+                Glyph::Dashed(style, 6, 6)
+            }
             LineStyle::Dashed => {
                 let style = color.stroke_width(2);
                 let lines = bounds.polylines(&curve.x, &curve.y);

@@ -17,6 +17,7 @@ mod clip;
 mod draw;
 mod legend;
 mod plan;
+pub mod sheet;
 #[cfg(test)]
 mod tests;
 
@@ -69,6 +70,8 @@ const VLINE_COLOR: RGBColor = RGBColor(80, 80, 80);
 const VLINE_DASHES: [(i32, i32); 3] = [(12, 6), (4, 4), (20, 5)];
 /// Width of the legend glyph area, pixels.
 const LEGEND_GLYPH: i32 = 36;
+/// Colour of a [`LineStyle::Guide`] line.
+pub const GUIDE_COLOR: (u8, u8, u8) = (150, 150, 150);
 /// Fill of the shaded x bands ([`Band`]).
 const BAND_COLOR: RGBColor = RGBColor(150, 150, 150);
 /// Opacity of the band fill.
@@ -100,6 +103,9 @@ pub enum LineStyle {
     Faint,
     /// Markers only (filled circles), no connecting line.
     Points,
+    /// A reference level, not data: a thin dashed line in light grey ([`GUIDE_COLOR`]), behind
+    /// the curves' colours (a scale to read them against).
+    Guide,
     /// A value the paper states: a large ringed marker (white disc, thick ring in the curve
     /// colour, dark centre dot), no connecting line; distinct from any computed curve.
     Paper,
@@ -261,32 +267,42 @@ pub fn stage_png(staged: &mut crate::render::io::Staged, id: &str, chart: &Chart
         return Err(fail("could not load the bundled DejaVu Sans font".to_string()));
     }
     let plans = chart.panels().into_iter().map(Plan::new).collect::<std::result::Result<Vec<_>, _>>().map_err(&fail)?;
+    stage_drawn(staged, id, path, |tmp| {
+        let root = BitMapBackend::new(tmp, (WIDTH, HEIGHT)).into_drawing_area();
+        root.fill(&WHITE).map_err(msg)?;
+        let areas = if chart.panel.is_some() {
+            let (upper, lower) = root.split_vertically((f64::from(HEIGHT) * (1.0 - PANEL_SHARE)).round() as u32);
+            vec![upper, lower]
+        } else {
+            vec![root.clone()]
+        };
+        for ((area, c), plan) in areas.iter().zip(chart.panels()).zip(&plans) {
+            let (x0, x1) = plan.x;
+            if plan.x_log {
+                draw_chart(area, c, plan, (x0..x1).log_scale())?;
+            } else {
+                draw_chart(area, c, plan, x0..x1)?;
+            }
+        }
+        root.present().map_err(|e| format!("cannot write {}: {e}", tmp.display()))
+        // `root` (and the backend) is dropped here, before the rename.
+    })
+}
+
+/// Draw a PNG at `path` into `staged` with `draw`, given the temporary file to draw in: a
+/// failure is [`Error::Plot`] with `id` and leaves no file. `catch_unwind` is a last line of
+/// defence: plotters may panic on inputs we did not foresee, and a figure must never bring down
+/// the whole run.
+pub(crate) fn stage_drawn(
+    staged: &mut crate::render::io::Staged,
+    id: &str,
+    path: &Path,
+    draw: impl FnOnce(&Path) -> std::result::Result<(), String>,
+) -> Result<()> {
+    let fail = |message: String| Error::Plot { id: id.to_string(), message };
     staged
         .with(path, ".png", |tmp| {
-            // `catch_unwind` is a last line of defence: plotters may panic on inputs we did not
-            // foresee, and a figure must never bring down the whole run.
-            let drawn = catch_unwind(AssertUnwindSafe(|| -> std::result::Result<(), String> {
-                let root = BitMapBackend::new(tmp, (WIDTH, HEIGHT)).into_drawing_area();
-                root.fill(&WHITE).map_err(msg)?;
-                let areas = if chart.panel.is_some() {
-                    let (upper, lower) =
-                        root.split_vertically((f64::from(HEIGHT) * (1.0 - PANEL_SHARE)).round() as u32);
-                    vec![upper, lower]
-                } else {
-                    vec![root.clone()]
-                };
-                for ((area, c), plan) in areas.iter().zip(chart.panels()).zip(&plans) {
-                    let (x0, x1) = plan.x;
-                    if plan.x_log {
-                        draw_chart(area, c, plan, (x0..x1).log_scale())?;
-                    } else {
-                        draw_chart(area, c, plan, x0..x1)?;
-                    }
-                }
-                root.present().map_err(|e| format!("cannot write {}: {e}", tmp.display()))
-                // `root` (and the backend) is dropped here, before the rename.
-            }));
-            match drawn {
+            match catch_unwind(AssertUnwindSafe(|| draw(tmp))) {
                 Ok(r) => r,
                 Err(panic) => Err(format!("plotting backend panicked: {}", panic_text(&*panic))),
             }
@@ -296,6 +312,29 @@ pub fn stage_png(staged: &mut crate::render::io::Staged, id: &str, chart: &Chart
             Error::Plot { .. } => e,
             other => fail(other.to_string()),
         })
+}
+
+/// An axis range that fits `values` (non-finite ones skipped): from their smallest (or 0 when
+/// `from_zero` and none is negative) to their largest, padded by 5 % of the span and widened
+/// outwards to a multiple of a round step (1, 2 or 5 times a power of ten, about a sixth of the
+/// span), so the axis neither cuts a curve off nor runs far past the data. `None` without a
+/// finite value.
+pub fn fit_range(values: impl IntoIterator<Item = f64>, from_zero: bool) -> Option<(f64, f64)> {
+    let (mut lo, mut hi) = values
+        .into_iter()
+        .filter(|v| v.is_finite())
+        .fold(None, |acc: Option<(f64, f64)>, v| Some(acc.map_or((v, v), |(l, h)| (l.min(v), h.max(v)))))?;
+    if from_zero && lo >= 0.0 {
+        lo = 0.0;
+    }
+    let span = if hi > lo { hi - lo } else { hi.abs().max(1.0) };
+    let pad = 0.05 * span;
+    let raw = (span + 2.0 * pad) / 6.0;
+    let mag = 10f64.powf(raw.log10().floor());
+    let step = [1.0, 2.0, 5.0, 10.0].into_iter().map(|k| k * mag).find(|s| *s >= raw).unwrap_or(10.0 * mag);
+    let low = if from_zero && lo == 0.0 { 0.0 } else { ((lo - pad) / step).floor() * step };
+    hi = ((hi + pad) / step).ceil() * step;
+    Some((low, hi))
 }
 
 /// Register the bundled DejaVu Sans as "sans-serif" (once per process); `false` on failure.

@@ -94,6 +94,21 @@ pub struct SpeedRow {
     pub launch: Option<(f64, f64)>,
 }
 
+impl SpeedRow {
+    /// A head-on stroke on `base` (its impact point): a ball arriving at `v_in` on a racket
+    /// swung at `v_racket` (m/s, at the impact point), with `e_A` computed at the relative speed
+    /// `v_in + v_racket` (it does not depend on it; theta scales with it) and carried to the
+    /// court by [`outgoing_speed`]. The `speed` command's head-on row, and the `card`'s strokes.
+    pub fn head_on(label: String, base: &Params, v_in: f64, v_racket: f64) -> Result<SpeedRow> {
+        let mut p = *base;
+        p.impact.v1 = v_in + v_racket;
+        p.validate()?;
+        let r = crate::simulate(&p)?;
+        let v_out = outgoing_speed(r.e_a, v_in, v_racket);
+        Ok(SpeedRow { label, params: p, result: r, v_out, launch: None })
+    }
+}
+
 /// The compared variants, the first being the reference.
 #[derive(Debug, Clone)]
 pub struct SpeedComparison {
@@ -176,12 +191,7 @@ impl SpeedRequest {
                 rows.push(SpeedRow { label, params: exit.params, result: exit.impact, v_out: exit.speed, launch });
                 continue;
             }
-            // e_A is computed at the relative speed (it does not depend on it; theta scales with it)
-            p.impact.v1 = v_in + v_racket;
-            p.validate()?;
-            let r = crate::simulate(&p)?;
-            let v_out = outgoing_speed(r.e_a, v_in, v_racket);
-            rows.push(SpeedRow { label, params: p, result: r, v_out, launch: None });
+            rows.push(SpeedRow::head_on(label, &p, v_in, v_racket)?);
         }
         // a flag no variant can honour refused, one none exercises noted
         let noted = self.sources.check_used(&rows.iter().map(|r| r.params).collect::<Vec<_>>())?;
