@@ -4,7 +4,7 @@
 //! the rest as left out). A `$ cat FILE` line shows a file shipped in the repository: its text
 //! must be the file's.
 
-use std::process::Command;
+mod common;
 
 /// One example: the command after `$ `, and the output lines shown under it.
 struct Example {
@@ -60,11 +60,7 @@ fn every_readme_example_runs_and_prints_what_the_readme_shows() {
             continue;
         }
         assert_eq!(words[0], "racket-impact", "{command}");
-        let o = Command::new(env!("CARGO_BIN_EXE_racket-impact"))
-            .current_dir(dir.path())
-            .args(&words[1..])
-            .output()
-            .unwrap();
+        let o = common::bin().current_dir(dir.path()).args(&words[1..]).output().unwrap();
         let stderr = String::from_utf8_lossy(&o.stderr);
         if !o.status.success() || stderr.contains("error") {
             failures.push(format!("{command}: exit {:?}: {stderr}", o.status.code()));
@@ -89,10 +85,7 @@ fn every_readme_example_runs_and_prints_what_the_readme_shows() {
 #[test]
 fn the_claims_counts_agree_in_the_command_readme_and_report() {
     let root = env!("CARGO_MANIFEST_DIR");
-    let o = Command::new(env!("CARGO_BIN_EXE_racket-impact"))
-        .args(["uncertainty", "--claims", "--format", "json"])
-        .output()
-        .unwrap();
+    let o = common::bin().args(["uncertainty", "--claims", "--format", "json"]).output().unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let json: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let count = |group: &str, verdict: &str| -> u64 {
@@ -190,10 +183,7 @@ fn the_variants_numbers_are_what_the_commands_beside_them_print() {
     let mut checked = 0;
     for bullet in &bullets {
         for command in bullet.split('`').skip(1).step_by(2).filter(|c| c.starts_with("racket-impact sweep ")) {
-            let o = Command::new(env!("CARGO_BIN_EXE_racket-impact"))
-                .args(command.split_whitespace().skip(1))
-                .output()
-                .unwrap();
+            let o = common::bin().args(command.split_whitespace().skip(1)).output().unwrap();
             assert!(o.status.success(), "{command}: {}", String::from_utf8_lossy(&o.stderr));
             let csv = String::from_utf8(o.stdout).unwrap();
             let mut lines = csv.lines();

@@ -64,31 +64,55 @@ pub fn run(a: UncertaintyArgs) -> Result<()> {
         Some(path) => racket_impact::render::io::check_output_dir("out", path)?,
         None => super::common::check_stdout()?,
     }
-    let ctl = Control::new();
-    let reporter = Reporter::start(&ctl);
-    let done = execute(request, &ctl);
-    drop(reporter);
-    let (text, diagnostics) = match done? {
-        Uncertain::Fields { study, outputs, diagnostics } => {
-            let text = match a.common.format {
-                Format::Json => json_text(&study.json(&outputs))?,
-                Format::Csv => study.csv(&outputs),
-                Format::Text => study.text(&outputs),
-            };
-            (text, diagnostics)
+    let formats = [Format::Text, Format::Csv, Format::Json];
+    let which = formats.iter().position(|&f| f == a.common.format).unwrap_or(0);
+    let (text, diagnostics) = match request {
+        Uncertainty::Claims { samples, seed } => {
+            // (depends on nothing but the build, the sample count and the seed: kept where
+            // RACKET_IMPACT_CACHE says, its three formats from one run, super::cache)
+            let names = formats.map(|f| format!("claims-{samples}-{seed}-{}", format!("{f:?}").to_lowercase()));
+            let text =
+                super::cache::texts(&names.each_ref().map(String::as_str), which, || match run_request(request)? {
+                    Uncertain::Claims { rows, samples, seed, .. } => claims_texts(&rows, samples, seed),
+                    Uncertain::Fields { .. } => Ok(vec![]),
+                })?;
+            (text, Uncertainty::claims_diagnostics(samples))
         }
-        Uncertain::Claims { rows, samples, seed, diagnostics } => {
-            let text = match a.common.format {
-                Format::Csv => robustness::table(&rows)?.to_csv(),
-                Format::Text => robustness::text(&rows, samples, seed),
-                Format::Json => json_text(&robustness::json(&rows, samples, seed)?)?,
-            };
-            (text, diagnostics)
-        }
+        Uncertainty::Fields { .. } => match run_request(request)? {
+            Uncertain::Fields { study, outputs, diagnostics } => {
+                let text = match a.common.format {
+                    Format::Json => json_text(&study.json(&outputs))?,
+                    Format::Csv => study.csv(&outputs),
+                    Format::Text => study.text(&outputs),
+                };
+                (text, diagnostics)
+            }
+            Uncertain::Claims { rows, samples, seed, diagnostics } => {
+                (claims_texts(&rows, samples, seed)?.swap_remove(which), diagnostics)
+            }
+        },
     };
     emit(a.out.as_ref(), &text)?;
     print_diagnostics(&diagnostics);
     Ok(())
+}
+
+/// The claims' study in each of [`Format::Text`], [`Format::Csv`] and [`Format::Json`].
+fn claims_texts(rows: &[robustness::ClaimRobustness], samples: u64, seed: u32) -> Result<Vec<String>> {
+    Ok(vec![
+        robustness::text(rows, samples, seed),
+        robustness::table(rows)?.to_csv(),
+        json_text(&robustness::json(rows, samples, seed)?)?,
+    ])
+}
+
+/// Run `request` with its progress reported.
+fn run_request(request: Uncertainty) -> Result<Uncertain> {
+    let ctl = Control::new();
+    let reporter = Reporter::start(&ctl);
+    let done = execute(request, &ctl);
+    drop(reporter);
+    done
 }
 
 fn json_text(v: &serde_json::Value) -> Result<String> {

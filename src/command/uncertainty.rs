@@ -93,6 +93,12 @@ pub enum Uncertain {
 }
 
 impl Uncertainty {
+    /// What the claims' study at `samples` base samples tells beside its result (too few samples
+    /// for its indices to mean anything): a function of the count alone.
+    pub fn claims_diagnostics(samples: u64) -> Vec<Diagnostic> {
+        few_samples(samples).map(|s| Diagnostic::new(Note::Unusual, "samples", s)).into_iter().collect()
+    }
+
     /// The study `sources` and the options `given` describe: the sample count first, then the
     /// inputs; with `claims`, only the sample count and the seed are taken.
     pub fn new(sources: &Sources, given: &Given) -> Result<Uncertainty> {
@@ -176,9 +182,7 @@ impl Request for Uncertainty {
                 ctl.begin(doubled.runs() as u64, Unit::Named("claim evaluations"));
                 let context = crate::experiments::Context::paper();
                 let rows = robustness::study(&context, samples, seed, true, None, |done| ctl.set_done(done as u64))?;
-                let diagnostics =
-                    few_samples(samples).map(|s| Diagnostic::new(Note::Unusual, "samples", s)).into_iter().collect();
-                Ok(Uncertain::Claims { rows, samples, seed, diagnostics })
+                Ok(Uncertain::Claims { rows, samples, seed, diagnostics: Uncertainty::claims_diagnostics(samples) })
             }
         }
     }

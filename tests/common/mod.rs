@@ -17,7 +17,8 @@ pub fn bin() -> Command {
 /// The folder where the binary keeps the report of its build (src/cli/cache.rs): the one `make
 /// figures` names, so that the tests' many runs of `report` (its options, its output paths)
 /// read the report `make figures` computed with the same binary instead of computing it again
-/// (about 40 CPU-seconds each). A report of another build is never read.
+/// (about 40 CPU-seconds each), and the runs of `uncertainty --claims` at one sample count share
+/// one computation. A text of another build is never read.
 pub const CACHE: &str = concat!(env!("CARGO_TARGET_TMPDIR"), "/cache");
 
 /// Run the binary with `args` and wait for it.
