@@ -48,6 +48,7 @@ __all__ = [
     "uncertainty",
     "speed",
     "modes",
+    "calibrate",
     "presets",
     "strings",
     "experiments",
@@ -683,6 +684,19 @@ def modes(*, racket=None, config=None, progress=None, **kwargs) -> Modes:
     return Modes(np.array(doc["frequencies_hz"]), np.array(doc["mode1_nodes_m"]), doc["segments"], doc["diagnostics"])
 
 
+def calibrate(measurements=None, *, racket=None, config=None, progress=None, **kwargs) -> dict:
+    # (the docstring is made from the parameters' and the options' declarations below)
+    options, params = _split("calibrate", kwargs)
+    if measurements is not None:
+        options["measurements"] = measurements
+    pairs = _pairs(params, "calibrate")
+    doc, diagnostics = _call(
+        "calibrate", racket, config, pairs, _options("calibrate", "calibrate", options), progress
+    )
+    _warn(json.loads(diagnostics))
+    return json.loads(doc)
+
+
 # --- rackets, strings, experiments ----------------------------------------------------------
 
 #: The beam segments a racket is fitted for unless told (the paper's N).
@@ -905,6 +919,26 @@ Parameters
 @OPTIONS@
 @PARAMETERS@
 """,
+    calibrate: f"""Fit parameters with a declared range to measured rows (``calibrate``).
+
+``measurements``: a CSV in the schema of data/measured (the shipped measurements if not given);
+``fit``: the parameters to fit (each with a declared range, or ``range=["KEY=LO:HI"]``). The rows
+with role = calibration are fitted, those with role = validation predicted and judged. Returns
+the command line's ``calibrate --format json`` document as a dict: each fitted parameter with
+its 95 % interval, the correlation, every row's model value and its held-out prediction, and the
+in-sample, held-out and validation errors. The fit runs on the library's threads with the GIL
+released; Ctrl-C stops it.
+
+Example: ``calibrate(fit=["kt"], hold_out="string")``
+
+Parameters
+----------
+measurements : str or os.PathLike, optional
+    The measurements CSV.
+{_RACKET_DOC}
+@OPTIONS@
+@PARAMETERS@
+""",
     card: f"""What string tension does to one racket: power, sweet spot, control, comfort and spin against the tension (``card``).
 
 For a racket (``racket=``, or the paper's), a string (``string=``, data/strings) and a range of
@@ -956,6 +990,7 @@ _COMMAND_OF = {
     uncertainty: "uncertainty",
     speed: "speed",
     modes: "modes",
+    calibrate: "calibrate",
     card: "card",
 }
 

@@ -187,6 +187,8 @@ def stub() -> str:
         )
     )
     parts.append(_function(ri.modes, _RACKET, "Modes", _TYPES))
+    own = "    measurements: str | os.PathLike[str] | None = None,\n" + _RACKET
+    parts.append(_function(ri.calibrate, own, "dict[str, Any]", _TYPES))
     parts += [f"def presets(segments: int = 39) -> {table}:", _doc(ri.presets.__doc__, "    "), ""]
     parts.append(
         _class(
