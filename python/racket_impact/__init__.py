@@ -26,13 +26,23 @@ import copy
 import json
 import numbers
 import os
-import sys
 import warnings
 from typing import Any, NamedTuple
 
 import numpy as np
 
 from . import _args, _docs, _native, _progress
+from ._tables import _array, _frame, _pandas, _table
+from ._warnings import (
+    BeyondModelWarning,
+    LongRunWarning,
+    MissingDataWarning,
+    NotUsedWarning,
+    RacketImpactWarning,
+    UnusualValueWarning,
+    _caller_level,
+    _warn,
+)
 from ._args import (
     _COMMANDS,
     _DECLARED,
@@ -91,73 +101,6 @@ def parameters() -> list[dict[str, Any]]:
     return copy.deepcopy(_PARAMS)
 
 
-# --- warnings -------------------------------------------------------------------------------
-
-
-class RacketImpactWarning(UserWarning):
-    """A doubt about a valid run, as the command line prints it after ``warning:``.
-
-    ``kind`` says what kind of doubt (``unusual``, ``beyond_model``, ``missing_data``,
-    ``not_used``), ``field`` the parameter key or result field it is about."""
-
-    kind: str = ""
-    field: str = ""
-
-    def __init__(self, sentence: str, kind: str = "", field: str = ""):
-        super().__init__(sentence)
-        self.kind = kind
-        self.field = field
-
-
-class UnusualValueWarning(RacketImpactWarning):
-    """A valid value outside the range usual for it (a typo or a unit slip?), computed anyway."""
-
-
-class BeyondModelWarning(RacketImpactWarning):
-    """A result beyond the range the model is meant for, computed anyway."""
-
-
-class MissingDataWarning(RacketImpactWarning):
-    """A value the data does not give, taken from elsewhere."""
-
-
-class NotUsedWarning(RacketImpactWarning):
-    """A property or key given that this run does not use."""
-
-
-class LongRunWarning(RacketImpactWarning):
-    """A call estimated to take more than a minute (told before it starts), or one that has
-    taken more than three times its estimate (told as it goes)."""
-
-
-_WARNINGS = {
-    "unusual": UnusualValueWarning,
-    "beyond_model": BeyondModelWarning,
-    "missing_data": MissingDataWarning,
-    "not_used": NotUsedWarning,
-    "long_run": LongRunWarning,
-}
-
-
-def _caller_level() -> int:
-    """The ``stacklevel`` of the line that called into this package."""
-    level, frame = 1, sys._getframe(1)
-    while frame is not None and os.path.dirname(frame.f_code.co_filename) == _HERE:
-        frame, level = frame.f_back, level + 1
-    return level
-
-
-def _warn(diagnostics: list[dict[str, str]]) -> None:
-    """Each diagnostic as a warning, pointing at the line that called into this package."""
-    level = _caller_level()
-    for d in diagnostics:
-        cls = _WARNINGS.get(d["kind"], RacketImpactWarning)
-        warnings.warn(cls(d["sentence"], d["kind"], d["field"]), stacklevel=level)
-
-
-_HERE = os.path.dirname(__file__)
-
-
 # --- arguments ------------------------------------------------------------------------------
 
 
@@ -184,31 +127,6 @@ def _source(racket: Any) -> str | None:
     if isinstance(racket, (str, os.PathLike)):
         return os.fspath(racket)
     raise TypeError(f"racket is a preset name, a racket file's path or a Racket, not {racket!r}")
-
-
-def _pandas():
-    """pandas, where it is installed."""
-    try:
-        import pandas
-    except ImportError:
-        return None
-    return pandas
-
-
-def _array(dtype: str, payload: Any) -> np.ndarray:
-    if dtype == "str":
-        return np.array(payload, dtype=object)
-    return np.frombuffer(payload, dtype={"float64": "<f8", "int64": "<i8", "bool": "?"}[dtype])
-
-
-def _table(columns: list[tuple[str, str, Any]], index: str | None = None):
-    """Columns as a pandas DataFrame where pandas is installed, else a dict of numpy arrays."""
-    data = {name: _array(dtype, payload) for name, dtype, payload in columns}
-    pd = _pandas()
-    if pd is None:
-        return data
-    frame = pd.DataFrame(data, copy=False)
-    return frame.set_index(index) if index else frame
 
 
 # --- one impact -----------------------------------------------------------------------------
@@ -494,19 +412,6 @@ class Uncertainty:
 
     def __repr__(self) -> str:
         return f"Uncertainty(inputs={self.inputs}, samples={self.samples}, runs={self.runs})"
-
-
-def _frame(columns: list[tuple[str, str, list]], index: str | None = None):
-    """Python lists as a table (``f``: float64, ``str``: text)."""
-    data = {
-        name: np.array(values, dtype=object) if kind == "str" else np.asarray(values, dtype="<f8")
-        for name, kind, values in columns
-    }
-    pd = _pandas()
-    if pd is None:
-        return data
-    frame = pd.DataFrame(data)
-    return frame.set_index(index) if index else frame
 
 
 def uncertainty(vary=None, *, racket=None, config=None, progress=None, **kwargs):
