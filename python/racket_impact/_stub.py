@@ -66,7 +66,7 @@ _RACKET = "    *,\n    racket: str | os.PathLike[str] | Racket | None = None,\n 
 
 def _impact() -> str:
     lines = ["class Impact:", _doc(ri.Impact.__doc__, "    ")]
-    for f in ri._FIELDS:
+    for f in ri._args._FIELDS:
         unit = f" [{f['unit']}]" if f["unit"] else ""
         where = " (oblique or spinning ball only)" if f["oblique"] else ""
         kind = _FIELD[f["kind"]] + (" | None" if f["oblique"] else "")
