@@ -23,20 +23,44 @@ subclass with the diagnostic's ``kind`` and ``field``, never a print.
 from __future__ import annotations
 
 import copy
-import difflib
-import inspect
 import json
 import numbers
 import os
-import re
-import sys
-import textwrap
 import warnings
 from typing import Any, NamedTuple
 
 import numpy as np
 
-from . import _native, _progress
+from . import _args, _docs, _native, _progress
+from ._tables import _array, _frame, _pandas, _table
+from ._warnings import (
+    BeyondModelWarning,
+    LongRunWarning,
+    MissingDataWarning,
+    NotUsedWarning,
+    RacketImpactWarning,
+    UnusualValueWarning,
+    _caller_level,
+    _warn,
+)
+from ._args import (
+    _COMMANDS,
+    _DECLARED,
+    _FIELDS,
+    _NOT_TAKEN,
+    _PARAMS,
+    _by_name,
+    _command_pairs,
+    _option_text,
+    _options,
+    _pairs,
+    _param,
+    _path,
+    _python_words,
+    _split,
+    _takes,
+    _text,
+)
 
 __version__ = _native.__version__
 
@@ -48,6 +72,7 @@ __all__ = [
     "uncertainty",
     "speed",
     "modes",
+    "calibrate",
     "presets",
     "strings",
     "experiments",
@@ -68,30 +93,6 @@ __all__ = [
     "LongRunWarning",
 ]
 
-#: The declaration of every impact parameter (key, name, help, unit, range, default, ...), as the
-#: library declares it.
-_PARAMS: list[dict[str, Any]] = json.loads(_native.parameters())
-#: The result fields of one impact (key, unit, doc, ...), as the library declares them.
-_FIELDS: list[dict[str, Any]] = json.loads(_native.result_fields())
-#: Every command's own options (not the parameters: ``nx``, ``samples``, ``long``, ...), as the
-#: library declares them: name (the flag), keyword, kind (switch, count, number, text, choice),
-#: range, choices, whether a list, default (as the flag takes it) and help.
-_DECLARED: dict[str, dict[str, Any]] = json.loads(_native.commands())
-_COMMANDS: dict[str, list[dict[str, Any]]] = {name: d["options"] for name, d in _DECLARED.items()}
-#: The parameters each command does not take, with why (a map's grid sets the impact point, the
-#: swing sets a speed's ball speed, a free racket's modes need neither ball nor strings).
-_NOT_TAKEN: dict[str, dict[str, str]] = {name: d["not_taken"] for name, d in _DECLARED.items()}
-
-
-def _by_name() -> dict[str, dict[str, Any]]:
-    """Every spelling of a parameter: its Python name, its key and its CSV column."""
-    names: dict[str, dict[str, Any]] = {}
-    for p in _PARAMS:
-        for n in (p["name"], p["key"], p["column"]):
-            names.setdefault(n, p)
-    return names
-
-
 def parameters() -> list[dict[str, Any]]:
     """Every impact parameter as the library declares it: ``name`` (the keyword), ``key`` (the
     flag), ``help``, ``unit``, ``column`` (in a sweep's table), ``kind`` (number, count or
@@ -100,175 +101,7 @@ def parameters() -> list[dict[str, Any]]:
     return copy.deepcopy(_PARAMS)
 
 
-# --- warnings -------------------------------------------------------------------------------
-
-
-class RacketImpactWarning(UserWarning):
-    """A doubt about a valid run, as the command line prints it after ``warning:``.
-
-    ``kind`` says what kind of doubt (``unusual``, ``beyond_model``, ``missing_data``,
-    ``not_used``), ``field`` the parameter key or result field it is about."""
-
-    kind: str = ""
-    field: str = ""
-
-    def __init__(self, sentence: str, kind: str = "", field: str = ""):
-        super().__init__(sentence)
-        self.kind = kind
-        self.field = field
-
-
-class UnusualValueWarning(RacketImpactWarning):
-    """A valid value outside the range usual for it (a typo or a unit slip?), computed anyway."""
-
-
-class BeyondModelWarning(RacketImpactWarning):
-    """A result beyond the range the model is meant for, computed anyway."""
-
-
-class MissingDataWarning(RacketImpactWarning):
-    """A value the data does not give, taken from elsewhere."""
-
-
-class NotUsedWarning(RacketImpactWarning):
-    """A property or key given that this run does not use."""
-
-
-class LongRunWarning(RacketImpactWarning):
-    """A call estimated to take more than a minute (told before it starts), or one that has
-    taken more than three times its estimate (told as it goes)."""
-
-
-_WARNINGS = {
-    "unusual": UnusualValueWarning,
-    "beyond_model": BeyondModelWarning,
-    "missing_data": MissingDataWarning,
-    "not_used": NotUsedWarning,
-    "long_run": LongRunWarning,
-}
-
-
-def _caller_level() -> int:
-    """The ``stacklevel`` of the line that called into this package."""
-    level, frame = 1, sys._getframe(1)
-    while frame is not None and os.path.dirname(frame.f_code.co_filename) == _HERE:
-        frame, level = frame.f_back, level + 1
-    return level
-
-
-def _warn(diagnostics: list[dict[str, str]]) -> None:
-    """Each diagnostic as a warning, pointing at the line that called into this package."""
-    level = _caller_level()
-    for d in diagnostics:
-        cls = _WARNINGS.get(d["kind"], RacketImpactWarning)
-        warnings.warn(cls(d["sentence"], d["kind"], d["field"]), stacklevel=level)
-
-
-_HERE = os.path.dirname(__file__)
-
-
 # --- arguments ------------------------------------------------------------------------------
-
-
-def _param(name: str, function: str) -> dict[str, Any]:
-    """The declaration a keyword names, else ``TypeError`` with the nearest names."""
-    p = _by_name().get(name)
-    if p is None:
-        near = difflib.get_close_matches(name, [q["name"] for q in _PARAMS], n=3)
-        hint = f"; did you mean {' or '.join(repr(n) for n in near)}?" if near else ""
-        raise TypeError(f"{function}() got an unexpected keyword argument {name!r}{hint}")
-    return p
-
-
-def _text(p: dict[str, Any], value: Any) -> str:
-    """A value as the command line's flag would be given it: a name as it is, a whole number in
-    digits, a real number in its shortest exact form (``repr``). A value of another type is a
-    ``TypeError``, as in any numpy-style API: ``ks="4e4"`` is not a number, ``segments=39.0``
-    not a whole one."""
-    if p["kind"] == "choice":
-        if isinstance(value, str):
-            return value
-        names = ", ".join(c["name"] for c in p["choices"])
-        raise TypeError(f"{p['name']} takes one of the names {names}, not {value!r}")
-    if p["kind"] == "count":
-        if isinstance(value, numbers.Integral) and not isinstance(value, (bool, np.bool_)):
-            return str(int(value))
-        raise TypeError(f"{p['name']} takes a whole number, not {value!r}")
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
-        raise TypeError(f"{p['name']} takes a number, not {value!r}")
-    if isinstance(value, numbers.Integral):
-        return str(int(value))
-    return repr(float(value))
-
-
-def _takes(o: dict[str, Any]) -> str:
-    """What a command's option takes, in words."""
-    return {
-        "switch": "True or False",
-        "count": f"a whole number ({o['lo']}..={o['hi']})",
-        "number": "a number",
-        "text": "a text",
-        "choice": "one of the names " + ", ".join(o["choices"]),
-    }[o["kind"]]
-
-
-def _option_text(o: dict[str, Any], function: str, value: Any) -> str:
-    """A command option's value as its flag takes it; a value of another type is a
-    ``TypeError`` naming the keyword (its range is the library's to check: a ``ValueError``
-    with the command line's message)."""
-    kind = o["kind"]
-    if kind == "switch" and isinstance(value, (bool, np.bool_)):
-        return "true" if value else "false"
-    if kind == "count" and isinstance(value, numbers.Integral) and not isinstance(value, (bool, np.bool_)):
-        return str(int(value))
-    if kind == "number" and isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_)):
-        return repr(float(value))
-    if kind == "text" and isinstance(value, Racket):
-        return value.source
-    if kind == "text" and isinstance(value, (str, os.PathLike)):
-        return os.fspath(value)
-    if kind == "choice" and isinstance(value, str):
-        return value
-    raise TypeError(f"{function}() argument {o['keyword']} takes {_takes(o)}, not {value!r}")
-
-
-def _options(command: str, function: str, given: dict[str, Any]) -> list[tuple[str, list[str]]]:
-    """The command's options among ``given`` as ``(keyword, [texts])``: a list option takes a
-    sequence or one value; ``None`` is "not given" for an option without a default, and a
-    ``TypeError`` for one with a default (``nx=None``)."""
-    out = []
-    for o in _COMMANDS[command]:
-        if o["keyword"] not in given:
-            if o["required"]:
-                raise TypeError(f"{function}() missing required keyword argument: {o['keyword']!r}")
-            continue
-        value = given[o["keyword"]]
-        if value is None:
-            if o["default"] is None and o["kind"] != "switch":
-                continue
-            raise TypeError(f"{function}() argument {o['keyword']} takes {_takes(o)}, not None")
-        if o["many"] and not isinstance(value, (str, os.PathLike, Racket)) and np.ndim(value) > 0:
-            values = list(value)
-        else:
-            values = [value]
-        out.append((o["keyword"], [_option_text(o, function, v) for v in values]))
-    return out
-
-
-def _split(command: str, kwargs: dict[str, Any]) -> tuple[dict[str, Any], dict[str, Any]]:
-    """The keywords as (the command's options, the impact parameters)."""
-    own = {o["keyword"] for o in _COMMANDS[command]}
-    return {k: v for k, v in kwargs.items() if k in own}, {k: v for k, v in kwargs.items() if k not in own}
-
-
-def _command_pairs(command: str, function: str, params: dict[str, Any]) -> list[tuple[str, str]]:
-    """The parameters as ``_pairs``, a parameter the command does not take a ``TypeError`` that
-    says why (a map's grid sets the impact point)."""
-    for name in params:
-        why = _NOT_TAKEN[command].get(_param(name, function)["key"])
-        if why:
-            raise TypeError(f"{function}() got an unexpected keyword argument {name!r}: {_python_words(why)}")
-    return _pairs(params, function)
 
 
 def _call(command: str, racket, config, pairs, options, progress) -> Any:
@@ -285,10 +118,6 @@ def _call(command: str, racket, config, pairs, options, progress) -> Any:
         reporter.close()
 
 
-def _pairs(params: dict[str, Any], function: str) -> list[tuple[str, str]]:
-    return [(_param(name, function)["key"], _text(_param(name, function), v)) for name, v in params.items()]
-
-
 def _source(racket: Any) -> str | None:
     """A racket argument as the command line's ``--racket``: a preset name or a file path."""
     if racket is None:
@@ -298,39 +127,6 @@ def _source(racket: Any) -> str | None:
     if isinstance(racket, (str, os.PathLike)):
         return os.fspath(racket)
     raise TypeError(f"racket is a preset name, a racket file's path or a Racket, not {racket!r}")
-
-
-def _path(config: Any) -> str | None:
-    if config is None:
-        return None
-    if isinstance(config, (str, os.PathLike)):
-        return os.fspath(config)
-    raise TypeError(f"config is a TOML file's path, not {config!r}")
-
-
-def _pandas():
-    """pandas, where it is installed."""
-    try:
-        import pandas
-    except ImportError:
-        return None
-    return pandas
-
-
-def _array(dtype: str, payload: Any) -> np.ndarray:
-    if dtype == "str":
-        return np.array(payload, dtype=object)
-    return np.frombuffer(payload, dtype={"float64": "<f8", "int64": "<i8", "bool": "?"}[dtype])
-
-
-def _table(columns: list[tuple[str, str, Any]], index: str | None = None):
-    """Columns as a pandas DataFrame where pandas is installed, else a dict of numpy arrays."""
-    data = {name: _array(dtype, payload) for name, dtype, payload in columns}
-    pd = _pandas()
-    if pd is None:
-        return data
-    frame = pd.DataFrame(data, copy=False)
-    return frame.set_index(index) if index else frame
 
 
 # --- one impact -----------------------------------------------------------------------------
@@ -618,19 +414,6 @@ class Uncertainty:
         return f"Uncertainty(inputs={self.inputs}, samples={self.samples}, runs={self.runs})"
 
 
-def _frame(columns: list[tuple[str, str, list]], index: str | None = None):
-    """Python lists as a table (``f``: float64, ``str``: text)."""
-    data = {
-        name: np.array(values, dtype=object) if kind == "str" else np.asarray(values, dtype="<f8")
-        for name, kind, values in columns
-    }
-    pd = _pandas()
-    if pd is None:
-        return data
-    frame = pd.DataFrame(data)
-    return frame.set_index(index) if index else frame
-
-
 def uncertainty(vary=None, *, racket=None, config=None, progress=None, **kwargs):
     # (the docstring is made from the parameters' and the options' declarations below)
     options, params = _split("uncertainty", kwargs)
@@ -683,6 +466,19 @@ def modes(*, racket=None, config=None, progress=None, **kwargs) -> Modes:
     return Modes(np.array(doc["frequencies_hz"]), np.array(doc["mode1_nodes_m"]), doc["segments"], doc["diagnostics"])
 
 
+def calibrate(measurements=None, *, racket=None, config=None, progress=None, **kwargs) -> dict:
+    # (the docstring is made from the parameters' and the options' declarations below)
+    options, params = _split("calibrate", kwargs)
+    if measurements is not None:
+        options["measurements"] = measurements
+    pairs = _pairs(params, "calibrate")
+    doc, diagnostics = _call(
+        "calibrate", racket, config, pairs, _options("calibrate", "calibrate", options), progress
+    )
+    _warn(json.loads(diagnostics))
+    return json.loads(doc)
+
+
 # --- rackets, strings, experiments ----------------------------------------------------------
 
 #: The beam segments a racket is fitted for unless told (the paper's N).
@@ -729,6 +525,9 @@ class Racket:
         return f"Racket({self.name!r}, length={r['length']:.4g} m, mass={r['mass']:.4g} kg)"
 
 
+_args.Racket = Racket
+
+
 def strings():
     """The strings ``string=`` can name (data/strings): material, gauge and the friction
     coefficients the tangential contact uses, with the database row they come from."""
@@ -764,189 +563,7 @@ def run_experiment(id: str, *, racket=None):
     return _table(columns)
 
 
-# --- docstrings and signatures made from the declaration ------------------------------------
-
-
-def _param_doc(p: dict[str, Any]) -> str:
-    """One parameter in a numpydoc ``Parameters`` list: name, type and unit, its help, allowed
-    and usual ranges, default (and how it is chosen), which impacts use it, and its declared
-    uncertainty; its help heading in brackets."""
-    kind = {"number": "float", "count": "int", "choice": "str"}[p["kind"]]
-    unit = f", {p['unit']}" if p["unit"] else ""
-    lines = [f"{p['name']} : {kind}{unit} [{p['heading']}]", f"    {p['help']}."]
-    if p["kind"] == "choice":
-        for c in p["choices"]:
-            lines.append(f"    ``{c['name']}``" + (f": {c['help']}" if c["help"] else ""))
-    else:
-        lines.append(f"    Allowed: {p['range_text'].replace(p['key'], p['name'])}.")
-    if p["usual"]:
-        lo, hi = p["usual"]
-        lines.append(f"    Usual: {_num(lo)} .. {_num(hi)}{(' ' + p['unit']) if p['unit'] else ''} (outside: a warning).")
-    default = p["default"]
-    if default is not None:
-        unit_default = f" {p['unit']}" if p["unit"] and p["kind"] != "choice" and _is_number(default) else ""
-        how = f" ({p['default_words'].replace('--racket', 'racket=')})" if p["default_words"] else ""
-        lines.append(f"    Default: {default}{unit_default}{how}.")
-    if p["used_when"] != "always":
-        lines.append(f"    Used only {p['used_when']}.")
-    if p["uncertainty"]:
-        u = p["uncertainty"]
-        lines.append(f"    Declared uncertainty: {u['dist']} (nominal {_num(u['nominal'])}).")
-    return "\n".join(lines)
-
-
-def _num(v: float) -> str:
-    """A bound as the help writes it: ``1e12``, ``0.01``, ``5000``."""
-    return f"{v:g}".replace("e+0", "e").replace("e+", "e").replace("e-0", "e-")
-
-
-def _is_number(text: str) -> bool:
-    try:
-        float(text)
-    except ValueError:
-        return False
-    return True
-
-
-
-_RACKET_DOC = """racket : str, os.PathLike or Racket, optional
-    A preset name (see presets()) or a racket file (TOML, player units); its values replace
-    the paper's racket, strings and ball, and the impact moves to the centre of its head.
-config : str or os.PathLike, optional
-    A TOML file with any parameter key (as the command line's --config); keywords win.
-progress : bool, optional
-    Show the call's progress (tqdm's bar where tqdm is installed, else a line on standard
-    error): by default once the call has run a second; False: never. Ctrl-C stops any call
-    within a second (KeyboardInterrupt), with nothing kept."""
-
-_COMMON_NOTE = """The defaults are the paper's racket hit at the centre of its strings with the
-paper's ball (the command line's): with ``racket=``, the racket's own values. Precedence: the
-defaults < the racket < the config file < the keywords."""
-
-_DOCS = {
-    simulate: f"""One impact: the ball's rebound (e_A), contact time, twist and where the energy went.
-
-Returns an :class:`Impact` with every field of ``racket-impact simulate --format json`` as an
-attribute (and ``to_dict()``), bit for bit the command line's numbers. A bad value raises
-``ValueError`` with the command line's message; a doubt about the run is a warning
-(:class:`RacketImpactWarning`).
-
-{_COMMON_NOTE}
-
-Example: ``simulate(x=0.10, r=0.05, ks=3e4).e_a``
-
-Parameters
-----------
-{_RACKET_DOC}
-@OPTIONS@
-@PARAMETERS@
-
-Returns
--------
-Impact
-    The result, every field an attribute (SI units unless the name says otherwise); a field
-    of an oblique or spinning ball only is absent at normal incidence:
-
-@FIELDS@
-""",
-    sweep: f"""Every impact of the cartesian product of the values given, in parallel, as ``sweep``.
-
-Each keyword is a parameter and its values: an array or list (``x=np.linspace(0.02, 0.6,
-50)``, ``load=["node", "hat"]``), one value, or a spec string as the command line's
-(``"0.02:0.6:50"``, ``"1e3:1e5:5:log"``); the first keyword varies slowest. Returns a pandas
-DataFrame where pandas is installed, else a dict of numpy arrays, with ``sweep``'s CSV
-columns: the swept parameters, the recorded ones, every result field, and the solver. The
-numbers are the command line's, at full precision. The work runs on every core with the GIL
-released; nothing is done in Python per impact. Sweeps use the modal solver unless
-``solver`` is given or a hand grip or stiffening strings need fd.
-
-{_COMMON_NOTE}
-
-Parameters
-----------
-{_RACKET_DOC}
-@OPTIONS@
-@PARAMETERS@
-""",
-    face_map: f"""A quantity over the string face, one impact per point of an nx x nr grid (``map``).
-
-Returns a :class:`FaceMap`: the grid ``x`` and ``r``, ``values[i, j]`` at ``(x[i], r[j])``,
-the ``table`` of every quantity at every point, ``metadata`` and ``diagnostics``. No file is
-written. The grid sets the impact point and the map its solver, so ``x``, ``r``, ``solver`` and
-``dt`` are not keywords here.
-
-Parameters
-----------
-{_RACKET_DOC}
-@OPTIONS@
-@PARAMETERS@
-""",
-    speed: f"""Outgoing ball speed for a swing and an incoming ball, compared across tensions or rackets.
-
-The command line's ``speed``: v_out = e_A v_in + (1 + e_A) v_racket, with e_A computed at the
-relative speed and the racket's swing speed at the impact point; a tilted swing path or an
-incoming spin makes the impact oblique. Returns a DataFrame where pandas is installed (else a
-dict of numpy arrays) with ``speed``'s CSV columns, one row per variant, the first the reference.
-
-Parameters
-----------
-{_RACKET_DOC}
-@OPTIONS@
-@PARAMETERS@
-""",
-    modes: f"""The free racket's flexible modes: frequencies and the nodes of the fundamental (``modes``).
-
-Returns a :class:`Modes`. Only the racket's length, mass, stiffness and segments matter: the
-other parameters are not keywords here.
-
-Parameters
-----------
-{_RACKET_DOC}
-@OPTIONS@
-@PARAMETERS@
-""",
-    card: f"""What string tension does to one racket: power, sweet spot, control, comfort and spin against the tension (``card``).
-
-For a racket (``racket=``, or the paper's), a string (``string=``, data/strings) and a range of
-tensions, every panel computed as the command that computes it alone: the ball speeds as
-``speed``, the sweet spot from ``map``, the twist, vibration and contact time as ``simulate``,
-the spin as ``speed``'s stroke. Returns a :class:`Card` (its table, header block, the paper
-beside the model on the paper's racket, the PNG); with ``out`` its two files are written too,
-the CSV at ``out`` and the PNG beside it. Refused above ten minutes of estimated work unless
-``long=True``. The card sets the impact points, speeds, incidence and ``ks`` itself, so
-those are not keywords here.
-
-Parameters
-----------
-out : str or os.PathLike, optional
-    Write the card's CSV here and its PNG beside it (same stem), atomically.
-{_RACKET_DOC}
-@OPTIONS@
-@PARAMETERS@
-""",
-    uncertainty: f"""An impact's result fields under uncertain inputs: quantiles and Sobol' indices.
-
-``vary``: the uncertain inputs, each ``"KEY=DIST"`` (DIST ``uniform:LO:HI``,
-``normal:MEAN:SD`` or ``loguniform:LO:HI``) or ``"KEY"`` alone for the distribution declared
-with the parameter; or a dict ``{{KEY: DIST or None}}``. The impact runs ``samples`` (d + 2)
-times over a Saltelli design (scrambled Sobol' sequence, deterministic for ``seed``) on every
-core with the GIL released, with the modal solver unless ``solver`` is given or a hand grip or
-stiffening strings need fd. Returns an :class:`Uncertainty` (DataFrames of the quantiles and
-indices), equal to ``uncertainty --format json``.
-
-With ``claims=True`` (and no ``vary``): every paper claim under the declared uncertainty of the
-paper's inputs, as ``uncertainty --claims`` (its CSV's table).
-
-Parameters
-----------
-vary : list of str or dict
-    The uncertain inputs.
-{_RACKET_DOC}
-@OPTIONS@
-@PARAMETERS@
-""",
-}
-
+# --- docstrings and signatures made from the declaration (``_docs``) ------------------------
 
 #: The command each function runs: its options are the library's declaration of them.
 _COMMAND_OF = {
@@ -956,108 +573,15 @@ _COMMAND_OF = {
     uncertainty: "uncertainty",
     speed: "speed",
     modes: "modes",
+    calibrate: "calibrate",
     card: "card",
 }
 
 
-def _python_words(text: str) -> str:
-    """A text of the library in Python's words: a flag ``--angle-deg`` is the keyword
-    ``angle_deg``, a switch ``--long`` is ``long=True``."""
-    switches = {o["name"] for options in _COMMANDS.values() for o in options if o["kind"] == "switch"}
-    return re.sub(
-        r"--([a-z][a-z0-9-]*)", lambda m: m[1].replace("-", "_") + ("=True" if m[1] in switches else ""), text
-    )
-
-
-def _own(function) -> list[inspect.Parameter]:
-    """The function's own parameters, as written (kept before a signature made here replaces
-    what ``inspect`` sees)."""
-    if "_own_parameters" not in function.__dict__:
-        function._own_parameters = [
-            q for q in inspect.signature(function).parameters.values() if q.kind is not inspect.Parameter.VAR_KEYWORD
-        ]
-    return function._own_parameters
-
-
-def _command_options(function) -> list[dict[str, Any]]:
-    """The options of the function's command that are keywords of their own (not the
-    function's own parameters: ``uncertainty``'s ``vary`` comes first, positional)."""
-    own = {q.name for q in _own(function)}
-    return [o for o in _COMMANDS.get(_COMMAND_OF.get(function, ""), []) if o["keyword"] not in own]
-
-
-def _option_default(o: dict[str, Any]) -> Any:
-    """An option's default as a Python value (a switch's is False)."""
-    if o["kind"] == "switch":
-        return False
-    if o["default"] is None:
-        return None
-    return {"count": int, "number": float}.get(o["kind"], str)(o["default"])
-
-
-def _option_doc(o: dict[str, Any]) -> str:
-    """One option in a numpydoc ``Parameters`` list: its type, help, range and default."""
-    kind = {"switch": "bool", "count": "int", "number": "float", "text": "str", "choice": "str"}[o["kind"]]
-    if o["many"]:
-        kind = f"{kind} or sequence of {kind}"
-    lines = [f"{o['keyword']} : {kind}"]
-    lines += textwrap.wrap(_python_words(o["help"]) + ".", 92, initial_indent="    ", subsequent_indent="    ")
-    if o["kind"] == "count":
-        lines.append(f"    Allowed: {o['lo']} <= {o['keyword']} <= {o['hi']}.")
-    if o["kind"] == "choice":
-        lines.append(f"    One of: {', '.join(o['choices'])}.")
-    default = _option_default(o)
-    if default is not None:
-        lines.append(f"    Default: {default!r}.")
-    return "\n".join(lines)
-
-
-def _signature(function, names: list[str]) -> inspect.Signature:
-    """The function's own parameters, its command's options with their defaults, then every
-    impact parameter as a keyword (default None: the default named in the docstring)."""
-    options = [
-        inspect.Parameter(
-            o["keyword"],
-            inspect.Parameter.KEYWORD_ONLY,
-            default=inspect.Parameter.empty if o["required"] else _option_default(o),
-        )
-        for o in _command_options(function)
-    ]
-    extra = [inspect.Parameter(n, inspect.Parameter.KEYWORD_ONLY, default=None) for n in names]
-    return inspect.Signature(_own(function) + options + extra)
-
-
-def _taken(function) -> list[dict[str, Any]]:
-    """The parameters ``function`` takes as keywords: those its command takes."""
-    not_taken = _NOT_TAKEN.get(_COMMAND_OF.get(function, ""), {})
-    return [p for p in _PARAMS if p["key"] not in not_taken]
-
-
-def _fields_doc() -> str:
-    """Every result field of one impact as the returned :class:`Impact` has it: name, type and
-    unit, and what it is (the library's field table)."""
-    lines = []
-    for f in _FIELDS:
-        kind = {"number": "float", "flag": "bool"}[f["kind"]]
-        unit = f", {f['unit']}" if f["unit"] else ""
-        where = " (oblique or spinning ball only)" if f["oblique"] else ""
-        lines.append(f"    {f['key']} : {kind}{unit}{where}")
-        lines += textwrap.wrap(" ".join(f["doc"].split()), 88, initial_indent="        ", subsequent_indent="        ")
-    lines.append("    params : dict, f1_hz : float, diagnostics : list, series : DataFrame or None")
-    lines.append("        The parameters it ran with, the free racket's first bending frequency, the")
-    lines.append("        diagnostics (also given as warnings), the time series (``series=True``).")
-    return "\n".join(lines)
-
-
-def _docstring(function) -> str:
-    """The function's docstring with every parameter it takes."""
-    options = "\n".join(_option_doc(o) for o in _command_options(function))
-    text = _DOCS[function].replace("@OPTIONS@\n", options + "\n" if options else "")
-    text = text.replace("@FIELDS@", _fields_doc())
-    return text.replace("@PARAMETERS@", "\n".join(_param_doc(p) for p in _taken(function)))
-
-
-for _f in _DOCS:
-    _f.__doc__ = _docstring(_f)
-    _f.__signature__ = _signature(_f, [p["name"] for p in _taken(_f)])
-del _f
+_docs.install(_COMMAND_OF)
+# (the names the type stub and the tests read)
+_docstring = _docs.docstring
+_signature = _docs.signature
+_taken = _docs.taken
+_command_options = _docs.command_options
+_option_default = _docs.option_default

@@ -2243,6 +2243,314 @@ def modes(
         Default: 39.
     """
 
+def calibrate(
+    measurements: str | os.PathLike[str] | None = None,
+    *,
+    racket: str | os.PathLike[str] | Racket | None = None,
+    config: str | os.PathLike[str] | None = None,
+    progress: bool | None = None,
+    fit: str | os.PathLike[str] | Sequence[str | os.PathLike[str]],
+    range: str | os.PathLike[str] | Sequence[str | os.PathLike[str]] | None = None,
+    rows: str | os.PathLike[str] | Sequence[str | os.PathLike[str]] | None = None,
+    weights: str = 'none',
+    hold_out: str = 'string',
+    x: float | None = None,
+    r: float | None = None,
+    ks: float | None = None,
+    ei: float | None = None,
+    mass: float | None = None,
+    length: float | None = None,
+    ix: float | None = None,
+    half_width: float | None = None,
+    mb: float | None = None,
+    k1: float | None = None,
+    p: float | None = None,
+    v1: float | None = None,
+    segments: int | None = None,
+    load: str | None = None,
+    dt: float | None = None,
+    solver: str | None = None,
+    frame: str | None = None,
+    grip: str | None = None,
+    strings: str | None = None,
+    string_stiffening: float | None = None,
+    stiffening_deflection: float | None = None,
+    hand_stiffness: float | None = None,
+    hand_damping: float | None = None,
+    grip_length: float | None = None,
+    angle_deg: float | None = None,
+    azimuth_deg: float | None = None,
+    spin_rpm: float | None = None,
+    mu: float | None = None,
+    mu_scale: float | None = None,
+    kt: float | None = None,
+    tangential: str | None = None,
+    mu_ss: float | None = None,
+    string: str | None = None,
+    ball_radius: float | None = None,
+    ball_inertia_factor: float | None = None,
+    ball_ex: float | None = None,
+    ball_kdyn: float | None = None,
+) -> dict[str, Any]:
+    """
+    Fit parameters with a declared range to measured rows (``calibrate``).
+
+    ``measurements``: a CSV in the schema of data/measured (the shipped measurements if not given);
+    ``fit``: the parameters to fit (each with a declared range, or ``range=["KEY=LO:HI"]``). The rows
+    with role = calibration are fitted, those with role = validation predicted and judged. Returns
+    the command line's ``calibrate --format json`` document as a dict: each fitted parameter with
+    its 95 % interval, the correlation, every row's model value and its held-out prediction, and the
+    in-sample, held-out and validation errors. The fit runs on the library's threads with the GIL
+    released; Ctrl-C stops it.
+
+    Example: ``calibrate(fit=["kt"], hold_out="string")``
+
+    Parameters
+    ----------
+    measurements : str or os.PathLike, optional
+        The measurements CSV.
+    racket : str, os.PathLike or Racket, optional
+        A preset name (see presets()) or a racket file (TOML, player units); its values replace
+        the paper's racket, strings and ball, and the impact moves to the centre of its head.
+    config : str or os.PathLike, optional
+        A TOML file with any parameter key (as the command line's --config); keywords win.
+    progress : bool, optional
+        Show the call's progress (tqdm's bar where tqdm is installed, else a line on standard
+        error): by default once the call has run a second; False: never. Ctrl-C stops any call
+        within a second (KeyboardInterrupt), with nothing kept.
+    fit : str or sequence of str
+        The parameters to fit, KEY[,KEY...]: each one with a declared range (see the long help).
+    range : str or sequence of str
+        Search KEY within LO..HI instead of its declared range, KEY=LO:HI (repeatable; within
+        its valid range).
+    rows : str or sequence of str
+        Only these rows, ID[,ID...] (a range M001-M014 of ids alike but for their number).
+    weights : str
+        Residuals in the measured unit (none), or each over the row's stated uncertainty.
+        One of: none, uncertainty.
+        Default: 'none'.
+    hold_out : str
+        The groups left out one at a time, each refitted without and predicted.
+        One of: string, row, none.
+        Default: 'string'.
+    x : float, m [Impact]
+        Impact distance from the tip, m (0 <= x <= length).
+        Allowed: 0 <= x <= length.
+        Default: 0.16 m (the centre of the string face; with racket=, the centre of its head).
+    r : float, m [Impact]
+        Impact distance from the long axis, m (|r| <= half-width).
+        Allowed: |r| <= half-width.
+        Default: 0 m (on the long axis).
+    ks : float, N/m [Strings]
+        String-plane stiffness, N/m (1 ..= 1e12).
+        Allowed: 1 <= ks <= 1e12 N/m.
+        Usual: 5000 .. 200000 N/m (outside: a warning).
+        Default: 40000 N/m (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:36000:44000 (nominal 40000).
+    ei : float, N m^2 [Racket]
+        Frame bending stiffness EI, N m^2 (1e-2 ..= 1e9).
+        Allowed: 0.01 <= ei <= 1e9 N m^2.
+        Default: 150 N m^2 (the paper's; with racket=, the racket file's).
+        Used only with frame = beam.
+        Declared uncertainty: uniform:121.5:181.5 (nominal 150).
+    mass : float, kg [Racket]
+        Racket mass, kg (1e-3 ..= 1e6).
+        Allowed: 0.001 <= mass <= 1000000 kg.
+        Usual: 0.15 .. 1 kg (outside: a warning).
+        Default: 0.34 kg (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:0.32:0.36 (nominal 0.34).
+    length : float, m [Racket]
+        Racket length, m (0.05 ..= 5).
+        Allowed: 0.05 <= length <= 5 m.
+        Usual: 0.4 .. 1 m (outside: a warning).
+        Default: 0.71 m (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:0.686:0.737 (nominal 0.71).
+    ix : float, kg m^2 [Racket]
+        Moment of inertia about the long axis, kg m^2 (1e-7 ..= 1e4).
+        Allowed: 1e-7 <= ix <= 10000 kg m^2.
+        Usual: 0.0003 .. 0.006 kg m^2 (outside: a warning).
+        Default: 0.0015 kg m^2 (the paper's; with racket=, the racket file's).
+        Used only off the long axis (r != 0) or for an oblique ball.
+        Declared uncertainty: uniform:0.0012:0.0018 (nominal 0.0015).
+    half_width : float, m [Racket]
+        Half-width of the string face, m (1e-3 ..= 1): the largest |r|.
+        Allowed: 0.001 <= half_width <= 1 m.
+        Usual: 0.05 .. 0.2 m (outside: a warning).
+        Default: 0.125 m (the paper's; with racket=, the racket file's).
+        Used only off the long axis (r != 0).
+    mb : float, kg [Ball]
+        Ball mass, kg (1e-4 ..= 10).
+        Allowed: 0.0001 <= mb <= 10 kg.
+        Usual: 0.02 .. 0.2 kg (outside: a warning).
+        Default: 0.057 kg (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:0.0558:0.0576 (nominal 0.057).
+    k1 : float, N/m [Ball]
+        Ball compression stiffness k1, N/m (1 ..= 1e9).
+        Allowed: 1 <= k1 <= 1e9 N/m.
+        Usual: 5000 .. 200000 N/m (outside: a warning).
+        Default: 30000 N/m (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:24000:36000 (nominal 30000).
+    p : float [Ball]
+        Ball hysteresis exponent p (1 < p <= 10).
+        Allowed: 1 < p <= 10.
+        Usual: 1.2 .. 5 (outside: a warning).
+        Default: 2.55 (the paper's; with racket=, the racket file's).
+        Declared uncertainty: uniform:2.44445:2.7737 (nominal 2.55).
+    v1 : float, m/s [Impact]
+        Incident ball speed, m/s (1e-3 ..= 1e3).
+        Allowed: 0.001 <= v1 <= 1000 m/s.
+        Usual: 0 .. 70 m/s (outside: a warning).
+        Default: 7.05938 m/s.
+        Declared uncertainty: uniform:27:33 (nominal 30).
+    segments : int [Numerics]
+        Number of beam segments N (4..=400).
+        Allowed: 4 <= segments <= 400.
+        Default: 39.
+    load : str [Numerics]
+        Load rule: node (the paper's) or hat.
+        ``node``: The paper's scheme: the whole force on the node nearest x (ties go to the higher index)
+        ``hat``: Linear (hat) sharing between the two nodes around x; converges as O(N^-2)
+        Default: hat.
+    dt : float, s [Numerics]
+        Time step, s (must be below the stability limit).
+        Allowed: 0 < dt, below the stability limit of the beam.
+        Default: auto (the converged automatic step).
+        Used only with frame = beam and solver = fd.
+    solver : str [Numerics]
+        Solver: fd (explicit time stepping, the reference) or modal (modal superposition).
+        ``fd``: Explicit finite differences in time (velocity Verlet), the reference
+        ``modal``: Modal superposition with exact modal propagation and a contact-sized step
+        Default: fd.
+        Used only with frame = beam.
+    frame : str [Racket]
+        Frame model: beam (the paper's flexible beam) or rigid (closed-form rigid racket).
+        ``beam``: The paper's flexible beam
+        ``rigid``: The textbook rigid racket (effective mass at the impact point, plus twist), in closed form
+        Default: beam.
+    grip : str [Racket]
+        Grip: free (the paper's) or hand (springs and dampers over the grip length).
+        ``free``: The paper's freely suspended racket
+        ``hand``: A hand: springs and dampers spread over the grip length from the butt
+        Default: free.
+    strings : str [Strings]
+        String law: linear (the paper's) or stiffening.
+        ``linear``: The paper's constant `k_s`
+        ``stiffening``: `F = k_s Y_s (1 + s (Y_s / d)^2)`: the secant stiffness grows by the fraction `s` at the deflection `d` (the paper quotes about 10 % for large deflections)
+        Default: linear.
+    string_stiffening : float [Strings]
+        Stiffening fraction s at the stiffening deflection (0 ..= 10).
+        Allowed: 0 <= string_stiffening <= 10.
+        Default: 0.1.
+        Used only with strings = stiffening.
+    stiffening_deflection : float, m [Strings]
+        Deflection at which the strings are stiffer by s, m (1e-4 ..= 1).
+        Allowed: 0.0001 <= stiffening_deflection <= 1 m.
+        Default: 0.04 m.
+        Used only with strings = stiffening.
+    hand_stiffness : float, N/m [Racket]
+        Total hand stiffness, N/m (0 ..= 1e7).
+        Allowed: 0 <= hand_stiffness <= 1e7 N/m.
+        Default: 5000 N/m.
+        Used only with grip = hand.
+    hand_damping : float, N s/m [Racket]
+        Total hand damping, N s/m (0 ..= 1e4).
+        Allowed: 0 <= hand_damping <= 10000 N s/m.
+        Default: 10 N s/m.
+        Used only with grip = hand.
+    grip_length : float, m [Racket]
+        Grip length from the butt, m (up to half the racket).
+        Allowed: 1e-3 <= grip_length <= length / 2.
+        Default: 0.15 m.
+        Used only with grip = hand.
+    angle_deg : float, deg [Oblique impact]
+        Incidence angle from the string-plane normal, degrees (0 ..= 85).
+        Allowed: 0 <= angle_deg <= 85 deg.
+        Usual: 0 .. 80 deg (outside: a warning).
+        Default: 0 deg.
+    azimuth_deg : float, deg [Oblique impact]
+        In-plane direction of the incoming ball, degrees from the long axis towards the handle; 90 = across the face to +r (-360 ..= 360).
+        Allowed: -360 <= azimuth_deg <= 360 deg.
+        Default: 0 deg.
+        Used only for an oblique or spinning ball.
+    spin_rpm : float, rpm [Oblique impact]
+        Incoming spin, rpm; > 0 topspin relative to the ball's motion along the strings (-2e4 ..= 2e4).
+        Allowed: -20000 <= spin_rpm <= 20000 rpm.
+        Usual: -6000 .. 6000 rpm (outside: a warning).
+        Default: 0 rpm.
+    mu : float [Oblique impact]
+        Friction coefficient of ball on strings (0 ..= 2).
+        Allowed: 0 <= mu <= 2.
+        Usual: 0 .. 1 (outside: a warning).
+        Default: 0.4.
+        Used only for an oblique or spinning ball.
+    mu_scale : float [Oblique impact]
+        Ratio of the ball's sliding friction on the strings during an impact to the coefficient in use (mu, or the string's TWU database COF) (0.05 ..= 3).
+        Allowed: 0.05 <= mu_scale <= 3.
+        Usual: 0.3 .. 1.5 (outside: a warning).
+        Default: 1.
+        Used only for an oblique or spinning ball.
+    kt : float, N/m [Oblique impact]
+        Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
+        Allowed: 1 <= kt <= 1e9 N/m.
+        Usual: 5000 .. 1e6 N/m (outside: a warning).
+        Default: 118000 N/m.
+        Used only for an oblique or spinning ball.
+    tangential : str [Oblique impact]
+        Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism).
+        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
+        ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)
+        ``offset``: Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin
+        ``bed``: Elastic plus strings that slide sideways over each other against string-to-string friction and snap back
+        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)
+        ``physical``: Every mechanism above at once
+        Default: radius.
+        Used only for an oblique or spinning ball.
+    mu_ss : float [Strings]
+        String-to-string friction coefficient (0 ..= 2).
+        Allowed: 0 <= mu_ss <= 2.
+        Usual: 0 .. 0.5 (outside: a warning).
+        Default: 0.08.
+        Used only for an oblique or spinning ball, with tangential = bed or physical.
+    string : str [Strings]
+        The string, from data/strings: sets mu and mu-ss (its TWU database values).
+        ``none``: No string named: mu and mu-ss as given (the default)
+        ``tonic-gut-16``: Babolat Tonic Gut 16 (gut; no friction row of its own: the TWU gut median)
+        ``alu-power-16``: Luxilon ALU Power 16 (polyester)
+        ``alu-rough-16``: Luxilon ALU Rough 16 (polyester)
+        ``original-16``: Luxilon Original 16 (polyester)
+        ``tcs-16``: Polyfibre TCS 16 (polyester)
+        ``nrg2-16``: Tecnifibre NRG2 16 (nylon)
+        ``nxt-16``: Wilson NXT 16 (nylon)
+        Default: none.
+        Used only for an oblique or spinning ball.
+    ball_radius : float, m [Ball]
+        Ball radius, m (1e-3 ..= 1).
+        Allowed: 0.001 <= ball_radius <= 1 m.
+        Usual: 0.015 .. 0.05 m (outside: a warning).
+        Default: 0.033 m.
+        Used only for an oblique or spinning ball.
+    ball_inertia_factor : float [Ball]
+        Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55).
+        Allowed: 0.1 <= ball_inertia_factor <= 2/3.
+        Usual: 0.4 .. 0.67 (outside: a warning).
+        Default: 0.55.
+        Used only for an oblique or spinning ball.
+    ball_ex : float [Ball]
+        The ball's tangential restitution in a gripping bounce e_x (0.01 ..= 0.99).
+        Allowed: 0.01 <= ball_ex <= 0.99.
+        Usual: 0.05 .. 0.5 (outside: a warning).
+        Default: 0.135.
+        Used only for an oblique or spinning ball, with tangential = loss or physical.
+        Declared uncertainty: uniform:0.1:0.17 (nominal 0.135).
+    ball_kdyn : float, N/m [Ball]
+        The ball's dynamic compression stiffness for the contact geometry, N/m (1e3 ..= 1e9).
+        Allowed: 1000 <= ball_kdyn <= 1e9 N/m.
+        Usual: 10000 .. 300000 N/m (outside: a warning).
+        Default: 78905.1 N/m.
+        Used only for an oblique or spinning ball, with tangential = offset, radius or physical.
+        Declared uncertainty: uniform:57971.1:113623 (nominal 78905.1).
+    """
+
 def presets(segments: int = 39) -> pd.DataFrame | dict[str, np.ndarray]:
     """
     The built-in racket presets fitted to the model (``racket --list``): name, length,

@@ -66,7 +66,7 @@ _RACKET = "    *,\n    racket: str | os.PathLike[str] | Racket | None = None,\n 
 
 def _impact() -> str:
     lines = ["class Impact:", _doc(ri.Impact.__doc__, "    ")]
-    for f in ri._FIELDS:
+    for f in ri._args._FIELDS:
         unit = f" [{f['unit']}]" if f["unit"] else ""
         where = " (oblique or spinning ball only)" if f["oblique"] else ""
         kind = _FIELD[f["kind"]] + (" | None" if f["oblique"] else "")
@@ -187,6 +187,8 @@ def stub() -> str:
         )
     )
     parts.append(_function(ri.modes, _RACKET, "Modes", _TYPES))
+    own = "    measurements: str | os.PathLike[str] | None = None,\n" + _RACKET
+    parts.append(_function(ri.calibrate, own, "dict[str, Any]", _TYPES))
     parts += [f"def presets(segments: int = 39) -> {table}:", _doc(ri.presets.__doc__, "    "), ""]
     parts.append(
         _class(

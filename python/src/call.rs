@@ -253,6 +253,16 @@ pub(crate) fn call(py: Python<'_>, args: &Bound<'_, PyTuple>) -> PyResult<Py<PyA
             let done = drive(py, reporter, move |ctl| execute(Modes::new(&sources, &given)?, ctl))?;
             Ok(json_text(&done.json().map_err(fail)?)?.into_pyobject(py)?.into_any().unbind())
         }
+        "calibrate" => {
+            use racket_impact::command::calibrate::Calibrate;
+            use racket_impact::study::calibrate::write;
+            let sources = sources(args, 3, (racket, config), "calibrate")?;
+            let done = drive(py, reporter, move |ctl| execute(Calibrate::new(&sources, &given)?, ctl))?;
+            let doc = json_text(&write::json(&done.outcome, &done.source, done.weights))?;
+            let diagnostics =
+                serde_json::to_string(&done.diagnostics).map_err(|e| PyValueError::new_err(e.to_string()))?;
+            Ok((doc, diagnostics).into_pyobject(py)?.into_any().unbind())
+        }
         "card" => {
             let sources = sources(args, 3, (racket, config), "card")?;
             let card = drive(py, reporter, move |ctl| {

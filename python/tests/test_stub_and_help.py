@@ -70,7 +70,8 @@ def test_a_new_declaration_row_reaches_every_python_name(monkeypatch):
         column="made_up_n_per_m",
         help="A made-up stiffness, N/m (1 ..= 1e12)",
     )
-    monkeypatch.setattr(ri, "_PARAMS", ri._PARAMS + [row])
+    # (the tables live in racket_impact._args, where every name reads them)
+    monkeypatch.setattr(ri._args, "_PARAMS", ri._PARAMS + [row])
     for spelling in ("made_up", "made-up", "made_up_n_per_m"):
         assert ri._param(spelling, "simulate")["key"] == "made-up"
     assert ri._pairs({"made_up": 3e4}, "simulate") == [("made-up", "30000.0")]

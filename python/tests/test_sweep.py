@@ -87,7 +87,7 @@ def test_dataframe_round_trip():
 
 def test_without_pandas_a_dict_of_numpy_arrays(monkeypatch):
     frame = ri.sweep(x=[0.1, 0.2], ks=3e4)
-    monkeypatch.setattr(ri, "_pandas", lambda: None)
+    monkeypatch.setattr(ri._tables, "_pandas", lambda: None)  # (where the tables are made)
     d = ri.sweep(x=[0.1, 0.2], ks=3e4)
     assert isinstance(d, dict) and list(d) == list(frame.columns)
     assert all((d[c] == frame[c].to_numpy()).all() for c in d)

@@ -6,7 +6,6 @@ use std::path::PathBuf;
 use clap::{Args, ValueEnum};
 use racket_impact::diagnostic::Diagnostic;
 use racket_impact::intake::Sources;
-use racket_impact::params::Params;
 use racket_impact::{Error, Result};
 
 use super::overrides::{KeySet, OverrideArgs};
@@ -163,20 +162,6 @@ impl<K: KeySet> Common<K> {
             set_by_options: Vec::new(),
         }
     }
-
-    /// Refuse a parameter flag for an option none of `params` can honour; return the notes
-    /// about flags of properties they do not exercise and config-file keys the command does not
-    /// use ([`Sources::check_used`]), to be printed with the run's other diagnostics.
-    pub fn check_used<'a>(&self, params: impl IntoIterator<Item = &'a Params>) -> Result<Vec<Diagnostic>> {
-        check_used(&self.sources(), params)
-    }
-}
-
-/// [`Common::check_used`] for the parameters of `sources` (a command's own, where its options
-/// set some parameters: [`Sources::set_by_options`]).
-pub fn check_used<'a>(sources: &Sources, params: impl IntoIterator<Item = &'a Params>) -> Result<Vec<Diagnostic>> {
-    let params: Vec<Params> = params.into_iter().copied().collect();
-    sources.check_used(&params)
 }
 
 /// A progress bar (or spinner) on stderr for long runs: drawn only on a terminal, without

@@ -39,6 +39,8 @@ declared! {
     SpeedOptions = command::speed::OPTIONS;
     /// `modes`'s options.
     ModesOptions = command::modes::OPTIONS;
+    /// `calibrate`'s options.
+    CalibrateOptions = command::calibrate::OPTIONS;
 }
 
 /// The options of a command, as given on its command line.

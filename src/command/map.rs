@@ -111,7 +111,7 @@ impl Request for Map {
 
     fn work(&self, threads: usize) -> Option<Work> {
         Some(Work {
-            estimate: MapRequest::estimate(&self.configs, self.total, threads),
+            estimate: MapRequest::estimate(&self.configs, self.request.nx, self.request.nr, self.total, threads),
             asked: format!("a {} x {} grid ({} impacts)", self.request.nx, self.request.nr, self.total),
             fewer: "a coarser grid (--nx, --nr)",
             long: self.long,

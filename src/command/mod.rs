@@ -9,6 +9,7 @@
 //! inputs, its options declared once ([`Request::OPTIONS`], from which the command line makes
 //! its flags and Python its keywords) and a line in [`ALL`].
 
+pub mod calibrate;
 pub mod card;
 pub mod map;
 pub mod modes;
@@ -118,6 +119,7 @@ pub const ALL: &[Described] = &[
     Described { name: uncertainty::NAME, options: uncertainty::OPTIONS, not_taken: every },
     Described { name: speed::NAME, options: speed::OPTIONS, not_taken: crate::study::speed::set_by_speed },
     Described { name: modes::NAME, options: modes::OPTIONS, not_taken: modes::not_taken },
+    Described { name: calibrate::NAME, options: calibrate::OPTIONS, not_taken: every },
     Described { name: card::NAME, options: card::OPTIONS, not_taken: crate::study::card::set_by_card },
 ];
 

@@ -201,12 +201,33 @@ impl MapRequest {
     }
 
     /// The work of the map, estimated before it runs ([`crate::study::work`]): its `total`
-    /// impacts shared evenly among `configs`, each costed at the configuration's impact with the
-    /// solver the map runs ([`super::compute::with_map_solver`]; the cost hardly moves over the face).
-    pub fn estimate(configs: &[(String, Params)], total: usize, threads: usize) -> crate::study::work::Estimate {
-        let config_of = |i: u64| configs.get(i as usize * configs.len() / total.max(1));
+    /// impacts shared evenly among `configs`, each sampled impact costed at its own point of the
+    /// configuration's `nx` x `nr` grid with the solver the map runs
+    /// ([`super::compute::with_map_solver`]: the step, and with it the cost, moves over the face).
+    pub fn estimate(
+        configs: &[(String, Params)],
+        nx: usize,
+        nr: usize,
+        total: usize,
+        threads: usize,
+    ) -> crate::study::work::Estimate {
+        use super::face::{Face, Grid};
+        let faces: Vec<(Params, Grid, Vec<usize>)> = configs
+            .iter()
+            .filter_map(|(_, p)| {
+                let face = Face::of(&p.racket);
+                let grid = Grid::new(face.length, face.half_width, nx, nr).ok()?;
+                let points = grid.inside(&[face]);
+                Some((*p, grid, points))
+            })
+            .collect();
         crate::study::work::Estimate::of(total as u64, threads, |i| {
-            config_of(i).map(|(_, p)| super::compute::with_map_solver(p))
+            // (the configuration of impact i, and its place among that configuration's points)
+            let at = i as f64 / total.max(1) as f64 * faces.len() as f64;
+            let (p, grid, points) = faces.get(at as usize)?;
+            let k = *points.get(((at.fract() * points.len() as f64) as usize).min(points.len().max(1) - 1))?;
+            let (x, r) = grid.point(k);
+            Some(super::compute::with_map_solver(&super::compute::params_at(p, x, r)))
         })
     }
 
