@@ -92,9 +92,16 @@ fn a_parameter_no_row_depends_on_is_said_to_be_not_identifiable() {
         "id,quantity,value,unit,ball_speed_m_s,angle_deg,spin_in_rpm,support\n\
          S1,spin_out_rpm,500,rpm,20,80,0,free\nS2,spin_out_rpm,600,rpm,25,80,0,free\n",
     );
-    let v = json(&["calibrate", &csv, "--fit", "kt", "--format", "json"]);
+    // under radius (the ball's lever shrinks with the normal force) kt moves the spin a little
+    let v = json(&["calibrate", &csv, "--fit", "kt", "--tangential", "radius", "--format", "json"]);
     assert_eq!(v["params"][0]["identifiable"], "unbounded", "{}", v["params"][0]);
     assert_eq!(v["params"][0]["interval_open"], serde_json::json!([true, true]));
+    let text = String::from_utf8(bin(&["calibrate", &csv, "--fit", "kt", "--tangential", "radius"]).stdout).unwrap();
+    assert!(text.contains("not identifiable"), "{text}");
+    // under the elastic law (the default) a ball sliding throughout never loads its spring: kt
+    // plays no part at all
+    let v = json(&["calibrate", &csv, "--fit", "kt", "--tangential", "elastic", "--format", "json"]);
+    assert_eq!(v["params"][0]["identifiable"], "unused", "{}", v["params"][0]);
     let text = String::from_utf8(bin(&["calibrate", &csv, "--fit", "kt"]).stdout).unwrap();
     assert!(text.contains("not identifiable"), "{text}");
 }
@@ -173,4 +180,64 @@ fn the_defaults_are_the_calibration_s_choice() {
     let (lo, hi): (f64, f64) = (r[at("kt_lo_n_per_m")].parse().unwrap(), r[at("kt_hi_n_per_m")].parse().unwrap());
     assert!((defaults.kt / kt - 1.0).abs() < 5e-3, "default kt {} against the fit {kt}", defaults.kt);
     assert!(lo <= defaults.kt && defaults.kt <= hi, "[{lo}, {hi}]");
+}
+
+/// The committed choice follows the rule of `study::choice` (SPEC.md section 7): at each
+/// reading of the angle one candidate is chosen; it is tied with the best (rank 1); no candidate
+/// tied with the best is cheaper (fewer fitted parameters, then fewer mechanisms); every
+/// interval holds its score; a candidate is tied exactly where its interval overlaps the best's.
+#[test]
+fn the_committed_choice_follows_the_rule() {
+    use racket_impact::params::TangentialLaw;
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/figures/spin_calibration.csv");
+    let mut rdr = csv::Reader::from_path(path).unwrap();
+    let headers = rdr.headers().unwrap().clone();
+    let at = |name: &str| headers.iter().position(|h| h == name).unwrap();
+    let rows: Vec<csv::StringRecord> = rdr.records().map(|r| r.unwrap()).collect();
+    let num = |r: &csv::StringRecord, c: &str| r[at(c)].parse::<f64>().unwrap();
+    let cost = |r: &csv::StringRecord| {
+        let law = TangentialLaw::ALL.into_iter().find(|l| l.name() == &r[at("law")]).unwrap();
+        (r[at("fitted")].split(" + ").count(), TangentialLaw::MECHANISMS.iter().filter(|&&m| law.has(m)).count())
+    };
+    for angle in ["40", "50"] {
+        let here: Vec<&csv::StringRecord> = rows.iter().filter(|r| &r[at("angle_deg")] == angle).collect();
+        let best: Vec<_> = here.iter().filter(|r| &r[at("rank")] == "1").collect();
+        let chosen: Vec<_> = here.iter().filter(|r| &r[at("chosen")] == "1").collect();
+        assert_eq!((best.len(), chosen.len()), (1, 1), "at {angle} deg");
+        let (best, chosen) = (best[0], chosen[0]);
+        assert_eq!(&chosen[at("tie")], "1");
+        for r in &here {
+            let (lo, hi, score) = (num(r, "rms_held_out_lo"), num(r, "rms_held_out_hi"), num(r, "rms_held_out"));
+            assert!(lo <= score && score <= hi, "{lo} {score} {hi}");
+            assert!(score >= num(best, "rms_held_out"));
+            let overlaps = lo <= num(best, "rms_held_out_hi") && num(best, "rms_held_out_lo") <= hi;
+            assert_eq!(&r[at("tie")] == "1", overlaps, "{} {} at {angle}", &r[at("law")], &r[at("fitted")]);
+            if overlaps {
+                assert!(cost(r) >= cost(chosen), "{} {} is cheaper than the choice", &r[at("law")], &r[at("fitted")]);
+            }
+        }
+    }
+}
+
+/// `--fit` of a key the rows set themselves is refused with the rows named (it would overwrite
+/// each row's own value: `--fit ks` gave M001 at 52 lb and M002 at 62 lb the same spin): the
+/// tension (ks), the shot (v1, angle, spin), and on a clamped row the frame (mass, ix, ei).
+#[test]
+fn a_key_the_rows_set_themselves_is_refused_with_the_rows_named() {
+    for (key, column) in [
+        ("ks", "string_tension_lb"),
+        ("v1", "ball_speed_m_s"),
+        ("angle-deg", "angle_deg"),
+        ("spin-rpm", "spin_in_rpm"),
+        ("mass", "support"),
+        ("ei", "support"),
+    ] {
+        let out = bin(&["calibrate", "--fit", key, "--hold-out", "none"]);
+        assert_eq!(out.status.code(), Some(2), "{key}");
+        assert!(out.stdout.is_empty(), "{key}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains("rows M001 M002 M003 M004 M011 M012") && err.contains(column), "{key}: {err}");
+        assert!(err.contains("overwrite each row's own"), "{err}");
+    }
 }

@@ -487,17 +487,17 @@ def simulate(
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
         Usual: 5000 .. 1e6 N/m (outside: a warning).
-        Default: 118000 N/m.
+        Default: 500000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]
         Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism).
-        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
+        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law; the default, chosen on the calibration rows)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)
         ``offset``: Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin
         ``bed``: Elastic plus strings that slide sideways over each other against string-to-string friction and snap back
-        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)
+        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)
         ``physical``: Every mechanism above at once
-        Default: radius.
+        Default: elastic.
         Used only for an oblique or spinning ball.
     mu_ss : float [Strings]
         String-to-string friction coefficient (0 ..= 2).
@@ -892,17 +892,17 @@ def sweep(
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
         Usual: 5000 .. 1e6 N/m (outside: a warning).
-        Default: 118000 N/m.
+        Default: 500000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]
         Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism).
-        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
+        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law; the default, chosen on the calibration rows)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)
         ``offset``: Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin
         ``bed``: Elastic plus strings that slide sideways over each other against string-to-string friction and snap back
-        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)
+        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)
         ``physical``: Every mechanism above at once
-        Default: radius.
+        Default: elastic.
         Used only for an oblique or spinning ball.
     mu_ss : float [Strings]
         String-to-string friction coefficient (0 ..= 2).
@@ -1194,17 +1194,17 @@ def face_map(
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
         Usual: 5000 .. 1e6 N/m (outside: a warning).
-        Default: 118000 N/m.
+        Default: 500000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]
         Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism).
-        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
+        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law; the default, chosen on the calibration rows)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)
         ``offset``: Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin
         ``bed``: Elastic plus strings that slide sideways over each other against string-to-string friction and snap back
-        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)
+        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)
         ``physical``: Every mechanism above at once
-        Default: radius.
+        Default: elastic.
         Used only for an oblique or spinning ball.
     mu_ss : float [Strings]
         String-to-string friction coefficient (0 ..= 2).
@@ -1500,17 +1500,17 @@ def card(
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
         Usual: 5000 .. 1e6 N/m (outside: a warning).
-        Default: 118000 N/m.
+        Default: 500000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]
         Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism).
-        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
+        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law; the default, chosen on the calibration rows)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)
         ``offset``: Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin
         ``bed``: Elastic plus strings that slide sideways over each other against string-to-string friction and snap back
-        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)
+        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)
         ``physical``: Every mechanism above at once
-        Default: radius.
+        Default: elastic.
         Used only for an oblique or spinning ball.
     mu_ss : float [Strings]
         String-to-string friction coefficient (0 ..= 2).
@@ -1833,17 +1833,17 @@ def uncertainty(
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
         Usual: 5000 .. 1e6 N/m (outside: a warning).
-        Default: 118000 N/m.
+        Default: 500000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]
         Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism).
-        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
+        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law; the default, chosen on the calibration rows)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)
         ``offset``: Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin
         ``bed``: Elastic plus strings that slide sideways over each other against string-to-string friction and snap back
-        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)
+        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)
         ``physical``: Every mechanism above at once
-        Default: radius.
+        Default: elastic.
         Used only for an oblique or spinning ball.
     mu_ss : float [Strings]
         String-to-string friction coefficient (0 ..= 2).
@@ -2119,17 +2119,17 @@ def speed(
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
         Usual: 5000 .. 1e6 N/m (outside: a warning).
-        Default: 118000 N/m.
+        Default: 500000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]
         Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism).
-        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
+        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law; the default, chosen on the calibration rows)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)
         ``offset``: Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin
         ``bed``: Elastic plus strings that slide sideways over each other against string-to-string friction and snap back
-        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)
+        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)
         ``physical``: Every mechanism above at once
-        Default: radius.
+        Default: elastic.
         Used only for an oblique or spinning ball.
     mu_ss : float [Strings]
         String-to-string friction coefficient (0 ..= 2).
@@ -2493,17 +2493,17 @@ def calibrate(
         Tangential stiffness of ball and string bed in series, N/m (1 ..= 1e9).
         Allowed: 1 <= kt <= 1e9 N/m.
         Usual: 5000 .. 1e6 N/m (outside: a warning).
-        Default: 118000 N/m.
+        Default: 500000 N/m.
         Used only for an oblique or spinning ball.
     tangential : str [Oblique impact]
         Tangential contact law: the elastic law, one mechanism on top of it, or physical (every mechanism).
-        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)
+        ``elastic``: The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law; the default, chosen on the calibration rows)
         ``loss``: Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)
         ``offset``: Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin
         ``bed``: Elastic plus strings that slide sideways over each other against string-to-string friction and snap back
-        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)
+        ``radius``: Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)
         ``physical``: Every mechanism above at once
-        Default: radius.
+        Default: elastic.
         Used only for an oblique or spinning ball.
     mu_ss : float [Strings]
         String-to-string friction coefficient (0 ..= 2).

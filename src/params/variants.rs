@@ -40,7 +40,7 @@ macro_rules! tangential_mechanisms {
             Loss = loss: "Elastic plus a damper on the ball's tangential spring (the measured tangential restitution ball-ex)",
             Offset = offset: "Elastic plus the normal force acting ahead of the ball's centre (Tabor's rolling-hysteresis arm), a torque against the spin",
             Bed = bed: "Elastic plus strings that slide sideways over each other against string-to-string friction and snap back",
-            Radius = radius: "Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn; the default, chosen on the calibration rows)",
+            Radius = radius: "Elastic plus the friction acting at R minus the ball's compression (its dynamic stiffness ball-kdyn)",
         }
     };
 }
@@ -53,11 +53,13 @@ macro_rules! tangential_law {
         choice_enum! {
             /// The tangential contact law of an oblique or spinning impact (SPEC.md section 6): the
             /// elastic grip-slip law, one mechanism of [`crate::model::tangential`] on top of it, or all of them.
-            /// Default `radius`: of every law fitted on the calibration rows of data/measured (with
-            /// `kt`, and with `kt` and `mu-scale`), the one with the least leave-one-string-out error
-            /// (experiment `spin_calibration`; REPORT.md, "Calibrated where nobody measured").
-            TangentialLaw (default Radius) {
-                Elastic = "elastic": "The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law)",
+            /// Default `elastic`: of every law fitted on the calibration rows of data/measured (with
+            /// `kt`, and with `kt` and `mu-scale`), the one the rule of `study::choice` chooses: tied
+            /// with the least leave-one-string-out error (overlapping 90 % bootstrap intervals over the
+            /// calibration strings), and the cheapest of the tied (experiment `spin_calibration`;
+            /// REPORT.md, "Calibrated where nobody measured").
+            TangentialLaw (default Elastic) {
+                Elastic = "elastic": "The elastic grip-slip law alone (a lossless tangential spring on a laterally rigid bed; the paper-style law; the default, chosen on the calibration rows)",
                 $($variant = (stringify!($name)): $help,)+
                 Physical = "physical": "Every mechanism above at once",
             }
