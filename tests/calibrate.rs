@@ -218,3 +218,26 @@ fn the_committed_choice_follows_the_rule() {
         }
     }
 }
+
+/// `--fit` of a key the rows set themselves is refused with the rows named (it would overwrite
+/// each row's own value: `--fit ks` gave M001 at 52 lb and M002 at 62 lb the same spin): the
+/// tension (ks), the shot (v1, angle, spin), and on a clamped row the frame (mass, ix, ei).
+#[test]
+fn a_key_the_rows_set_themselves_is_refused_with_the_rows_named() {
+    for (key, column) in [
+        ("ks", "string_tension_lb"),
+        ("v1", "ball_speed_m_s"),
+        ("angle-deg", "angle_deg"),
+        ("spin-rpm", "spin_in_rpm"),
+        ("mass", "support"),
+        ("ei", "support"),
+    ] {
+        let out = bin(&["calibrate", "--fit", key, "--hold-out", "none"]);
+        assert_eq!(out.status.code(), Some(2), "{key}");
+        assert!(out.stdout.is_empty(), "{key}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains("rows M001 M002 M003 M004 M011 M012") && err.contains(column), "{key}: {err}");
+        assert!(err.contains("overwrite each row's own"), "{err}");
+    }
+}

@@ -306,6 +306,33 @@ impl Problem {
                     format!("no fitted row uses it: {} is {}", spec.key, unused.why),
                 ));
             }
+            // a key the rows set themselves: a fitted value would overwrite each row's own (a
+            // named string's friction has its own message below)
+            let own: Vec<(&str, &str)> = rows
+                .fitted
+                .iter()
+                .filter_map(|c| {
+                    shot::sets(&c.row, p.spec.key).filter(|&col| col != "string").map(|col| (c.row.id.as_str(), col))
+                })
+                .collect();
+            if let Some(&(_, column)) = own.first() {
+                let ids: Vec<&str> = own.iter().map(|(id, _)| *id).collect();
+                return Err(Error::invalid(
+                    "fit",
+                    p.spec.key,
+                    format!(
+                        "rows {} set {} themselves (column {column}{}): a fitted value would overwrite each row's own; \
+                         fit a constant the rows leave open",
+                        if ids.len() > 8 {
+                            format!("{} and {} more", ids[..8].join(" "), ids.len() - 8)
+                        } else {
+                            ids.join(" ")
+                        },
+                        p.spec.key,
+                        if column == "support" { ": a clamped racket" } else { "" },
+                    ),
+                ));
+            }
             for c in &rows.fitted {
                 if let Some(id) = crate::params::strings::sets(c.params.oblique.string, p.spec.key) {
                     return Err(Error::invalid(

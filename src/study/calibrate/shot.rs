@@ -40,11 +40,14 @@ pub fn sets(row: &Measured, key: &str) -> Option<&'static str> {
     let clamped = matches!(row.support.trim(), "clamped" | "clamped_head");
     let named = !row.string.trim().is_empty();
     match key {
+        "v1" => Some("ball_speed_m_s"),
+        "angle-deg" => Some("angle_deg"),
+        "spin-rpm" => Some("spin_in_rpm"),
         "ks" if row.tension_lb.is_some() => Some("string_tension_lb"),
         "x" if row.impact_x_from_tip_m.is_some() => Some("impact_x_from_tip_m"),
         "r" if row.impact_r_m.is_some() => Some("impact_r_m"),
         "string" | "mu" | "mu-ss" if named => Some("string"),
-        "mass" | "ix" if clamped => Some("support"),
+        "mass" | "ix" | "ei" if clamped => Some("support"),
         _ => None,
     }
 }
