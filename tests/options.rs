@@ -667,9 +667,12 @@ fn help_lists_exactly_the_options_each_command_takes() {
         let o = bin().args([command.as_str(), "--help"]).output().unwrap();
         assert!(o.status.success());
         let help = String::from_utf8_lossy(&o.stdout).into_owned();
-        // the option lines of clap's help: indented, starting with -x, or --name
+        // the option lines of clap's help: indented by 2 (`-h, --help`) or 6 (`--name`), starting
+        // with -x, or --name (wrapped prose, at 0, or an option's description, at 10, may open
+        // with a flag's name too)
         let listed: std::collections::BTreeSet<String> = help
             .lines()
+            .filter(|l| [2, 6].contains(&(l.len() - l.trim_start().len())))
             .map(str::trim_start)
             .filter(|l| l.starts_with('-'))
             .filter_map(|l| l.split([' ', ',']).find(|w| w.starts_with("--")).map(|w| w[2..].to_string()))

@@ -465,6 +465,44 @@ fn help_names_a_first_command_and_groups_options() {
     }
 }
 
+/// Every command's long help opens with its examples (before the usage line and the options:
+/// `calibrate --help` had its one example at the end of a 1,316-character line) and reads at 100
+/// columns: no line wider where the width is not a terminal's (`uncertainty --help` ran 216 lines
+/// with lines of 500), nor on a terminal wider (`COLUMNS=200`); a narrower one is followed.
+#[test]
+fn every_help_opens_with_examples_and_reads_at_100_columns() {
+    // the commands as the top-level help lists them
+    let top = stdout(&bin().arg("--help").output().unwrap());
+    let commands: Vec<String> = top
+        .lines()
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        .filter(|l| l.starts_with("  ") && !l.starts_with("   "))
+        .filter_map(|l| l.split_whitespace().next().map(String::from))
+        .filter(|c| c != "help")
+        .collect();
+    assert!(commands.len() >= 11, "{commands:?}");
+    // (the usage line is clap's, never wrapped: about 70 characters at most)
+    let widest =
+        |text: &str| text.lines().filter(|l| !l.starts_with("Usage:")).map(|l| l.chars().count()).max().unwrap_or(0);
+    for command in &commands {
+        let help = stdout(&bin().args([command.as_str(), "--help"]).output().unwrap());
+        let usage = help.find("\nUsage:").unwrap_or_else(|| panic!("{command} --help has no usage"));
+        let example = help
+            .find(&format!("\n  racket-impact {command}"))
+            .or_else(|| help.find(&format!("Example: racket-impact {command}")));
+        assert!(example.is_some_and(|e| e < usage), "{command} --help does not open with an example:\n{help}");
+        assert!(widest(&help) <= 100, "{command} --help has a line of {} characters", widest(&help));
+        for columns in ["200", "60"] {
+            let o = bin().args([command.as_str(), "--help"]).env("COLUMNS", columns).output().unwrap();
+            let most = columns.parse::<usize>().unwrap().min(100);
+            assert!(widest(&stdout(&o)) <= most, "{command} --help at COLUMNS={columns}: {}", widest(&stdout(&o)));
+        }
+    }
+    assert!(widest(&stdout(&bin().arg("--help").output().unwrap())) <= 100);
+}
+
 #[test]
 fn suggestions_name_the_real_flag_or_nothing() {
     let s = Scratch::new("traps");

@@ -55,8 +55,13 @@ def test_every_parameter_is_a_keyword_with_its_unit_range_and_default_in_the_hel
         assert (f"Used only {p['used_when']}." in body) == (p["used_when"] != "always"), p["name"]
         for c in p["choices"]:
             assert f"``{c['name']}``" in body
-    # the keywords are the command line's parameter flags
-    shown = {line.split()[0][2:] for line in cli("simulate", "--help").stdout.splitlines() if line.strip().startswith("--")}
+    # the keywords are the command line's parameter flags (a flag's line is indented by 6; the
+    # help is wrapped, and a description's line, indented by 10, may open with a flag's name)
+    shown = {
+        line.split()[0][2:]
+        for line in cli("simulate", "--help").stdout.splitlines()
+        if line.startswith("      --") and not line.startswith("       ")
+    }
     assert {p["key"] for p in ri.parameters()} == shown - OWN_FLAGS
 
 

@@ -31,32 +31,40 @@ pub struct CalibrateArgs {
     pub common: Common<CalibrateKeys>,
 }
 
-/// The long help: what is computed and the parameters that can be fitted.
+/// The long help: its examples, then what is computed.
 pub fn long_about() -> String {
+    super::examples(
+        "Fit parameters with a declared range to measured rows: intervals, correlation, held-out error",
+        &[
+            "racket-impact calibrate --fit kt --hold-out string --plot kt.png",
+            "racket-impact calibrate my-lab.csv --fit kt,mu-scale --weights uncertainty --format json",
+            "racket-impact calibrate --fit kt --rows M001-M014 --out fit.txt",
+        ],
+    ) + "\n\n\
+         Each row of the measurements (data/measured's schema; a lab's own CSV as well) is one impact: its ball \
+         speed, angle from the normal, incoming spin, tension, string (data/strings) and support (clamped, free, \
+         hand_held) on the parameters the flags, --config and --racket give, its quantity a result field \
+         (spin_out_rpm, rebound_angle_deg, e_a, ...). The rows with role = calibration are fitted (every row of a \
+         CSV without a role column); those with role = validation are predicted and judged, never fitted.\n\n\
+         The fit searches each --fit parameter within its declared range (its usual range, else its valid range; \
+         logarithmic over a decade or more; the list is at the end): a grid, then Brent (one parameter) or \
+         Nelder-Mead. Then each parameter's 95 % profile-likelihood interval (the residual scale estimated from \
+         the fit), whether the rows bound it, the correlation from the Jacobian, and each group (--hold-out \
+         string: the rows of one string; row: one row) refitted without and predicted. Runs with the modal solver \
+         unless --solver is given or a hand grip needs fd.\n\n\
+         Refused: a parameter with no declared range, a string's own property (mu, mu-ss of a named string), \
+         fewer rows than parameters, a fitted row whose shot the model cannot run (a ratio, a threshold, an \
+         unknown string or support), a missing column or a value that is not a number."
+}
+
+/// The end of the long help: the parameters that can be fitted, with their ranges.
+pub fn fittable_help() -> String {
     let fittable: Vec<String> = calibrate::declared()
         .filter_map(|s| {
             calibrate::declared_range(s).map(|(lo, hi)| format!("{} ({}..{}{})", s.key, lo, hi, unit(s.unit)))
         })
         .collect();
-    format!(
-        "Fit parameters to measured rows: least squares, 95 % intervals, correlation, leave-one-group-out error\n\n\
-         Each row of the measurements (data/measured's schema; a lab's own CSV as well) is one impact: its ball \
-         speed, angle from the normal, incoming spin, tension, string (data/strings) and support (clamped, free, \
-         hand_held) on the parameters the flags, --config and --racket give, its quantity a result field \
-         (spin_out_rpm, rebound_angle_deg, e_a, ...). The rows with role = calibration are fitted (every row of a \
-         CSV without a role column); those with role = validation are predicted and judged, never fitted. The fit \
-         searches each --fit parameter within its declared range (its usual range, else its valid range; \
-         logarithmic over a decade or more): a grid, then Brent (one parameter) or Nelder-Mead. Then each \
-         parameter's 95 % profile-likelihood interval (the residual scale estimated from the fit), whether the \
-         rows bound it, the correlation from the Jacobian, and each group (--hold-out string: the rows of one \
-         string; row: one row) refitted without and predicted. Runs with the modal solver unless --solver is \
-         given or a hand grip needs fd. Refused: a parameter with no declared range, a string's own property \
-         (mu, mu-ss of a named string), fewer rows than parameters, a fitted row whose shot the model cannot run \
-         (a ratio, a threshold, an unknown string or support), a missing column or a value that is not a number.\n\n\
-         Parameters with a declared range: {}\n\n\
-         Example: racket-impact calibrate --fit kt --hold-out string --plot kt.png",
-        fittable.join(", ")
-    )
+    format!("Parameters with a declared range (--fit):\n  {}", fittable.join("\n  "))
 }
 
 fn unit(u: &str) -> String {

@@ -26,6 +26,8 @@ pub mod uncertainty;
 #[command(
     name = "racket-impact",
     version,
+    // help wrapped to the terminal, and to 100 columns at most (or where it is not a terminal)
+    max_term_width = 100,
     about = "Ball on a flexible tennis racket: R. Cross (2000) replicated",
     after_help = "Start here: racket-impact simulate (one ball on the paper's racket at the centre of its strings: e_A, contact time, twist, where the energy went)\n\
                   Examples:\n  \
@@ -46,12 +48,37 @@ pub struct Cli {
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// One impact: e_a, tau, theta, energy partition (defaults: the paper's racket, `--load hat`)
+    #[command(long_about = examples(
+        "One impact: e_a, tau, theta, energy partition (defaults: the paper's racket, `--load hat`)",
+        &[
+            "racket-impact simulate --x 0.10 --r 0.05 --ks 4e4 --load node",
+            "racket-impact simulate --racket tweener --angle-deg 30 --spin-rpm 2000 --format json",
+            "racket-impact simulate --grip hand --series series.csv",
+        ],
+    ))]
     Simulate(simulate::SimulateArgs),
     /// Eigenfrequencies of the free racket and the nodes of its fundamental mode
+    #[command(long_about = examples(
+        "Eigenfrequencies of the free racket and the nodes of its fundamental mode",
+        &["racket-impact modes", "racket-impact modes --racket tweener --count 6 --format json"],
+    ))]
     Modes(modes::ModesArgs),
     /// Regenerate the paper's experiments: a CSV table and a PNG figure each
+    #[command(long_about = examples(
+        "Regenerate the paper's experiments: a CSV table and a PNG figure each",
+        &[
+            "racket-impact figures",
+            "racket-impact figures --list",
+            "racket-impact figures --only fig4_energy --out my-figures",
+            "racket-impact figures --racket tweener",
+        ],
+    ))]
     Figures(figures::FiguresArgs),
     /// The paper's numbers beside ours: writes REPORT.md and prints it
+    #[command(long_about = examples(
+        "The paper's numbers beside ours: writes REPORT.md and prints it",
+        &["racket-impact report --summary", "racket-impact report --no-write"],
+    ))]
     Report(report::ReportArgs),
     /// Fit a racket description (file or preset) to the model and show how well it matches
     ///
@@ -113,10 +140,10 @@ pub enum Command {
     /// map quantities at every point, a deliberate subset of the result fields: simulate --x X
     /// --r R gives all of one point).
     Map(map::MapArgs),
-    /// An impact's result fields under uncertain inputs, or every paper claim under the declared uncertainty
-    #[command(long_about = uncertainty::long_about())]
+    /// An impact's result fields under uncertain inputs, or every paper claim under declared uncertainty
+    #[command(long_about = uncertainty::long_about(), after_long_help = uncertainty::declared_help())]
     Uncertainty(uncertainty::UncertaintyArgs),
-    /// What string tension does to one racket: power, sweet spot, control, comfort and spin, one PNG and one CSV
+    /// What string tension does to one racket: power, sweet spot, control, comfort, spin (a PNG, a CSV)
     ///
     /// Example: racket-impact card --racket tweener --string alu-power-16
     ///
@@ -136,8 +163,14 @@ pub enum Command {
     /// --azimuth-deg, --spin-rpm and --ks are not its flags.
     Card(card::CardArgs),
     /// Fit parameters with a declared range to measured rows: intervals, correlation, held-out error
-    #[command(long_about = calibrate::long_about())]
+    #[command(long_about = calibrate::long_about(), after_long_help = calibrate::fittable_help())]
     Calibrate(calibrate::CalibrateArgs),
+}
+
+/// A command's long help: its one line, then its examples, one a line (a doc comment would join
+/// them into one paragraph).
+pub fn examples(about: &str, lines: &[&str]) -> String {
+    format!("{about}\n\nExamples:\n  {}", lines.join("\n  "))
 }
 
 /// Run one command.

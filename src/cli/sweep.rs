@@ -44,8 +44,7 @@ pub fn long_about() -> String {
          Sweeps use the modal solver (~30x faster, within 2e-5 of fd at normal incidence and 1e-4 for an \
          oblique ball) unless --solver is given or a hand grip or stiffening strings need fd; the last CSV \
          column names the solver.\n\n\
-         Keys, with the default of a key not given (see `simulate --help`; a racket's own values with \
-         --racket):\n  {}",
+         Keys, each with its default (see `simulate --help`; with --racket, the racket's):\n  {}",
         keys_with_defaults()
     )
 }

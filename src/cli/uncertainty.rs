@@ -26,8 +26,33 @@ pub struct UncertaintyArgs {
     pub out: Option<PathBuf>,
 }
 
-/// The long help: what is computed and the declared uncertainties `--claims` uses.
+/// The long help: its examples, then what is computed.
 pub fn long_about() -> String {
+    super::examples(
+        "An impact's result fields under uncertain inputs, or every paper claim under declared uncertainty",
+        &[
+            "racket-impact uncertainty --x 0.06 --vary ks=uniform:2e4:6e4 --vary mb=normal:0.057:0.0005",
+            "racket-impact uncertainty --x 0.06 --vary ks --vary ei --samples 512 --format json",
+            "racket-impact uncertainty --claims --format csv --out claims.csv",
+        ],
+    ) + "\n\n\
+         Every simulate option sets the fixed parameters; each --vary KEY=DIST draws one input (KEY alone: the \
+         distribution declared with the parameter, listed at the end). The impact runs N (d + 2) times for d \
+         inputs, over a Saltelli design (scrambled Sobol' sequence, deterministic for --seed), on all cores, with \
+         the modal solver unless --solver is given or a hand grip or stiffening strings need fd.\n\n\
+         Output, for every numeric result field: mean, sd, q05, q50, q95, and each input's first-order (Saltelli \
+         2010) and total (Jansen) Sobol' index with 95 % bootstrap intervals. --format json gives \
+         {\"samples\", \"seed\", \"inputs\", \"outputs\": {field: {\"mean\", \"sd\", \"q05\", \"q50\", \"q95\", \
+         \"first_order\", \"total_order\", \"first_order_ci\", \"total_order_ci\"}}}.\n\n\
+         Warnings: an input whose draws reach outside the usual range simulate warns with (a uniform's or \
+         log-uniform's bounds; a normal's mean +- 3 sd) earns one warning line.\n\n\
+         With --claims: each paper claim (golden/paper_claims.csv) under the uncertainties declared with the \
+         paper's inputs (listed at the end), drawn as factors on the paper's values."
+}
+
+/// The end of the long help: the declared uncertainties `--claims` uses, and those `--vary KEY`
+/// draws for an oblique or spinning ball.
+pub fn declared_help() -> String {
     let line = |key: &str, u: Option<racket_impact::params::uncertainty::Uncertainty>| {
         u.map(|u| format!("{key} ~ {} ({})", u.dist.text(), u.source))
     };
@@ -36,22 +61,8 @@ pub fn long_about() -> String {
     let oblique: Vec<String> =
         keys::uncertain().filter(|s| !claims.contains(&s.key)).filter_map(|s| line(s.key, s.uncertainty)).collect();
     format!(
-        "An impact's result fields under uncertain inputs, or every paper claim under the declared uncertainty\n\n\
-         Example: racket-impact uncertainty --x 0.06 --vary ks=uniform:2e4:6e4 --vary mb=normal:0.057:0.0005\n\n\
-         Every simulate option sets the fixed parameters; each --vary KEY=DIST draws one input. The impact \
-         runs N (d + 2) times for d inputs, over a Saltelli design (scrambled Sobol' sequence, deterministic for \
-         --seed), on all cores, with the modal solver unless --solver is given or a hand grip or stiffening \
-         strings need fd.\n\n\
-         Output, for every numeric result field: mean, sd, q05, q50, q95, and each input's first-order (Saltelli \
-         2010) and total (Jansen) Sobol' index with 95 % bootstrap intervals. --format json gives \
-         {{\"samples\", \"seed\", \"inputs\", \"outputs\": {{field: {{\"mean\", \"sd\", \"q05\", \"q50\", \"q95\", \
-         \"first_order\", \"total_order\", \"first_order_ci\", \"total_order_ci\"}}}}}}.\n\n\
-         Warnings: an input whose draws reach outside the usual range simulate warns with (a uniform's or \
-         log-uniform's bounds; a normal's mean +- 3 sd) earns one warning line.\n\n\
-         With --claims: each paper claim (golden/paper_claims.csv) under the uncertainties declared with the \
-         parameters, drawn as factors on the paper's values:\n  {}\n\n\
-         --vary KEY without a distribution draws the one declared with the parameter: those above, and for an \
-         oblique or spinning ball:\n  {}",
+        "Declared uncertainties, drawn by --claims and by --vary KEY:\n  {}\n\n\
+         Drawn by --vary KEY for an oblique or spinning ball:\n  {}",
         declared.join("\n  "),
         oblique.join("\n  ")
     )

@@ -81,8 +81,9 @@ pub fn text(c: &Calibration, source: &str, weights: Weights) -> String {
         s.push_str(&row_line(p, p.held_out));
     }
     if !c.judged.is_empty() {
+        let judged_unit = c.judged.first().map_or(String::new(), |p| p.unit.trim().to_string());
         s.push_str(&format!(
-            "validation rows (not fitted): {} judged, RMS error {}\n",
+            "validation rows (not fitted): {} judged, RMS error {} {judged_unit}\n",
             c.judged.len(),
             num(c.rms_judged(), 4)
         ));
@@ -157,6 +158,7 @@ pub fn json(c: &Calibration, source: &str, weights: Weights) -> serde_json::Valu
         "rms_in_sample": n(c.rms_in_sample()),
         "rms_held_out": n(c.rms_held_out()),
         "rms_validation": n(c.rms_judged()),
+        "rms_unit": c.fitted.first().or(c.judged.first()).map_or(String::new(), |p| p.unit.trim().to_string()),
         "fitted": c.fitted.iter().map(row_json).collect::<Vec<_>>(),
         "validation": c.judged.iter().map(row_json).collect::<Vec<_>>(),
         "skipped": c.skipped.iter().map(|(id, why)| json!({"id": id, "reason": why})).collect::<Vec<_>>(),
