@@ -241,3 +241,23 @@ fn a_key_the_rows_set_themselves_is_refused_with_the_rows_named() {
         assert!(err.contains("overwrite each row's own"), "{err}");
     }
 }
+
+/// Every fittable key's declared range (the one `--fit` searches) is valid at both ends: an
+/// oblique impact on the defaults with the key at either end passes the parameters' check (the
+/// ranges of v1 and ball-inertia-factor began at an invalid 0 and ended above 2/3).
+#[test]
+fn every_fittable_key_s_declared_range_is_valid_at_both_ends() {
+    use racket_impact::params::{Overrides, Params};
+    use racket_impact::study::calibrate::{declared, declared_range};
+    for spec in declared() {
+        let (lo, hi) = declared_range(spec).unwrap();
+        for end in [lo, hi] {
+            let mut p = Params::default();
+            p.oblique.angle_deg = 30.0;
+            let mut o = Overrides::default();
+            o.set(spec.key, &format!("{end:e}")).unwrap_or_else(|e| panic!("{} = {end}: {e}", spec.key));
+            o.apply(&mut p);
+            assert!(p.validate().is_ok(), "{} = {end}: {:?}", spec.key, p.validate());
+        }
+    }
+}

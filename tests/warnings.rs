@@ -48,7 +48,7 @@ fn implausible_values_run_and_warn_once() {
     warns_once(&["simulate", "--ks", "5e5"], &["ks = 500000 N/m"]);
     warns_once(&["simulate", "--mass", "0.1"], &["mass = 0.1 kg", "0.15..1 kg"]);
     // (a ball stiff enough not to be squashed beyond its radius at 90 m/s, which warns too)
-    warns_once(&["simulate", "--v1", "90", "--k1", "1.5e5"], &["v1 = 90 m/s", "0..70 m/s"]);
+    warns_once(&["simulate", "--v1", "90", "--k1", "1.5e5"], &["v1 = 90 m/s", "1..70 m/s"]);
     warns_once(&["simulate", "--mu", "1.5", "--angle-deg", "30"], &["mu = 1.5", "0..1"]);
     warns_once(&["simulate", "--angle-deg", "84", "--v1", "20"], &["angle-deg = 84 deg", "0..80 deg"]);
     // a frame frequency no racket has: EI 20 on the paper's frame is about 46 Hz

@@ -393,7 +393,7 @@ def simulate(
     v1 : float, m/s [Impact]
         Incident ball speed, m/s (1e-3 ..= 1e3).
         Allowed: 0.001 <= v1 <= 1000 m/s.
-        Usual: 0 .. 70 m/s (outside: a warning).
+        Usual: 1 .. 70 m/s (outside: a warning).
         Default: 7.05938 m/s.
         Declared uncertainty: uniform:27:33 (nominal 30).
     segments : int [Numerics]
@@ -526,7 +526,7 @@ def simulate(
     ball_inertia_factor : float [Ball]
         Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55).
         Allowed: 0.1 <= ball_inertia_factor <= 2/3.
-        Usual: 0.4 .. 0.67 (outside: a warning).
+        Usual: 0.4 .. 0.666667 (outside: a warning).
         Default: 0.55.
         Used only for an oblique or spinning ball.
     ball_ex : float [Ball]
@@ -798,7 +798,7 @@ def sweep(
     v1 : float, m/s [Impact]
         Incident ball speed, m/s (1e-3 ..= 1e3).
         Allowed: 0.001 <= v1 <= 1000 m/s.
-        Usual: 0 .. 70 m/s (outside: a warning).
+        Usual: 1 .. 70 m/s (outside: a warning).
         Default: 7.05938 m/s.
         Declared uncertainty: uniform:27:33 (nominal 30).
     segments : int [Numerics]
@@ -931,7 +931,7 @@ def sweep(
     ball_inertia_factor : float [Ball]
         Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55).
         Allowed: 0.1 <= ball_inertia_factor <= 2/3.
-        Usual: 0.4 .. 0.67 (outside: a warning).
+        Usual: 0.4 .. 0.666667 (outside: a warning).
         Default: 0.55.
         Used only for an oblique or spinning ball.
     ball_ex : float [Ball]
@@ -1111,7 +1111,7 @@ def face_map(
     v1 : float, m/s [Impact]
         Incident ball speed, m/s (1e-3 ..= 1e3).
         Allowed: 0.001 <= v1 <= 1000 m/s.
-        Usual: 0 .. 70 m/s (outside: a warning).
+        Usual: 1 .. 70 m/s (outside: a warning).
         Default: 7.05938 m/s.
         Declared uncertainty: uniform:27:33 (nominal 30).
     segments : int [Numerics]
@@ -1233,7 +1233,7 @@ def face_map(
     ball_inertia_factor : float [Ball]
         Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55).
         Allowed: 0.1 <= ball_inertia_factor <= 2/3.
-        Usual: 0.4 .. 0.67 (outside: a warning).
+        Usual: 0.4 .. 0.666667 (outside: a warning).
         Default: 0.55.
         Used only for an oblique or spinning ball.
     ball_ex : float [Ball]
@@ -1539,7 +1539,7 @@ def card(
     ball_inertia_factor : float [Ball]
         Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55).
         Allowed: 0.1 <= ball_inertia_factor <= 2/3.
-        Usual: 0.4 .. 0.67 (outside: a warning).
+        Usual: 0.4 .. 0.666667 (outside: a warning).
         Default: 0.55.
         Used only for an oblique or spinning ball.
     ball_ex : float [Ball]
@@ -1739,7 +1739,7 @@ def uncertainty(
     v1 : float, m/s [Impact]
         Incident ball speed, m/s (1e-3 ..= 1e3).
         Allowed: 0.001 <= v1 <= 1000 m/s.
-        Usual: 0 .. 70 m/s (outside: a warning).
+        Usual: 1 .. 70 m/s (outside: a warning).
         Default: 7.05938 m/s.
         Declared uncertainty: uniform:27:33 (nominal 30).
     segments : int [Numerics]
@@ -1872,7 +1872,7 @@ def uncertainty(
     ball_inertia_factor : float [Ball]
         Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55).
         Allowed: 0.1 <= ball_inertia_factor <= 2/3.
-        Usual: 0.4 .. 0.67 (outside: a warning).
+        Usual: 0.4 .. 0.666667 (outside: a warning).
         Default: 0.55.
         Used only for an oblique or spinning ball.
     ball_ex : float [Ball]
@@ -2158,7 +2158,7 @@ def speed(
     ball_inertia_factor : float [Ball]
         Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55).
         Allowed: 0.1 <= ball_inertia_factor <= 2/3.
-        Usual: 0.4 .. 0.67 (outside: a warning).
+        Usual: 0.4 .. 0.666667 (outside: a warning).
         Default: 0.55.
         Used only for an oblique or spinning ball.
     ball_ex : float [Ball]
@@ -2399,7 +2399,7 @@ def calibrate(
     v1 : float, m/s [Impact]
         Incident ball speed, m/s (1e-3 ..= 1e3).
         Allowed: 0.001 <= v1 <= 1000 m/s.
-        Usual: 0 .. 70 m/s (outside: a warning).
+        Usual: 1 .. 70 m/s (outside: a warning).
         Default: 7.05938 m/s.
         Declared uncertainty: uniform:27:33 (nominal 30).
     segments : int [Numerics]
@@ -2532,7 +2532,7 @@ def calibrate(
     ball_inertia_factor : float [Ball]
         Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55).
         Allowed: 0.1 <= ball_inertia_factor <= 2/3.
-        Usual: 0.4 .. 0.67 (outside: a warning).
+        Usual: 0.4 .. 0.666667 (outside: a warning).
         Default: 0.55.
         Used only for an oblique or spinning ball.
     ball_ex : float [Ball]

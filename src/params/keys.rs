@@ -80,7 +80,7 @@ declare_params! {
     /// Incident ball speed, m/s (1e-3 ..= 1e3)
     V1 v1: f64 = "v1" at impact.v1,
         what "incident ball speed", unit "m/s", column "v1_m_per_s", within(1.0e-3, 1.0e3),
-        under Impact, Property, used Always, usual(0.0, 70.0),
+        under Impact, Property, used Always, usual(1.0, 70.0),
         uncertain(Dist::Uniform { lo: 27.0, hi: 33.0 }, 30.0, "assumed: the 30 m/s relative speed of Figs 7-8 (p. 6) +-10 %; the model is linear in v1, so only absolute rotations and forces depend on it");
     /// Number of beam segments N (4..=400)
     SEGMENTS segments: usize = "segments" at numerics.segments,
@@ -173,7 +173,7 @@ declare_params! {
     /// Ball moment of inertia over m_b R^2 (0.1 ..= 2/3: thin shell 2/3, solid sphere 0.4, tennis ball about 0.55)
     BALL_INERTIA_FACTOR ball_inertia_factor: f64 = "ball-inertia-factor" at oblique.ball_inertia_factor,
         what "ball inertia factor", unit "", column "ball_inertia_factor", rule "0.1 <= ball-inertia-factor <= 2/3",
-        under Ball, Property, used Oblique, usual(0.4, 0.67);
+        under Ball, Property, used Oblique, usual(0.4, 2.0 / 3.0);
     /// The ball's tangential restitution in a gripping bounce e_x (0.01 ..= 0.99)
     BALL_EX ball_ex: f64 = "ball-ex" at oblique.ball_ex,
         what "ball tangential restitution", unit "", column "ball_ex", within(0.01, 0.99),
