@@ -117,10 +117,12 @@ fn bad_input_is_one_line_with_exit_2() {
     let nan = s.file("nan.csv", format!("{head}\nL1,spin_out_rpm,NaN,rpm,25,40,-2000,free\nL2,{shot}\n"));
     let one = s.file("one.csv", format!("{head}\nL1,{shot}\n"));
     let ratio = s.file("ratio.csv", format!("{head}\nL1,{shot}\nL2,spin_ratio,1.2,ratio,25,40,-2000,free\n"));
+    let twice = s.file("twice.csv", format!("{head}\nL1,{shot}\nL2,{shot}\nL1,{shot}\n"));
     let png = s.arg("never.png");
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (vec![&no_value, "--fit", "kt"], "no column 'value'"),
         (vec![&nan, "--fit", "kt"], "not a finite number"),
+        (vec![&twice, "--fit", "kt"], "'L1' is the id of row 1 already"),
         (vec![LAB, "--fit", "stiffness"], "unknown parameter"),
         (vec![LAB, "--fit", "x"], "no declared range"),
         (vec![LAB, "--fit", "tangential"], "no declared range"),

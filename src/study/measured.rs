@@ -127,7 +127,7 @@ pub fn parse(text: &str, file: &str) -> Result<Vec<Measured>> {
         }
     }
     let role_column = headers.iter().position(|h| h == "role");
-    let mut out = Vec::new();
+    let mut out: Vec<Measured> = Vec::new();
     for record in rdr.records() {
         let record = record.map_err(|e| Error::csv_row("measurements", file, text, &headers, &e))?;
         let mut row: Measured =
@@ -144,6 +144,15 @@ pub fn parse(text: &str, file: &str) -> Result<Vec<Measured>> {
             row.role = Some(Role::parse(given).ok_or_else(|| {
                 bad(format!("column role: '{}' is neither 'calibration' nor 'validation'", quoted(given)))
             })?);
+        }
+        // a row is named by its id in every table, fit and plot: two rows of one id would be
+        // fitted, held out and reported as one
+        if let Some(first) = out.iter().position(|earlier| earlier.id == row.id) {
+            return Err(bad(format!(
+                "column id: '{}' is the id of row {} already; each row needs an id of its own",
+                quoted(&row.id),
+                first + 1
+            )));
         }
         out.push(row);
     }
@@ -196,6 +205,8 @@ mod tests {
         assert!(msg.contains("m.csv:2") && msg.contains("not a finite number"), "{msg}");
         let msg = parse("id,quantity\nM1,spin_out_rpm\n", "m.csv").unwrap_err().to_string();
         assert!(msg.contains("no column 'value'"), "{msg}");
+        let msg = parse(&format!("{head}\n{good}\n{good}\n"), "m.csv").unwrap_err().to_string();
+        assert!(msg.contains("m.csv:3") && msg.contains("M001") && msg.contains("row 1"), "{msg}");
     }
 
     #[test]
