@@ -361,59 +361,6 @@ class Uncertainty:
         return f"Uncertainty(inputs={self.inputs}, samples={self.samples}, runs={self.runs})"
 
 
-class Uncertainty:
-    """An impact's result fields under uncertain inputs (``uncertainty --vary``).
-
-    ``summary``: one row per result field (unit, mean, sd, q05, q50, q95); ``first_order`` and
-    ``total_order``: the Sobol' indices, one row per result field and a column per input;
-    ``intervals``: every index with its bootstrap interval (output, input, order, value, lo, hi).
-    DataFrames where pandas is installed, else dicts of numpy arrays. ``to_dict()`` is the JSON
-    document of ``uncertainty --format json``."""
-
-    def __init__(self, document: dict[str, Any]):
-        self._doc = document
-        outputs = document["outputs"]
-        inputs = [i["key"] for i in document["inputs"]]
-        names = list(outputs)
-        f = lambda v: np.nan if v is None else float(v)  # noqa: E731  (an index of a constant output is null)
-        summary = [("output", "str", names), ("unit", "str", [outputs[n]["unit"] for n in names])]
-        for stat in ("mean", "sd", "q05", "q50", "q95"):
-            summary.append((stat, "f", [f(outputs[n][stat]) for n in names]))
-        self.summary = _frame(summary, "output")
-        for order in ("first_order", "total_order"):
-            cols = [("output", "str", names)] + [(i, "f", [f(outputs[n][order][i]) for n in names]) for i in inputs]
-            setattr(self, order, _frame(cols, "output"))
-        rows = [
-            (n, i, order.split("_")[0], f(outputs[n][order][i]), f(outputs[n][order + "_ci"][i][0]), f(outputs[n][order + "_ci"][i][1]))
-            for n in names
-            for i in inputs
-            for order in ("first_order", "total_order")
-        ]
-        cols = list(zip(*rows)) if rows else [[]] * 6
-        self.intervals = _frame(
-            [
-                ("output", "str", list(cols[0])),
-                ("input", "str", list(cols[1])),
-                ("order", "str", list(cols[2])),
-                ("value", "f", list(cols[3])),
-                ("lo", "f", list(cols[4])),
-                ("hi", "f", list(cols[5])),
-            ]
-        )
-        self.inputs = inputs
-        self.samples = document["samples"]
-        self.seed = document["seed"]
-        self.runs = document["runs"]
-        self.diagnostics = document["diagnostics"]
-
-    def to_dict(self) -> dict[str, Any]:
-        """The study as the JSON document of ``uncertainty --format json`` (a copy)."""
-        return copy.deepcopy(self._doc)
-
-    def __repr__(self) -> str:
-        return f"Uncertainty(inputs={self.inputs}, samples={self.samples}, runs={self.runs})"
-
-
 def uncertainty(vary=None, *, racket=None, config=None, progress=None, **kwargs):
     # (the docstring is made from the parameters' and the options' declarations below)
     options, params = _split("uncertainty", kwargs)
